@@ -1,0 +1,31 @@
+//! Closed-form and asymptotic results: the references the BEM solver is tested
+//! against, and answers in their own right where they are exact.
+//!
+//! | group | what | source |
+//! |---|---|---|
+//! | [`lambda`] | `Lambda(u)`, `Lambda_g(t)`, the moments `a_m` | SPEC sections 2-3 |
+//! | [`series`] | flat punch on a layer over a rigid base, Eq. (5) | Lyashenko, Popov & Borysiuk (2023) |
+//! | [`FlatPunch`], [`JkrFlatPunch`] | flat punch on a half-space, with Kendall adhesion | Boussinesq (1885); Kendall (1971) |
+//! | [`Hertz`] | sphere (paraboloid) on a half-space | Hertz (1882); Johnson (1985) |
+//! | [`JkrSphere`] | adhesive sphere on a half-space | Johnson, Kendall & Roberts (1971) |
+//! | [`Cone`] | conical punch on a half-space | Sneddon (1965) |
+//!
+//! Every type here is built by a validating constructor (a typed
+//! [`Error`](crate::Error) for bad input) and then evaluated by infallible
+//! methods. The methods take the free variable (depth, contact radius, force)
+//! as an `f64`: a NaN argument gives a NaN result, as for `f64::sqrt`.
+
+pub mod lambda;
+pub mod series;
+
+mod cone;
+mod hertz;
+mod jkr;
+mod punch;
+
+pub use cone::Cone;
+pub use hertz::Hertz;
+pub use jkr::JkrSphere;
+pub use lambda::{a_m, lambda, lambda_g};
+pub use punch::{FlatPunch, JkrFlatPunch};
+pub use series::{PunchStiffnessSeries, SeriesStiffness};

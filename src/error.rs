@@ -1,0 +1,95 @@
+//! The one error type of the crate.
+//!
+//! Every fallible constructor and solver returns [`Error`]. Each variant names
+//! the offending quantity and carries its value, so that a message such as
+//! `Poisson ratio must lie in [0, 0.5], got 0.7` tells the caller what to fix.
+
+/// Everything that can go wrong in `layered-contact`.
+///
+/// The enum is `#[non_exhaustive]`: later versions may add variants, so match
+/// with a wildcard arm.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// Young's modulus is not a positive finite number, or is so large that
+    /// the contact modulus `E / (1 - nu^2)` overflows.
+    #[error("Young's modulus must be positive and finite (and E/(1 - nu^2) finite), got {value} Pa")]
+    InvalidYoungsModulus {
+        /// The rejected value, in Pa.
+        value: f64,
+    },
+    /// Poisson's ratio is outside `[0, 0.5]` or NaN.
+    #[error("Poisson ratio must lie in [0, 0.5], got {value}")]
+    InvalidPoissonRatio {
+        /// The rejected value.
+        value: f64,
+    },
+    /// A layer thickness is negative or NaN, or zero on a rigid base (which
+    /// would leave no elastic body at all).
+    #[error("layer thickness must be {expected}, got {value} m")]
+    InvalidThickness {
+        /// The rejected value, in m.
+        value: f64,
+        /// What was expected instead.
+        expected: &'static str,
+    },
+    /// Any other scalar input outside its domain (a radius, an angle, a work
+    /// of adhesion, an index, ...).
+    #[error("{name} must be {expected}, got {value}")]
+    InvalidParameter {
+        /// The name of the parameter, as in the documentation.
+        name: &'static str,
+        /// The rejected value (converted to `f64` for integer parameters).
+        value: f64,
+        /// What was expected instead.
+        expected: &'static str,
+    },
+    /// An iterative method stopped before reaching its tolerance.
+    #[error("{method} did not converge after {iterations} iterations (residual {residual:e})")]
+    NoConvergence {
+        /// The method that gave up.
+        method: &'static str,
+        /// Iterations (or panels, or refinements) performed.
+        iterations: usize,
+        /// The last residual or error estimate reached.
+        residual: f64,
+    },
+}
+
+/// `Result` with the crate's [`Error`].
+pub type Result<T> = std::result::Result<T, Error>;
+
+/// Checks that `value` is positive and finite.
+pub(crate) fn positive_finite(name: &'static str, value: f64) -> Result<f64> {
+    if value > 0.0 && value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::InvalidParameter {
+            name,
+            value,
+            expected: "positive and finite",
+        })
+    }
+}
+
+/// Checks that `value` is non-negative and finite.
+pub(crate) fn non_negative_finite(name: &'static str, value: f64) -> Result<f64> {
+    if value >= 0.0 && value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::InvalidParameter {
+            name,
+            value,
+            expected: "non-negative and finite",
+        })
+    }
+}
+
+/// Checks that `nu` is a Poisson ratio in `[0, 0.5]`.
+pub(crate) fn poisson_ratio(nu: f64) -> Result<f64> {
+    if (0.0..=0.5).contains(&nu) {
+        Ok(nu)
+    } else {
+        Err(Error::InvalidPoissonRatio { value: nu })
+    }
+}
