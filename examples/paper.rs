@@ -21,7 +21,9 @@ const WORK_OF_ADHESION_UNLOADING: f64 = 0.326;
 fn main() -> Result<(), Error> {
     let rubber = Material::new(0.324e6, 0.48)?;
     println!("# Flat punch on a rubber layer on glass: E = 0.324 MPa, nu = 0.48");
-    println!("# K / (2 a E*) from the series of SPEC section 3 (* marks a/h > 1, outside its range)\n");
+    println!(
+        "# K / (2 a E*) from the series of SPEC section 3 (* marks a/h > 1, outside its range)\n"
+    );
     print!("| h [mm] |");
     for d in DIAMETERS_MM {
         print!(" D = {d} mm |");

@@ -13,7 +13,9 @@
 pub enum Error {
     /// Young's modulus is not a positive finite number, or is so large that
     /// the contact modulus `E / (1 - nu^2)` overflows.
-    #[error("Young's modulus must be positive and finite (and E/(1 - nu^2) finite), got {value} Pa")]
+    #[error(
+        "Young's modulus must be positive and finite (and E/(1 - nu^2) finite), got {value} Pa"
+    )]
     InvalidYoungsModulus {
         /// The rejected value, in Pa.
         value: f64,

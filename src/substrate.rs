@@ -31,8 +31,12 @@
 //! f(s)      = 1 - e^(-2s) - 2 s e^(-s) = 2 e^(-s) (sinh s - s)      (>= 0),
 //! D(t) = f(t) (f(t) + 4 t e^(-t)) + (a + b) e^(-2t) (1 - e^(-2t)) + 4 b t^2 e^(-2t) + a b e^(-4t),
 //! N(t) = (1 - lam m) + m (1 + lam)(1 - e^(-4t)) - m f(2t),
-//! D(t) - N(t) = 2 lam m e^(-4t) - (lam + m + 4 m t + 4 m t^2) e^(-2t).
+//! D(t) - N(t) = 2 lam m e^(-4t) - (lam + m + 4 m t + 4 m t^2) e^(-2t)
+//!             = e^(-2t) [-2 (1 - e^(-2t)) + (a + b)(1 - 2 e^(-2t)) + 2 a b e^(-2t) - 4 m t (1 + t)].
 //! ```
+//!
+//! `Lambda_g = (D - N) / D` uses the first form of `D - N` when `|lam| + |m| <= a + b`
+//! and the second otherwise (on a soft base the first loses a factor `G`).
 //!
 //! `f` is summed as a power series for `s < 2` and `1 - e^(-x)` is `-expm1(-x)`;
 //! only decaying exponentials appear, so nothing overflows for any `t`.
@@ -132,7 +136,7 @@ impl Substrate {
     /// [`Error::InvalidThickness`] if `thickness` is NaN, negative or zero (a
     /// zero-thickness layer on a rigid base leaves no elastic body).
     pub fn layer_on_rigid_base(layer: Material, thickness: f64) -> Result<Self> {
-        if !(thickness > 0.0) {
+        if thickness.is_nan() || thickness <= 0.0 {
             return Err(Error::InvalidThickness {
                 value: thickness,
                 expected: "positive on a rigid base (or +inf for a half-space)",
@@ -149,7 +153,7 @@ impl Substrate {
     /// # Errors
     /// [`Error::InvalidThickness`] if `thickness` is NaN or negative.
     pub fn layer_on_elastic_base(layer: Material, thickness: f64, base: Material) -> Result<Self> {
-        if !(thickness >= 0.0) {
+        if thickness.is_nan() || thickness < 0.0 {
             return Err(Error::InvalidThickness {
                 value: thickness,
                 expected: "non-negative (or +inf for a half-space)",
@@ -357,12 +361,33 @@ impl CoatingFunctions {
         }
         let d = self.denominator(t);
         if d > 0.0 {
-            let e2 = (-2.0 * t).exp();
-            (2.0 * self.lam * self.m * e2 * e2
-                - (self.lam + self.m + 4.0 * self.m * t * (1.0 + t)) * e2)
-                / d
+            (-2.0 * t).exp() * self.lambda_numerator_scaled(t) / d
         } else {
             1.0 - self.r_at_zero()
+        }
+    }
+
+    /// `e^(2t) (D(t) - N(t))`, in whichever of two equal forms cancels less:
+    ///
+    /// ```text
+    /// 2 lam m e^(-2t) - (lam + m) - 4 m t (1 + t)                               (|lam| + |m| <= a + b)
+    /// -2 (1 - e^(-2t)) + (a + b)(1 - 2 e^(-2t)) + 2 a b e^(-2t) - 4 m t (1 + t)  (otherwise)
+    /// ```
+    ///
+    /// At `t = 0` both equal `-(a + b - 2ab)`; the first keeps its digits when
+    /// `lam` and `m` are small (similar materials, stiff base), the second when
+    /// `a` and `b` are (soft base, `G >> 1`), where the first would lose a
+    /// factor `G` to cancellation.
+    fn lambda_numerator_scaled(&self, t: f64) -> f64 {
+        let e2 = (-2.0 * t).exp();
+        let tail = 4.0 * self.m * t * (1.0 + t);
+        if self.lam.abs() + self.m.abs() <= self.a + self.b {
+            2.0 * self.lam * self.m * e2 - (self.lam + self.m) - tail
+        } else {
+            2.0 * (-2.0 * t).exp_m1()
+                + (self.a + self.b) * (1.0 - 2.0 * e2)
+                + 2.0 * self.a * self.b * e2
+                - tail
         }
     }
 
@@ -370,8 +395,6 @@ impl CoatingFunctions {
     /// `Lambda_g` multiplies a large power of `t` (the `a_m` integrals).
     pub(crate) fn lambda_scaled(&self, t: f64) -> f64 {
         let t = t.abs();
-        let e2 = (-2.0 * t).exp();
-        (2.0 * self.lam * self.m * e2 - (self.lam + self.m + 4.0 * self.m * t * (1.0 + t)))
-            / self.denominator(t)
+        self.lambda_numerator_scaled(t) / self.denominator(t)
     }
 }

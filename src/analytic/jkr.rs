@@ -105,7 +105,7 @@ impl JkrSphere {
     pub fn contact_radius_at_force(&self, force: f64) -> Option<f64> {
         let p = 3.0 * PI * self.work_of_adhesion * self.radius;
         let discriminant = 2.0 * p * force + p * p;
-        if !(discriminant >= 0.0) {
+        if discriminant.is_nan() || discriminant < 0.0 {
             return None;
         }
         let a3 = 0.75 * self.radius / self.contact_modulus * (force + p + discriminant.sqrt());
@@ -116,7 +116,7 @@ impl JkrSphere {
     /// displacement control (`a >= a_c`), or `None` once the contact has
     /// jumped off (`d < d_c`). Found by bisection to full precision.
     pub fn contact_radius_at_depth(&self, depth: f64) -> Option<f64> {
-        if !(depth >= self.critical_depth()) {
+        if depth.is_nan() || depth < self.critical_depth() {
             return None;
         }
         let mut lo = self.critical_contact_radius();
