@@ -56,3 +56,8 @@ pub mod substrate;
 pub use error::{Error, Result};
 pub use material::Material;
 pub use substrate::{Base, Coating, Substrate};
+
+/// The README's code example, compiled and run as a doc test.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
