@@ -46,6 +46,36 @@ pub enum Error {
         /// What was expected instead.
         expected: &'static str,
     },
+    /// A grid has no cells, or so many that its padded FFT arrays would not
+    /// fit in memory.
+    #[error("grid of {rows} x {columns} cells is invalid: expected {expected}")]
+    InvalidGrid {
+        /// Cells along the first axis.
+        rows: usize,
+        /// Cells along the second axis.
+        columns: usize,
+        /// What was expected instead.
+        expected: &'static str,
+    },
+    /// A field passed to an operator does not have the length of its grid.
+    #[error("{field} has {found} values, but the grid has {expected} cells")]
+    ShapeMismatch {
+        /// Which argument was wrong.
+        field: &'static str,
+        /// The number of cells of the grid.
+        expected: usize,
+        /// The length that was passed.
+        found: usize,
+    },
+    /// A failure inside the library that valid input should never cause;
+    /// please report it.
+    #[error("internal error in {what}: {detail}")]
+    Internal {
+        /// The component that failed.
+        what: &'static str,
+        /// Its message.
+        detail: String,
+    },
     /// An iterative method stopped before reaching its tolerance.
     #[error("{method} did not converge after {iterations} iterations (residual {residual:e})")]
     NoConvergence {

@@ -50,10 +50,13 @@
 pub mod analytic;
 pub mod doc;
 pub mod error;
+pub mod grid;
+pub mod kernel;
 pub mod material;
 pub mod substrate;
 
 pub use error::{Error, Result};
+pub use grid::{Boundary, Grid};
 pub use material::Material;
 pub use substrate::{Base, Coating, Substrate};
 

@@ -397,4 +397,144 @@ impl CoatingFunctions {
         let t = t.abs();
         self.lambda_numerator_scaled(t) / self.denominator(t)
     }
+
+    /// `R(t) / t`, finite at `t = 0` on a rigid base, where it is the
+    /// uniaxial-strain limit `R'(0) = 4 m (1 + lam) / D(0)` (0 for an
+    /// incompressible layer). On an elastic base `R(0) > 0`, so `R(t)/t`
+    /// is `+inf` at `t = 0`.
+    pub fn r_over_t(&self, t: f64) -> f64 {
+        let t = t.abs();
+        if self.shear_ratio > 0.0 || t > T_NEGLIGIBLE {
+            return self.r(t) / t;
+        }
+        // Rigid base: N(t) = m (1 + lam)(1 - e^(-4t)) - m f(2t), divided by t
+        // term by term.
+        let growth = if t == 0.0 {
+            4.0
+        } else {
+            -(-4.0 * t).exp_m1() / t
+        };
+        let cubic = if t == 0.0 {
+            0.0
+        } else {
+            one_minus_exp_terms(2.0 * t) / t
+        };
+        (self.m * self.one_plus_lam * growth - self.m * cubic) / self.denominator(t)
+    }
+
+    /// The first [`TAYLOR_TERMS`] Taylor coefficients of `Lambda_g(t)` at
+    /// `t = 0`, by truncated power-series arithmetic on the cancellation-free
+    /// forms of `D` and `D - N` (so `D(0) = a b > 0` is exact).
+    pub(crate) fn lambda_taylor(&self) -> Series {
+        let (a, b, lam, m) = (self.a, self.b, self.lam, self.m);
+        let e1 = Series::exp(-1.0);
+        let e2 = Series::exp(-2.0);
+        let one = Series::constant(1.0);
+        let t = Series::monomial(1);
+        let t2 = Series::monomial(2);
+        let f = e1.scale(2.0).mul(&Series::sinh_minus_identity());
+        let one_minus_e2 = one.sub(&e2);
+        let d = f
+            .mul(&f.add(&t.mul(&e1).scale(4.0)))
+            .add(&e2.mul(&one_minus_e2).scale(a + b))
+            .add(&t2.mul(&e2).scale(4.0 * b))
+            .add(&Series::exp(-4.0).scale(a * b));
+        let tail = t.add(&t2).scale(4.0 * m);
+        let inner = if lam.abs() + m.abs() <= a + b {
+            e2.scale(2.0 * lam * m)
+                .sub(&Series::constant(lam + m))
+                .sub(&tail)
+        } else {
+            one_minus_e2
+                .scale(-2.0)
+                .add(&one.sub(&e2.scale(2.0)).scale(a + b))
+                .add(&e2.scale(2.0 * a * b))
+                .sub(&tail)
+        };
+        e2.mul(&inner).div(&d)
+    }
+}
+
+/// Number of Taylor coefficients kept by [`Series`].
+pub(crate) const TAYLOR_TERMS: usize = 9;
+
+/// A power series in `t` truncated after `t^(TAYLOR_TERMS - 1)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Series(pub(crate) [f64; TAYLOR_TERMS]);
+
+impl Series {
+    fn constant(c: f64) -> Self {
+        let mut s = [0.0; TAYLOR_TERMS];
+        s[0] = c;
+        Series(s)
+    }
+
+    fn monomial(power: usize) -> Self {
+        let mut s = [0.0; TAYLOR_TERMS];
+        s[power] = 1.0;
+        Series(s)
+    }
+
+    /// `e^(c t)`.
+    pub(crate) fn exp(c: f64) -> Self {
+        let mut s = [0.0; TAYLOR_TERMS];
+        s[0] = 1.0;
+        for k in 1..TAYLOR_TERMS {
+            s[k] = s[k - 1] * c / k as f64;
+        }
+        Series(s)
+    }
+
+    /// `sinh t - t`.
+    fn sinh_minus_identity() -> Self {
+        let mut s = [0.0; TAYLOR_TERMS];
+        let mut factorial = 1.0;
+        for (k, value) in s.iter_mut().enumerate().skip(1) {
+            factorial *= k as f64;
+            if k % 2 == 1 && k >= 3 {
+                *value = 1.0 / factorial;
+            }
+        }
+        Series(s)
+    }
+
+    fn zip(&self, other: &Self, op: impl Fn(f64, f64) -> f64) -> Self {
+        let mut s = [0.0; TAYLOR_TERMS];
+        for (k, value) in s.iter_mut().enumerate() {
+            *value = op(self.0[k], other.0[k]);
+        }
+        Series(s)
+    }
+
+    pub(crate) fn add(&self, other: &Self) -> Self {
+        self.zip(other, |x, y| x + y)
+    }
+
+    pub(crate) fn sub(&self, other: &Self) -> Self {
+        self.zip(other, |x, y| x - y)
+    }
+
+    pub(crate) fn scale(&self, c: f64) -> Self {
+        Series(self.0.map(|x| x * c))
+    }
+
+    fn mul(&self, other: &Self) -> Self {
+        let mut s = [0.0; TAYLOR_TERMS];
+        for i in 0..TAYLOR_TERMS {
+            for j in 0..TAYLOR_TERMS - i {
+                s[i + j] += self.0[i] * other.0[j];
+            }
+        }
+        Series(s)
+    }
+
+    /// `self / other`, requiring `other.0[0] != 0`.
+    fn div(&self, other: &Self) -> Self {
+        let mut q = [0.0; TAYLOR_TERMS];
+        for k in 0..TAYLOR_TERMS {
+            let known: f64 = (0..k).map(|j| q[j] * other.0[k - j]).sum();
+            q[k] = (self.0[k] - known) / other.0[0];
+        }
+        Series(q)
+    }
 }

@@ -1,0 +1,123 @@
+//! The surface grid of the boundary-element method.
+
+use crate::error::{positive_finite, Error, Result};
+
+/// The largest number of cells along one axis.
+pub const MAX_CELLS_PER_AXIS: usize = 1 << 15;
+/// The largest number of cells in a grid (the isolated operator works on four
+/// times as many).
+pub const MAX_CELLS: usize = 1 << 26;
+
+/// A rectangular grid of `rows x columns` square cells of side `spacing`
+/// (`Delta`, m), carrying a pressure uniform in each cell.
+///
+/// Fields on the grid are row-major slices: cell `(i, j)` (row `i`, column
+/// `j`) is element `i * columns + j`; its centre is at
+/// `((i + 1/2) Delta, (j + 1/2) Delta)` from the grid's corner.
+///
+/// ```
+/// use layered_contact::Grid;
+///
+/// let grid = Grid::new(64, 48, 1e-4)?;
+/// assert_eq!(grid.len(), 64 * 48);
+/// assert!((grid.extent().0 - 6.4e-3).abs() < 1e-15);
+/// assert!(Grid::new(0, 8, 1e-4).is_err());
+/// Ok::<(), layered_contact::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Grid {
+    rows: usize,
+    columns: usize,
+    spacing: f64,
+}
+
+impl Grid {
+    /// A grid of `rows x columns` cells of side `spacing` (m).
+    ///
+    /// # Errors
+    /// [`Error::InvalidGrid`] if a dimension is 0 or the grid exceeds
+    /// [`MAX_CELLS_PER_AXIS`] or [`MAX_CELLS`];
+    /// [`Error::InvalidParameter`] if `spacing` is not positive and finite.
+    pub fn new(rows: usize, columns: usize, spacing: f64) -> Result<Self> {
+        if rows == 0 || columns == 0 {
+            return Err(Error::InvalidGrid {
+                rows,
+                columns,
+                expected: "at least one cell along each axis",
+            });
+        }
+        if rows > MAX_CELLS_PER_AXIS
+            || columns > MAX_CELLS_PER_AXIS
+            || rows.saturating_mul(columns) > MAX_CELLS
+        {
+            return Err(Error::InvalidGrid {
+                rows,
+                columns,
+                expected: "at most 2^15 cells per axis and 2^26 cells in all",
+            });
+        }
+        Ok(Grid {
+            rows,
+            columns,
+            spacing: positive_finite("spacing", spacing)?,
+        })
+    }
+
+    /// A square grid of `n x n` cells covering a square of side `side` (m).
+    ///
+    /// # Errors
+    /// As [`Grid::new`].
+    pub fn square(n: usize, side: f64) -> Result<Self> {
+        Self::new(n, n, positive_finite("side", side)? / n.max(1) as f64)
+    }
+
+    /// Cells along the first axis.
+    pub fn rows(&self) -> usize {
+        self.rows
+    }
+
+    /// Cells along the second axis.
+    pub fn columns(&self) -> usize {
+        self.columns
+    }
+
+    /// The side `Delta` of a cell, m.
+    pub fn spacing(&self) -> f64 {
+        self.spacing
+    }
+
+    /// The number of cells.
+    pub fn len(&self) -> usize {
+        self.rows * self.columns
+    }
+
+    /// Always `false`: a grid has at least one cell.
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+
+    /// The area of one cell, `Delta^2`, m^2.
+    pub fn cell_area(&self) -> f64 {
+        self.spacing * self.spacing
+    }
+
+    /// The size of the gridded region `(rows Delta, columns Delta)`, m.
+    pub fn extent(&self) -> (f64, f64) {
+        (
+            self.rows as f64 * self.spacing,
+            self.columns as f64 * self.spacing,
+        )
+    }
+}
+
+/// How the gridded region relates to the rest of the surface.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Boundary {
+    /// A single contact on an unbounded body (the default): the pressure
+    /// vanishes outside the grid, and the convolution is done on a
+    /// zero-padded grid of twice the size so that it does not wrap around.
+    #[default]
+    Isolated,
+    /// The grid is one period of a doubly periodic surface.
+    Periodic,
+}

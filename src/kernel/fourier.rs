@@ -1,0 +1,66 @@
+//! The Fourier-space surface compliance `u_z(q)` of a substrate.
+
+use crate::substrate::{CoatingFunctions, Substrate};
+
+/// The surface normal displacement, in Fourier space, due to a unit normal
+/// point force: `u_z(q) = 2 / (E* q)` on a half-space and
+/// `u_z(q) = 2 R(q h) / (E1* q)` on a coated half-space (SPEC section 2, with
+/// `R` from [`CoatingFunctions`]). Units m/N times m^2, i.e. m^3/N.
+///
+/// At `q = 0` it is `+inf` on a half-space and on a layer over an elastic
+/// base, and the finite uniaxial-strain compliance
+/// `h (1 + nu1)(1 - 2 nu1) / (E1 (1 - nu1))` on a rigid base (0 for an
+/// incompressible layer): see [`FourierCompliance::at_zero`].
+///
+/// ```
+/// use layered_contact::kernel::FourierCompliance;
+/// use layered_contact::{Material, Substrate};
+///
+/// let layer = Material::new(1e6, 0.3)?;
+/// let h = 2e-3;
+/// let film = FourierCompliance::new(&Substrate::layer_on_rigid_base(layer, h)?);
+/// let uniaxial = h * 1.3 * 0.4 / (1e6 * 0.7);
+/// assert!((film.at_zero() / uniaxial - 1.0).abs() < 1e-15);
+/// assert!((film.eval(1e-6) / uniaxial - 1.0).abs() < 1e-6);
+/// // At short wavelengths the film looks like its own half-space.
+/// let q = 1e6;
+/// assert!((film.eval(q) * layer.contact_modulus() * q / 2.0 - 1.0).abs() < 1e-15);
+/// Ok::<(), layered_contact::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FourierCompliance {
+    /// `E*` of the surface material (layer or half-space).
+    contact_modulus: f64,
+    /// Layer thickness and functions, `None` for a half-space.
+    coating: Option<(f64, CoatingFunctions)>,
+}
+
+impl FourierCompliance {
+    /// The compliance of `substrate`.
+    pub fn new(substrate: &Substrate) -> Self {
+        match substrate {
+            Substrate::HalfSpace(material) => FourierCompliance {
+                contact_modulus: material.contact_modulus(),
+                coating: None,
+            },
+            Substrate::Coated(coating) => FourierCompliance {
+                contact_modulus: coating.layer().contact_modulus(),
+                coating: Some((coating.thickness(), coating.functions())),
+            },
+        }
+    }
+
+    /// `u_z(q)` for wavenumber `|q|` (rad/m), m^3/N.
+    pub fn eval(&self, q: f64) -> f64 {
+        let q = q.abs();
+        match &self.coating {
+            None => 2.0 / (self.contact_modulus * q),
+            Some((h, functions)) => 2.0 * h * functions.r_over_t(q * h) / self.contact_modulus,
+        }
+    }
+
+    /// `u_z(0)`: finite only for a layer on a rigid base.
+    pub fn at_zero(&self) -> f64 {
+        self.eval(0.0)
+    }
+}

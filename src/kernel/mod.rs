@@ -1,0 +1,21 @@
+//! The coated half-space's fundamental solution turned into BEM kernels.
+//!
+//! * [`FourierCompliance`]: `u_z(q)`, the surface displacement of a unit
+//!   point force in Fourier space.
+//! * [`InfluenceCoefficients`]: its cell-integrated real-space form for the
+//!   isolated problem.
+//! * [`ComplianceOperator`]: pressure -> displacement by FFT, isolated or
+//!   periodic, built once and applied many times.
+//!
+//! The derivation of the influence coefficients is in
+//! [`doc::theory`](crate::doc::theory).
+
+mod cell;
+mod fourier;
+mod influence;
+mod operator;
+mod radial;
+
+pub use fourier::FourierCompliance;
+pub use influence::InfluenceCoefficients;
+pub use operator::ComplianceOperator;

@@ -1,0 +1,307 @@
+//! The compliance operator: pressure -> surface displacement by FFT
+//! convolution, with its plans and scratch buffers.
+
+use std::f64::consts::PI;
+use std::sync::Arc;
+
+use num_complex::Complex;
+use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
+use rustfft::{Fft, FftPlanner};
+
+use crate::error::{Error, Result};
+use crate::grid::{Boundary, Grid};
+use crate::substrate::Substrate;
+
+use super::fourier::FourierCompliance;
+use super::influence::InfluenceCoefficients;
+
+/// Applies the compliance of a substrate on a grid: given the cell pressures
+/// `p` (Pa, row-major), the displacements `u` (m) at the cell centres,
+/// `u_i = sum_j K(i - j) p_j`.
+///
+/// Built once per (substrate, grid, boundary) and applied any number of
+/// times: it owns its FFT plans, the kernel's spectrum and every scratch
+/// buffer, so an application allocates nothing.
+///
+/// * [`Boundary::Isolated`]: the influence coefficients
+///   ([`InfluenceCoefficients`]) are convolved on a zero-padded
+///   `2 rows x 2 columns` grid, so nothing wraps around; the result equals the
+///   dense sum to rounding.
+/// * [`Boundary::Periodic`]: the grid is one period; the multiplier is
+///   `u_z(q) sinc(q_x Delta / 2) sinc(q_y Delta / 2)` at the periodic
+///   wavevectors. The mean (`q = 0`) mode carries the uniaxial-strain
+///   compliance on a rigid base and is set to 0 otherwise (the mean
+///   displacement of a periodic half-space is undetermined; it is fixed by
+///   the indenter's approach instead).
+///
+/// One application costs one real-to-complex and one complex-to-real 2D FFT
+/// of the (padded) grid; half the padded rows are known to be zero and are
+/// skipped.
+///
+/// ```
+/// use layered_contact::kernel::ComplianceOperator;
+/// use layered_contact::{Boundary, Grid, Material, Substrate};
+///
+/// let film = Substrate::layer_on_rigid_base(Material::new(1e6, 0.45)?, 1e-3)?;
+/// let grid = Grid::new(16, 16, 1e-4)?;
+/// let mut operator = ComplianceOperator::new(&film, &grid, Boundary::Isolated)?;
+/// let mut pressure = vec![0.0; grid.len()];
+/// pressure[8 * 16 + 8] = 1e3; // 1 kPa on one cell
+/// let mut displacement = vec![0.0; grid.len()];
+/// operator.apply(&pressure, &mut displacement)?;
+/// let k = operator.influence().unwrap();
+/// assert!((displacement[8 * 16 + 8] - 1e3 * k.get(0, 0)).abs() < 1e-12 * displacement[8 * 16 + 8]);
+/// Ok::<(), layered_contact::Error>(())
+/// ```
+pub struct ComplianceOperator {
+    grid: Grid,
+    boundary: Boundary,
+    influence: Option<InfluenceCoefficients>,
+    /// FFT sizes: rows and columns of the (padded) grid.
+    size: (usize, usize),
+    /// The kernel's spectrum, transposed (`columns/2 + 1` rows of `rows`
+    /// values) and divided by the FFT normalisation `rows * columns`.
+    spectrum: Vec<f64>,
+    row_forward: Arc<dyn RealToComplex<f64>>,
+    row_inverse: Arc<dyn ComplexToReal<f64>>,
+    column_forward: Arc<dyn Fft<f64>>,
+    column_inverse: Arc<dyn Fft<f64>>,
+    workspace: Workspace,
+}
+
+/// Scratch buffers owned by the operator.
+struct Workspace {
+    real: Vec<f64>,
+    rows: Vec<Complex<f64>>,
+    columns: Vec<Complex<f64>>,
+    scratch: Vec<Complex<f64>>,
+}
+
+impl std::fmt::Debug for ComplianceOperator {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ComplianceOperator")
+            .field("grid", &self.grid)
+            .field("boundary", &self.boundary)
+            .field("fft_size", &self.size)
+            .finish_non_exhaustive()
+    }
+}
+
+impl ComplianceOperator {
+    /// The operator of `substrate` on `grid` with `boundary`.
+    ///
+    /// # Errors
+    /// None at present for valid `Substrate` and `Grid` values; the `Result`
+    /// is kept for resource limits.
+    pub fn new(substrate: &Substrate, grid: &Grid, boundary: Boundary) -> Result<Self> {
+        let (rows, columns) = (grid.rows(), grid.columns());
+        let size = match boundary {
+            Boundary::Isolated => (2 * rows, 2 * columns),
+            Boundary::Periodic => (rows, columns),
+        };
+        let mut real_planner = RealFftPlanner::<f64>::new();
+        let row_forward = real_planner.plan_fft_forward(size.1);
+        let row_inverse = real_planner.plan_fft_inverse(size.1);
+        let mut planner = FftPlanner::<f64>::new();
+        let column_forward = planner.plan_fft_forward(size.0);
+        let column_inverse = planner.plan_fft_inverse(size.0);
+        let half = size.1 / 2 + 1;
+        let scratch_len = [
+            row_forward.get_scratch_len(),
+            row_inverse.get_scratch_len(),
+            column_forward.get_inplace_scratch_len(),
+            column_inverse.get_inplace_scratch_len(),
+        ]
+        .into_iter()
+        .max()
+        .unwrap_or(0);
+        let workspace = Workspace {
+            real: vec![0.0; size.0 * size.1],
+            rows: vec![Complex::default(); size.0 * half],
+            columns: vec![Complex::default(); size.0 * half],
+            scratch: vec![Complex::default(); scratch_len],
+        };
+        let mut operator = ComplianceOperator {
+            grid: *grid,
+            boundary,
+            influence: None,
+            size,
+            spectrum: Vec::new(),
+            row_forward,
+            row_inverse,
+            column_forward,
+            column_inverse,
+            workspace,
+        };
+        operator.spectrum = match boundary {
+            Boundary::Isolated => {
+                let influence = InfluenceCoefficients::isolated(substrate, grid);
+                let spectrum = operator.isolated_spectrum(&influence)?;
+                operator.influence = Some(influence);
+                spectrum
+            }
+            Boundary::Periodic => operator.periodic_spectrum(&FourierCompliance::new(substrate)),
+        };
+        Ok(operator)
+    }
+
+    /// The grid the operator acts on.
+    pub fn grid(&self) -> &Grid {
+        &self.grid
+    }
+
+    /// The boundary condition it was built for.
+    pub fn boundary(&self) -> Boundary {
+        self.boundary
+    }
+
+    /// The influence coefficients (isolated operators only).
+    pub fn influence(&self) -> Option<&InfluenceCoefficients> {
+        self.influence.as_ref()
+    }
+
+    /// The spectrum of the coefficients placed on the padded grid in
+    /// wrap-around order (offset `-d` at index `n - d`).
+    fn isolated_spectrum(&mut self, influence: &InfluenceCoefficients) -> Result<Vec<f64>> {
+        let (n0, n1) = self.size;
+        let (rows, columns) = (self.grid.rows(), self.grid.columns());
+        let offset = |index: usize, n: usize, cells: usize| -> Option<isize> {
+            match index {
+                i if i < cells => Some(i as isize),
+                i if i == cells => None,
+                i => Some(i as isize - n as isize),
+            }
+        };
+        for i in 0..n0 {
+            for j in 0..n1 {
+                self.workspace.real[i * n1 + j] = match (offset(i, n0, rows), offset(j, n1, columns)) {
+                    (Some(di), Some(dj)) => influence.get(di, dj),
+                    _ => 0.0,
+                };
+            }
+        }
+        self.forward_all_rows()?;
+        let normalisation = 1.0 / (n0 * n1) as f64;
+        Ok(self.workspace.columns.iter().map(|c| c.re * normalisation).collect())
+    }
+
+    /// `u_z(|q|) sinc(q_x Delta/2) sinc(q_y Delta/2)` at the periodic
+    /// wavevectors, transposed like the column buffer.
+    fn periodic_spectrum(&self, compliance: &FourierCompliance) -> Vec<f64> {
+        let (n0, n1) = self.size;
+        let delta = self.grid.spacing();
+        let half = n1 / 2 + 1;
+        let wavenumber = |index: usize, n: usize| {
+            let k = if index <= n / 2 {
+                index as f64
+            } else {
+                index as f64 - n as f64
+            };
+            2.0 * PI * k / (n as f64 * delta)
+        };
+        let sinc = |x: f64| if x == 0.0 { 1.0 } else { x.sin() / x };
+        let zero_mode = compliance.at_zero();
+        let zero_mode = if zero_mode.is_finite() { zero_mode } else { 0.0 };
+        let normalisation = 1.0 / (n0 * n1) as f64;
+        let mut spectrum = vec![0.0; half * n0];
+        for ky in 0..half {
+            let qy = wavenumber(ky, n1);
+            for kx in 0..n0 {
+                let qx = wavenumber(kx, n0);
+                let value = if kx == 0 && ky == 0 {
+                    zero_mode
+                } else {
+                    compliance.eval(qx.hypot(qy)) * sinc(0.5 * qx * delta) * sinc(0.5 * qy * delta)
+                };
+                spectrum[ky * n0 + kx] = value * normalisation;
+            }
+        }
+        spectrum
+    }
+
+    /// Real-to-complex transform of every row of `workspace.real`, then the
+    /// complex transform of every column; result transposed in
+    /// `workspace.columns`.
+    fn forward_all_rows(&mut self) -> Result<()> {
+        let (n0, n1) = self.size;
+        let half = n1 / 2 + 1;
+        let ws = &mut self.workspace;
+        for (row, out) in ws.real.chunks_exact_mut(n1).zip(ws.rows.chunks_exact_mut(half)) {
+            self.row_forward
+                .process_with_scratch(row, out, &mut ws.scratch)
+                .map_err(fft_error)?;
+        }
+        transpose::transpose(&ws.rows, &mut ws.columns, half, n0);
+        self.column_forward
+            .process_with_scratch(&mut ws.columns, &mut ws.scratch);
+        Ok(())
+    }
+
+    /// Displacements `u = K p` for cell pressures `pressure` (both row-major
+    /// over the grid).
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] if a slice does not have `grid.len()` values.
+    pub fn apply(&mut self, pressure: &[f64], displacement: &mut [f64]) -> Result<()> {
+        let cells = self.grid.len();
+        for (field, found) in [("pressure", pressure.len()), ("displacement", displacement.len())] {
+            if found != cells {
+                return Err(Error::ShapeMismatch {
+                    field,
+                    expected: cells,
+                    found,
+                });
+            }
+        }
+        let (n0, n1) = self.size;
+        let (rows, columns) = (self.grid.rows(), self.grid.columns());
+        let half = n1 / 2 + 1;
+        {
+            let ws = &mut self.workspace;
+            // Rows of the pressure, zero-padded; the padding rows transform to zero.
+            for (i, out) in ws.rows.chunks_exact_mut(half).enumerate() {
+                if i < rows {
+                    let row = &mut ws.real[..n1];
+                    row[..columns].copy_from_slice(&pressure[i * columns..(i + 1) * columns]);
+                    row[columns..].fill(0.0);
+                    self.row_forward
+                        .process_with_scratch(row, out, &mut ws.scratch)
+                        .map_err(fft_error)?;
+                } else {
+                    out.fill(Complex::default());
+                }
+            }
+            transpose::transpose(&ws.rows, &mut ws.columns, half, n0);
+            self.column_forward
+                .process_with_scratch(&mut ws.columns, &mut ws.scratch);
+            for (c, k) in ws.columns.iter_mut().zip(&self.spectrum) {
+                *c *= *k;
+            }
+            self.column_inverse
+                .process_with_scratch(&mut ws.columns, &mut ws.scratch);
+            transpose::transpose(&ws.columns, &mut ws.rows, n0, half);
+            for (i, spectrum_row) in ws.rows.chunks_exact_mut(half).take(rows).enumerate() {
+                // A real signal has real DC and Nyquist terms; clear the rounding.
+                spectrum_row[0].im = 0.0;
+                if n1 % 2 == 0 {
+                    spectrum_row[half - 1].im = 0.0;
+                }
+                let row = &mut ws.real[..n1];
+                self.row_inverse
+                    .process_with_scratch(spectrum_row, row, &mut ws.scratch)
+                    .map_err(fft_error)?;
+                displacement[i * columns..(i + 1) * columns].copy_from_slice(&row[..columns]);
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Buffer sizes are fixed at construction, so an FFT error is a bug of this
+/// module; it is reported rather than unwrapped.
+fn fft_error(error: realfft::FftError) -> Error {
+    Error::Internal {
+        what: "FFT",
+        detail: error.to_string(),
+    }
+}
