@@ -3,7 +3,7 @@
 //!
 //! | group | what | source |
 //! |---|---|---|
-//! | [`lambda`] | `Lambda(u)`, `Lambda_g(t)`, the moments `a_m` | SPEC sections 2-3 |
+//! | [`lambda`](mod@lambda) | `Lambda(u)`, `Lambda_g(t)`, the moments `a_m` | SPEC sections 2-3 |
 //! | [`series`] | flat punch on a layer over a rigid base, Eq. (5) | Lyashenko, Popov & Borysiuk (2023) |
 //! | [`FlatPunch`], [`JkrFlatPunch`] | flat punch on a half-space, with Kendall adhesion | Boussinesq (1885); Kendall (1971) |
 //! | [`Hertz`] | sphere (paraboloid) on a half-space | Hertz (1882); Johnson (1985) |

@@ -9,7 +9,7 @@
 //!                  + (16 eps^4 a0/pi^2)(a0^3/pi^2 + 2 a1/3)
 //! ```
 //!
-//! with the moments `a0`, `a1` of [`a_m`](super::a_m).
+//! with the moments `a0`, `a1` of [`a_m`](super::a_m()).
 //!
 //! # Range of validity
 //!

@@ -1,5 +1,7 @@
 //! Guide pages: long-form documentation that does not belong to one item.
 //!
 //! * [`conventions`]: units, signs, names.
+//! * [`theory`]: the coating factor, the Green's function and the influence coefficients.
 
 pub mod conventions;
+pub mod theory;

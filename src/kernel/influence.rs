@@ -15,7 +15,7 @@ use super::radial::RadialRemainder;
 /// The coefficient for an offset `(di, dj)` (in cells) is the integral of the
 /// point-force Green's function `w(r)` over the loaded cell,
 /// `K(di, dj) = Integral_cell w(|x_ij - p|) dp`, with `w` split as in
-/// [`radial`](super::radial)'s module docs:
+/// [`doc::theory`](crate::doc::theory):
 ///
 /// * the layer half-space `1/(pi E1* r)`, by Love's exact closed form;
 /// * `-Lambda0 / (pi E1* sqrt(r^2 + h^2))`, by its exact closed form;
@@ -55,33 +55,67 @@ pub struct InfluenceCoefficients {
     tail_error: f64,
 }
 
+/// The corner function `F(X, Y)` of the Green's function, without the
+/// factor `1/(pi E1*)` (see [`doc::theory`](crate::doc::theory)).
+enum CornerFunction {
+    HalfSpace,
+    Coated {
+        thickness: f64,
+        lambda0: f64,
+        remainder: RadialRemainder,
+    },
+}
+
+impl CornerFunction {
+    fn eval(&self, x: f64, y: f64) -> f64 {
+        match self {
+            CornerFunction::HalfSpace => love(x, y),
+            CornerFunction::Coated {
+                thickness: h,
+                lambda0,
+                remainder,
+            } => love(x, y) - lambda0 * lifted_love(x, y, *h) - h * remainder.corner(x / h, y / h),
+        }
+    }
+}
+
 impl InfluenceCoefficients {
     /// The isolated influence coefficients of `substrate` on `grid`.
     pub fn isolated(substrate: &Substrate, grid: &Grid) -> Self {
         let (rows, columns) = (grid.rows(), grid.columns());
         let delta = grid.spacing();
         let corner_at = |k: usize| (k as f64 + 0.5) * delta;
-        let (modulus, corner_function, tail): (f64, Box<dyn Fn(f64, f64) -> f64>, f64) =
-            match substrate {
-                Substrate::HalfSpace(material) => {
-                    (material.contact_modulus(), Box::new(love), 0.0)
-                }
-                Substrate::Coated(coating) => {
-                    let h = coating.thickness();
-                    let functions = coating.functions();
-                    let lambda0 = functions.lambda(0.0);
-                    let r_min = 0.5 * delta / h;
-                    let r_max = corner_at(rows).hypot(corner_at(columns)) / h;
-                    let remainder = RadialRemainder::new(&functions, r_min, r_max);
-                    let tail = remainder.tail_mismatch();
-                    let f = move |x: f64, y: f64| {
-                        love(x, y) - lambda0 * lifted_love(x, y, h) - h * remainder.corner(x / h, y / h)
-                    };
-                    // The tail error enters each corner at most as h * (pi/2) * mismatch.
-                    let self_love = 4.0 * love(0.5 * delta, 0.5 * delta);
-                    (coating.layer().contact_modulus(), Box::new(f), 4.0 * h * PI * tail / self_love)
-                }
-            };
+        let (modulus, corner_function) = match substrate {
+            Substrate::HalfSpace(material) => {
+                (material.contact_modulus(), CornerFunction::HalfSpace)
+            }
+            Substrate::Coated(coating) => {
+                let h = coating.thickness();
+                let functions = coating.functions();
+                let r_max = corner_at(rows).hypot(corner_at(columns)) / h;
+                (
+                    coating.layer().contact_modulus(),
+                    CornerFunction::Coated {
+                        thickness: h,
+                        lambda0: functions.lambda(0.0),
+                        remainder: RadialRemainder::new(&functions, 0.5 * delta / h, r_max),
+                    },
+                )
+            }
+        };
+        // The tail error enters each corner at most as h (pi/2) |mismatch|,
+        // a coefficient as four corners.
+        let tail = match &corner_function {
+            CornerFunction::HalfSpace => 0.0,
+            CornerFunction::Coated {
+                thickness,
+                remainder,
+                ..
+            } => {
+                2.0 * PI * thickness * remainder.tail_mismatch()
+                    / (4.0 * love(0.5 * delta, 0.5 * delta))
+            }
+        };
         // Corner values F((k + 1/2) Delta, (l + 1/2) Delta); F is symmetric in
         // its arguments, so square blocks are filled once.
         let mut corners = vec![0.0; rows * columns];
@@ -90,7 +124,7 @@ impl InfluenceCoefficients {
                 corners[k * columns + l] = if l < k && k < columns {
                     corners[l * columns + k]
                 } else {
-                    corner_function(corner_at(k), corner_at(l))
+                    corner_function.eval(corner_at(k), corner_at(l))
                 };
             }
         }

@@ -174,15 +174,21 @@ impl ComplianceOperator {
         };
         for i in 0..n0 {
             for j in 0..n1 {
-                self.workspace.real[i * n1 + j] = match (offset(i, n0, rows), offset(j, n1, columns)) {
-                    (Some(di), Some(dj)) => influence.get(di, dj),
-                    _ => 0.0,
-                };
+                self.workspace.real[i * n1 + j] =
+                    match (offset(i, n0, rows), offset(j, n1, columns)) {
+                        (Some(di), Some(dj)) => influence.get(di, dj),
+                        _ => 0.0,
+                    };
             }
         }
         self.forward_all_rows()?;
         let normalisation = 1.0 / (n0 * n1) as f64;
-        Ok(self.workspace.columns.iter().map(|c| c.re * normalisation).collect())
+        Ok(self
+            .workspace
+            .columns
+            .iter()
+            .map(|c| c.re * normalisation)
+            .collect())
     }
 
     /// `u_z(|q|) sinc(q_x Delta/2) sinc(q_y Delta/2)` at the periodic
@@ -201,7 +207,11 @@ impl ComplianceOperator {
         };
         let sinc = |x: f64| if x == 0.0 { 1.0 } else { x.sin() / x };
         let zero_mode = compliance.at_zero();
-        let zero_mode = if zero_mode.is_finite() { zero_mode } else { 0.0 };
+        let zero_mode = if zero_mode.is_finite() {
+            zero_mode
+        } else {
+            0.0
+        };
         let normalisation = 1.0 / (n0 * n1) as f64;
         let mut spectrum = vec![0.0; half * n0];
         for ky in 0..half {
@@ -226,7 +236,11 @@ impl ComplianceOperator {
         let (n0, n1) = self.size;
         let half = n1 / 2 + 1;
         let ws = &mut self.workspace;
-        for (row, out) in ws.real.chunks_exact_mut(n1).zip(ws.rows.chunks_exact_mut(half)) {
+        for (row, out) in ws
+            .real
+            .chunks_exact_mut(n1)
+            .zip(ws.rows.chunks_exact_mut(half))
+        {
             self.row_forward
                 .process_with_scratch(row, out, &mut ws.scratch)
                 .map_err(fft_error)?;
@@ -244,7 +258,10 @@ impl ComplianceOperator {
     /// [`Error::ShapeMismatch`] if a slice does not have `grid.len()` values.
     pub fn apply(&mut self, pressure: &[f64], displacement: &mut [f64]) -> Result<()> {
         let cells = self.grid.len();
-        for (field, found) in [("pressure", pressure.len()), ("displacement", displacement.len())] {
+        for (field, found) in [
+            ("pressure", pressure.len()),
+            ("displacement", displacement.len()),
+        ] {
             if found != cells {
                 return Err(Error::ShapeMismatch {
                     field,

@@ -118,7 +118,9 @@ impl RadialRemainder {
     /// (units of `h`; `r_min > 0`).
     pub(crate) fn new(functions: &CoatingFunctions, r_min: f64, r_max: f64) -> Self {
         let lambda0 = functions.lambda(0.0);
-        let taylor = functions.lambda_taylor().sub(&crate::substrate::Series::exp(-1.0).scale(lambda0));
+        let taylor = functions
+            .lambda_taylor()
+            .sub(&crate::substrate::Series::exp(-1.0).scale(lambda0));
         let f = taylor.0;
         let asymptotic = [f[1], f[2], -3.0 * f[4], 45.0 * f[6]];
         let mut remainder = RadialRemainder {
@@ -144,7 +146,8 @@ impl RadialRemainder {
         let mut octave = first;
         loop {
             let start = 2f64.powi(octave);
-            let values = nodes.map(|x| disc_integral(functions, lambda0, start * (1.5 + 0.5 * x), &rule));
+            let values =
+                nodes.map(|x| disc_integral(functions, lambda0, start * (1.5 + 0.5 * x), &rule));
             remainder.pieces.push(Piece::from_values(&values));
             octave += 1;
             let end = 2f64.powi(octave);
