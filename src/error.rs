@@ -67,6 +67,15 @@ pub enum Error {
         /// The length that was passed.
         found: usize,
     },
+    /// The indenter cannot touch the surface anywhere on the grid (its height
+    /// is `+inf` at every cell centre): the grid does not reach it.
+    #[error("the indenter (bounding radius {bounding_radius} m) does not reach any cell of a grid {grid_extent} m wide")]
+    IndenterOutsideGrid {
+        /// The indenter's bounding radius, m.
+        bounding_radius: f64,
+        /// The smaller side of the grid, m.
+        grid_extent: f64,
+    },
     /// A failure inside the library that valid input should never cause;
     /// please report it.
     #[error("internal error in {what}: {detail}")]

@@ -7,9 +7,11 @@
 //! The crate has three parts behind one API:
 //!
 //! 1. the fundamental solution of the coated half-space turned into BEM
-//!    kernels (the [`substrate`] functions `R(t)` and `Lambda_g(t)` so far),
-//! 2. an FFT boundary-element contact solver generic over indenter shapes
-//!    (to come),
+//!    kernels ([`substrate`] for the body and its functions `R(t)` and
+//!    `Lambda_g(t)`, [`kernel`] for `u_z(q)`, the influence coefficients and
+//!    the FFT compliance operator),
+//! 2. [`solver`]: an FFT boundary-element contact solver generic over
+//!    [`indenter`] shapes, non-adhesive and adhesive (JKR limit),
 //! 3. [`analytic`]: closed forms, series and exact solutions the solver is
 //!    checked against.
 //!
@@ -51,8 +53,10 @@ pub mod analytic;
 pub mod doc;
 pub mod error;
 pub mod grid;
+pub mod indenter;
 pub mod kernel;
 pub mod material;
+pub mod solver;
 pub mod substrate;
 
 pub use error::{Error, Result};

@@ -1,0 +1,82 @@
+//! An arbitrary indenter given by heights on a grid.
+
+use crate::error::{Error, Result};
+use crate::grid::Grid;
+
+use super::Indenter;
+
+/// An indenter given by its heights at the cell centres of a grid, centred on
+/// the axis: the value of cell `(i, j)` is the height at
+/// `x = (i + 1/2 - rows/2) Delta`, `y = (j + 1/2 - columns/2) Delta`, and
+/// applies to every point of that cell. Outside the map the indenter cannot
+/// touch. Use a grid matching the solver's to sample it exactly.
+///
+/// ```
+/// use layered_contact::indenter::{HeightMap, Indenter};
+/// use layered_contact::Grid;
+///
+/// let grid = Grid::new(4, 4, 1e-4)?;
+/// let heights: Vec<f64> = (0..16).map(|c| c as f64 * 1e-6).collect();
+/// let map = HeightMap::new(grid, heights)?;
+/// assert_eq!(map.height(-1.5e-4, -1.5e-4), 0.0); // cell (0, 0)
+/// assert_eq!(map.height(1.5e-4, 1.5e-4), 15e-6); // cell (3, 3)
+/// assert_eq!(map.height(3e-4, 0.0), f64::INFINITY);
+/// Ok::<(), layered_contact::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct HeightMap {
+    grid: Grid,
+    heights: Vec<f64>,
+}
+
+impl HeightMap {
+    /// A map of `heights` (m, row-major over `grid`; `+inf` allowed for
+    /// points that cannot touch).
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] if `heights` does not have `grid.len()`
+    /// values; [`Error::InvalidParameter`] if one is NaN or `-inf`.
+    pub fn new(grid: Grid, heights: Vec<f64>) -> Result<Self> {
+        if heights.len() != grid.len() {
+            return Err(Error::ShapeMismatch {
+                field: "heights",
+                expected: grid.len(),
+                found: heights.len(),
+            });
+        }
+        if let Some(&bad) = heights
+            .iter()
+            .find(|h| h.is_nan() || **h == f64::NEG_INFINITY)
+        {
+            return Err(Error::InvalidParameter {
+                name: "heights",
+                value: bad,
+                expected: "finite or +inf",
+            });
+        }
+        Ok(HeightMap { grid, heights })
+    }
+}
+
+impl Indenter for HeightMap {
+    fn height(&self, x: f64, y: f64) -> f64 {
+        let (lx, ly) = self.grid.extent();
+        let delta = self.grid.spacing();
+        let i = ((x + 0.5 * lx) / delta).floor();
+        let j = ((y + 0.5 * ly) / delta).floor();
+        if i >= 0.0
+            && j >= 0.0
+            && (i as usize) < self.grid.rows()
+            && (j as usize) < self.grid.columns()
+        {
+            self.heights[i as usize * self.grid.columns() + j as usize]
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    fn bounding_radius(&self) -> f64 {
+        let (lx, ly) = self.grid.extent();
+        0.5 * lx.hypot(ly)
+    }
+}

@@ -1,0 +1,182 @@
+//! Adhesive contact in the JKR limit with the mesh-dependent detachment
+//! criterion (Pohrt & Popov 2015).
+
+use crate::error::{Error, Result};
+use crate::indenter::Indenter;
+
+use super::{check_finite, ContactSolver, IterationInfo, Observer, Solution, WarmStart};
+
+impl ContactSolver {
+    /// Adhesive contact at `depth` (m) with work of adhesion
+    /// `work_of_adhesion` (J/m^2), in the JKR limit (SPEC section 2).
+    ///
+    /// The set of attached cells evolves from the warm start's (the history):
+    /// cells the indenter penetrates attach; an attached cell whose tension
+    /// exceeds the critical stress [`critical_stress`](Self::critical_stress)
+    /// detaches. On each attached set the displacement is prescribed
+    /// (`u = d - f`) and the pressures follow from a conjugate-gradient solve;
+    /// the set is updated until nothing attaches or detaches. Pass the
+    /// loading value of the work of adhesion while the indenter advances and
+    /// the unloading value while it retracts.
+    ///
+    /// Growth is by penetration only: with zero-range adhesion an advancing
+    /// edge is not pulled ahead, so a monotonic loading branch follows the
+    /// non-adhesive one unless the contact recedes. When every cell has
+    /// detached the contact is lost: the solution has no contact and force 0.
+    ///
+    /// # Errors
+    /// As [`ContactSolver::solve_depth`], and [`Error::InvalidParameter`]
+    /// for a negative or non-finite work of adhesion.
+    pub fn solve_depth_adhesive<I: Indenter + ?Sized>(
+        &mut self,
+        indenter: &I,
+        depth: f64,
+        work_of_adhesion: f64,
+        warm: Option<&WarmStart>,
+        observer: &mut dyn Observer,
+    ) -> Result<(Solution, WarmStart)> {
+        check_finite("depth", depth)?;
+        let work = crate::error::non_negative_finite("work_of_adhesion", work_of_adhesion)?;
+        self.check_warm_start(warm)?;
+        self.sample_profile(indenter)?;
+        let sigma_c = self.critical_stress(work);
+        let n = self.grid().len();
+        let reachable: Vec<bool> = self
+            .workspace
+            .profile
+            .iter()
+            .map(|f| f.is_finite())
+            .collect();
+        let mut attached: Vec<bool> = (0..n)
+            .map(|c| {
+                reachable[c]
+                    && (self.workspace.profile[c] < depth || warm.is_some_and(|w| w.attached[c]))
+            })
+            .collect();
+        let mut pressure: Vec<f64> = match warm {
+            Some(w) => (0..n)
+                .map(|c| if attached[c] { w.pressure[c] } else { 0.0 })
+                .collect(),
+            None => vec![0.0; n],
+        };
+        let mut total_iterations = 0;
+        let mut residual = 0.0;
+        // Each round removes or adds at least one cell of a finite set, so
+        // `4 n` rounds bound any sequence that does not cycle.
+        for round in 1..=(4 * n + 4) {
+            if !attached.contains(&true) {
+                return Ok(self.no_contact(depth));
+            }
+            let (iterations, r) = self.clamped_solve(depth, &attached, &mut pressure)?;
+            total_iterations += iterations;
+            residual = r;
+            // Displacement of the converged pressure is in the workspace.
+            let ws = &self.workspace;
+            let mut changed = 0usize;
+            for c in 0..n {
+                if attached[c] {
+                    if pressure[c] < -sigma_c {
+                        attached[c] = false;
+                        pressure[c] = 0.0;
+                        changed += 1;
+                    }
+                } else if reachable[c] && ws.profile[c] - depth + ws.displacement[c] < 0.0 {
+                    attached[c] = true;
+                    changed += 1;
+                }
+            }
+            observer.observe(&IterationInfo {
+                iteration: round,
+                residual,
+                contact_cells: attached.iter().filter(|a| **a).count(),
+            });
+            if changed == 0 {
+                let solution = self.solution(
+                    &pressure,
+                    depth,
+                    total_iterations,
+                    residual,
+                    Some(&attached),
+                );
+                return Ok((solution, WarmStart { pressure, attached }));
+            }
+        }
+        Err(Error::NoConvergence {
+            method: "adhesive active-set iteration",
+            iterations: 4 * n + 4,
+            residual,
+        })
+    }
+
+    /// Conjugate gradients for the pressures on the attached cells that give
+    /// `u = depth - f` there (pressure 0 elsewhere). Leaves the displacement
+    /// of the result in the workspace. Returns iterations and the final
+    /// relative residual.
+    fn clamped_solve(
+        &mut self,
+        depth: f64,
+        attached: &[bool],
+        pressure: &mut [f64],
+    ) -> Result<(usize, f64)> {
+        let n = pressure.len();
+        let tolerance = self.params.tolerance;
+        let ws = &mut self.workspace;
+        // residual r = b - K p on the attached set; `gap` holds r, `direction` the search direction.
+        self.operator.apply(pressure, &mut ws.displacement)?;
+        let mut b_norm = 0.0;
+        let mut r_norm = 0.0;
+        for c in 0..n {
+            if attached[c] {
+                let b = depth - ws.profile[c];
+                b_norm += b * b;
+                ws.gap[c] = b - ws.displacement[c];
+                r_norm += ws.gap[c] * ws.gap[c];
+            } else {
+                ws.gap[c] = 0.0;
+            }
+        }
+        let b_norm = b_norm.sqrt().max(f64::MIN_POSITIVE);
+        ws.direction.copy_from_slice(&ws.gap);
+        let mut iterations = 0;
+        while r_norm.sqrt() > tolerance * b_norm {
+            if iterations == self.params.max_iterations {
+                return Err(Error::NoConvergence {
+                    method: "conjugate gradients on the attached cells",
+                    iterations,
+                    residual: r_norm.sqrt() / b_norm,
+                });
+            }
+            iterations += 1;
+            self.operator.apply(&ws.direction, &mut ws.response)?;
+            let mut curvature = 0.0;
+            for c in 0..n {
+                if attached[c] {
+                    curvature += ws.direction[c] * ws.response[c];
+                }
+            }
+            if curvature <= 0.0 {
+                break;
+            }
+            let step = r_norm / curvature;
+            let mut new_norm = 0.0;
+            for c in 0..n {
+                if attached[c] {
+                    pressure[c] += step * ws.direction[c];
+                    ws.gap[c] -= step * ws.response[c];
+                    new_norm += ws.gap[c] * ws.gap[c];
+                }
+            }
+            let beta = new_norm / r_norm;
+            r_norm = new_norm;
+            for c in 0..n {
+                ws.direction[c] = if attached[c] {
+                    ws.gap[c] + beta * ws.direction[c]
+                } else {
+                    0.0
+                };
+            }
+        }
+        self.operator.apply(pressure, &mut ws.displacement)?;
+        Ok((iterations, r_norm.sqrt() / b_norm))
+    }
+}

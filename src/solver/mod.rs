@@ -1,0 +1,296 @@
+//! The boundary-element contact solver.
+//!
+//! [`ContactSolver`] owns a [`ComplianceOperator`] (kernel and FFT plans,
+//! built once) and solves, for any [`Indenter`]:
+//!
+//! * [`ContactSolver::solve_depth`]: non-adhesive contact at a given depth,
+//!   by the constrained conjugate gradients of Polonsky & Keer (1999, Wear
+//!   231, 206), displacement-controlled variant;
+//! * [`ContactSolver::solve_force`]: non-adhesive contact at a given total
+//!   force, Polonsky & Keer's original force-controlled algorithm;
+//! * [`ContactSolver::solve_depth_adhesive`]: adhesive contact in the JKR
+//!   limit with the mesh-dependent detachment criterion of Pohrt & Popov
+//!   (2015, Facta Univ. Mech. Eng. 13, 3):
+//!   a cell in contact may carry tension down to
+//!   `-sigma_c = -sqrt(E1* dgamma / (0.473201 Delta))`; a cell whose tension
+//!   exceeds it detaches; a cell the indenter penetrates attaches.
+//!
+//! Each solve may start from the [`WarmStart`] of the previous one, so a
+//! quasi-static curve costs little more than its hardest step, and for
+//! adhesive contact the warm start carries the history (which cells are
+//! attached). Solves allocate only their output; scratch buffers live in the
+//! solver.
+//!
+//! The indenter's axis stands at the centre of the grid.
+
+// The iterations walk several per-cell arrays in step; an index reads clearer
+// than a five-way zip.
+#![allow(clippy::needless_range_loop)]
+
+mod adhesive;
+mod params;
+mod polonsky_keer;
+
+use ndarray::Array2;
+
+use crate::error::{Error, Result};
+use crate::grid::{Boundary, Grid};
+use crate::indenter::Indenter;
+use crate::kernel::ComplianceOperator;
+use crate::substrate::Substrate;
+
+pub use params::{Fields, IterationInfo, Observer, Solution, SolverParams, WarmStart};
+
+/// The constant of the mesh-dependent critical stress (Pohrt & Popov 2015).
+pub const MESH_CRITERION_CONSTANT: f64 = 0.473201;
+
+/// A contact solver for one substrate on one grid. See the [module
+/// docs](self).
+///
+/// ```
+/// use layered_contact::indenter::FlatPunch;
+/// use layered_contact::solver::{ContactSolver, SolverParams};
+/// use layered_contact::{Boundary, Grid, Material, Substrate};
+///
+/// let rubber = Material::new(1e6, 0.5)?;
+/// let a = 1e-3;
+/// let grid = Grid::square(34, 2.125 * a)?; // 32 cells across the punch
+/// let mut solver = ContactSolver::new(
+///     &Substrate::half_space(rubber), &grid, Boundary::Isolated, SolverParams::default())?;
+/// let punch = FlatPunch::new(a)?;
+/// let (solution, _) = solver.solve_depth(&punch, 1e-5, None, &mut ())?;
+/// // Boussinesq: F = 2 a E* d at the radius of equal area, within ~1/N.
+/// let exact = 2.0 * solution.contact_radius * rubber.contact_modulus() * 1e-5;
+/// assert!((solution.force / exact - 1.0).abs() < 0.03);
+/// Ok::<(), layered_contact::Error>(())
+/// ```
+pub struct ContactSolver {
+    operator: ComplianceOperator,
+    params: SolverParams,
+    /// `E*` of the surface material, for the critical stress.
+    surface_contact_modulus: f64,
+    workspace: Workspace,
+}
+
+impl std::fmt::Debug for ContactSolver {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ContactSolver")
+            .field("operator", &self.operator)
+            .field("params", &self.params)
+            .finish_non_exhaustive()
+    }
+}
+
+/// Scratch vectors, one value per cell.
+struct Workspace {
+    profile: Vec<f64>,
+    displacement: Vec<f64>,
+    gap: Vec<f64>,
+    direction: Vec<f64>,
+    response: Vec<f64>,
+    previous: Vec<f64>,
+}
+
+impl ContactSolver {
+    /// A solver for `substrate` on `grid` (kernel and FFT plans built here).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for a tolerance that is not positive and
+    /// finite or a zero iteration limit.
+    pub fn new(
+        substrate: &Substrate,
+        grid: &Grid,
+        boundary: Boundary,
+        params: SolverParams,
+    ) -> Result<Self> {
+        let operator = ComplianceOperator::new(substrate, grid, boundary)?;
+        Self::with_operator(operator, substrate, params)
+    }
+
+    /// A solver reusing an existing operator of `substrate` (for example one
+    /// shared between scenes).
+    ///
+    /// # Errors
+    /// As [`ContactSolver::new`].
+    pub fn with_operator(
+        operator: ComplianceOperator,
+        substrate: &Substrate,
+        params: SolverParams,
+    ) -> Result<Self> {
+        crate::error::positive_finite("tolerance", params.tolerance)?;
+        if params.max_iterations == 0 {
+            return Err(Error::InvalidParameter {
+                name: "max_iterations",
+                value: 0.0,
+                expected: "at least 1",
+            });
+        }
+        let n = operator.grid().len();
+        Ok(ContactSolver {
+            operator,
+            params,
+            surface_contact_modulus: substrate.surface_material().contact_modulus(),
+            workspace: Workspace {
+                profile: vec![0.0; n],
+                displacement: vec![0.0; n],
+                gap: vec![0.0; n],
+                direction: vec![0.0; n],
+                response: vec![0.0; n],
+                previous: vec![0.0; n],
+            },
+        })
+    }
+
+    /// The grid.
+    pub fn grid(&self) -> &Grid {
+        self.operator.grid()
+    }
+
+    /// The parameters.
+    pub fn params(&self) -> &SolverParams {
+        &self.params
+    }
+
+    /// Replaces the parameters (the kernel is kept).
+    pub fn set_params(&mut self, params: SolverParams) {
+        self.params = params;
+    }
+
+    /// The critical tensile stress `sqrt(E1* dgamma / (0.473201 Delta))` for a
+    /// work of adhesion `dgamma` on this grid, Pa.
+    pub fn critical_stress(&self, work_of_adhesion: f64) -> f64 {
+        (self.surface_contact_modulus * work_of_adhesion
+            / (MESH_CRITERION_CONSTANT * self.grid().spacing()))
+        .sqrt()
+    }
+
+    /// Samples the indenter at the cell centres (axis at the grid centre).
+    /// Returns the smallest height.
+    fn sample_profile<I: Indenter + ?Sized>(&mut self, indenter: &I) -> Result<f64> {
+        let grid = *self.operator.grid();
+        let delta = grid.spacing();
+        let (lx, ly) = grid.extent();
+        let columns = grid.columns();
+        let mut lowest = f64::INFINITY;
+        for (c, f) in self.workspace.profile.iter_mut().enumerate() {
+            let x = ((c / columns) as f64 + 0.5) * delta - 0.5 * lx;
+            let y = ((c % columns) as f64 + 0.5) * delta - 0.5 * ly;
+            let h = indenter.height(x, y);
+            if h.is_nan() || h == f64::NEG_INFINITY {
+                return Err(Error::InvalidParameter {
+                    name: "indenter height",
+                    value: h,
+                    expected: "finite or +inf at every cell centre",
+                });
+            }
+            *f = h;
+            lowest = lowest.min(h);
+        }
+        if lowest == f64::INFINITY {
+            return Err(Error::IndenterOutsideGrid {
+                bounding_radius: indenter.bounding_radius(),
+                grid_extent: lx.min(ly),
+            });
+        }
+        Ok(lowest)
+    }
+
+    /// Assembles the solution from `pressure` (with the workspace holding
+    /// the displacement of that pressure and the profile).
+    fn solution(
+        &mut self,
+        pressure: &[f64],
+        depth: f64,
+        iterations: usize,
+        residual: f64,
+        attached: Option<&[bool]>,
+    ) -> Solution {
+        let grid = *self.operator.grid();
+        let area = grid.cell_area();
+        let (lx, ly) = grid.extent();
+        let columns = grid.columns();
+        let delta = grid.spacing();
+        let (mut force, mut mx, mut my, mut cells) = (0.0, 0.0, 0.0, 0usize);
+        for (c, &p) in pressure.iter().enumerate() {
+            let in_contact = match attached {
+                Some(a) => a[c],
+                None => p > 0.0,
+            };
+            if in_contact {
+                cells += 1;
+            }
+            let x = ((c / columns) as f64 + 0.5) * delta - 0.5 * lx;
+            let y = ((c % columns) as f64 + 0.5) * delta - 0.5 * ly;
+            force += p * area;
+            mx += p * x * area;
+            my += p * y * area;
+        }
+        let shape = (grid.rows(), grid.columns());
+        let field = |keep: bool, values: &dyn Fn() -> Vec<f64>| {
+            keep.then(|| {
+                Array2::from_shape_vec(shape, values()).expect("field has the grid's shape")
+            })
+        };
+        let ws = &self.workspace;
+        let fields = self.params.fields;
+        let contact_area = cells as f64 * area;
+        Solution {
+            depth,
+            force,
+            moment: (mx, my),
+            contact_area,
+            contact_radius: (contact_area / std::f64::consts::PI).sqrt(),
+            contact_cells: cells,
+            iterations,
+            residual,
+            pressure: field(fields.pressure, &|| pressure.to_vec()),
+            displacement: field(fields.displacement, &|| ws.displacement.clone()),
+            gap: field(fields.gap, &|| {
+                ws.profile
+                    .iter()
+                    .zip(&ws.displacement)
+                    .map(|(f, u)| f - depth + u)
+                    .collect()
+            }),
+        }
+    }
+
+    /// The solution with no contact at `depth` (the indenter does not reach
+    /// the surface, or it has been pulled off).
+    fn no_contact(&mut self, depth: f64) -> (Solution, WarmStart) {
+        let n = self.grid().len();
+        self.workspace.displacement.fill(0.0);
+        let pressure = vec![0.0; n];
+        let solution = self.solution(&pressure, depth, 0, 0.0, None);
+        (
+            solution,
+            WarmStart {
+                pressure,
+                attached: vec![false; n],
+            },
+        )
+    }
+
+    fn check_warm_start(&self, warm: Option<&WarmStart>) -> Result<()> {
+        match warm {
+            Some(w) if w.pressure.len() != self.grid().len() => Err(Error::ShapeMismatch {
+                field: "warm start",
+                expected: self.grid().len(),
+                found: w.pressure.len(),
+            }),
+            _ => Ok(()),
+        }
+    }
+}
+
+fn check_finite(name: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::InvalidParameter {
+            name,
+            value,
+            expected: "finite",
+        })
+    }
+}

@@ -1,0 +1,125 @@
+//! Solver parameters, progress reports and results.
+
+use ndarray::Array2;
+
+/// Which fields a solve keeps in its [`Solution`]. None by default: a curve of
+/// a thousand steps stores a thousand sets of scalars, not a thousand
+/// pressure maps.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Fields {
+    /// Keep the cell pressures (Pa).
+    pub pressure: bool,
+    /// Keep the surface displacements at the cell centres (m, positive into
+    /// the body).
+    pub displacement: bool,
+    /// Keep the gap between indenter and deformed surface (m; `+inf` where
+    /// the indenter cannot reach).
+    pub gap: bool,
+}
+
+impl Fields {
+    /// Every field.
+    pub fn all() -> Self {
+        Fields {
+            pressure: true,
+            displacement: true,
+            gap: true,
+        }
+    }
+}
+
+/// Parameters of the contact solvers.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolverParams {
+    /// Relative tolerance: on the change of the pressure per iteration for the
+    /// constrained conjugate gradients (Polonsky and Keer's criterion), on the
+    /// residual of the linear system for the adhesive inner solves.
+    pub tolerance: f64,
+    /// Iteration limit (per inner solve for the adhesive solver).
+    pub max_iterations: usize,
+    /// Which fields to keep.
+    pub fields: Fields,
+}
+
+impl Default for SolverParams {
+    fn default() -> Self {
+        SolverParams {
+            tolerance: 1e-10,
+            max_iterations: 10_000,
+            fields: Fields::default(),
+        }
+    }
+}
+
+/// What an observer sees after each iteration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct IterationInfo {
+    /// Iterations so far in this solve.
+    pub iteration: usize,
+    /// The current residual (see [`SolverParams::tolerance`]).
+    pub residual: f64,
+    /// Cells currently in contact.
+    pub contact_cells: usize,
+}
+
+/// Receives progress from a solver; a library never prints, so pass one to
+/// log or plot convergence. `()` ignores everything; any
+/// `FnMut(&IterationInfo)` closure is an observer.
+pub trait Observer {
+    /// Called after each iteration.
+    fn observe(&mut self, info: &IterationInfo);
+}
+
+impl Observer for () {
+    fn observe(&mut self, _info: &IterationInfo) {}
+}
+
+impl<F: FnMut(&IterationInfo)> Observer for F {
+    fn observe(&mut self, info: &IterationInfo) {
+        self(info)
+    }
+}
+
+/// The result of one solve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solution {
+    /// Depth `d` of the indenter's axis point below the undeformed surface, m.
+    pub depth: f64,
+    /// Total force `F = sum p Delta^2`, N (negative when adhesion pulls).
+    pub force: f64,
+    /// First moments of the pressure about the indenter axis,
+    /// `(sum p x Delta^2, sum p y Delta^2)`, N m.
+    pub moment: (f64, f64),
+    /// Contact area: cells in contact times the cell area, m^2.
+    pub contact_area: f64,
+    /// Radius of the circle of equal area, `sqrt(A / pi)`, m.
+    pub contact_radius: f64,
+    /// Number of cells in contact.
+    pub contact_cells: usize,
+    /// Iterations used (operator applications per solve, roughly).
+    pub iterations: usize,
+    /// Final residual.
+    pub residual: f64,
+    /// Cell pressures, if asked for in [`Fields`].
+    pub pressure: Option<Array2<f64>>,
+    /// Surface displacements, if asked for.
+    pub displacement: Option<Array2<f64>>,
+    /// Gaps, if asked for.
+    pub gap: Option<Array2<f64>>,
+}
+
+/// The state a solve ends in, to start the next load step from: the cell
+/// pressures and, for adhesive contact, which cells are attached (the
+/// history that makes loading and unloading differ).
+#[derive(Debug, Clone, PartialEq)]
+pub struct WarmStart {
+    pub(crate) pressure: Vec<f64>,
+    pub(crate) attached: Vec<bool>,
+}
+
+impl WarmStart {
+    /// Number of cells attached (in contact).
+    pub fn attached_cells(&self) -> usize {
+        self.attached.iter().filter(|a| **a).count()
+    }
+}

@@ -1,0 +1,292 @@
+//! Non-adhesive contact by constrained conjugate gradients (Polonsky & Keer
+//! 1999, Wear 231, 206-219).
+
+use crate::error::{Error, Result};
+use crate::indenter::Indenter;
+
+use super::{check_finite, ContactSolver, IterationInfo, Observer, Solution, WarmStart};
+
+/// Which quantity a non-adhesive solve prescribes.
+#[derive(Clone, Copy)]
+enum Control {
+    Depth(f64),
+    Force(f64),
+}
+
+impl ContactSolver {
+    /// Non-adhesive contact at `depth` (m): pressures `p >= 0`, zero gap
+    /// where `p > 0`, non-negative gap elsewhere.
+    ///
+    /// A depth at which the indenter does not yet touch gives a solution
+    /// without contact (force 0). `warm` starts the iteration from a previous
+    /// solution (any depth) on the same grid.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for a non-finite depth or an indenter
+    /// height that is NaN; [`Error::IndenterOutsideGrid`] if the indenter
+    /// reaches no cell; [`Error::ShapeMismatch`] for a warm start from another
+    /// grid; [`Error::NoConvergence`] if the tolerance is not reached within
+    /// the iteration limit.
+    pub fn solve_depth<I: Indenter + ?Sized>(
+        &mut self,
+        indenter: &I,
+        depth: f64,
+        warm: Option<&WarmStart>,
+        observer: &mut dyn Observer,
+    ) -> Result<(Solution, WarmStart)> {
+        check_finite("depth", depth)?;
+        self.check_warm_start(warm)?;
+        let lowest = self.sample_profile(indenter)?;
+        if depth <= lowest {
+            return Ok(self.no_contact(depth));
+        }
+        self.constrained_cg(Control::Depth(depth), warm, observer)
+    }
+
+    /// Non-adhesive contact under total force `force` (N, `>= 0`); the depth
+    /// is part of the solution. Zero force gives the first-contact depth and
+    /// no contact.
+    ///
+    /// # Errors
+    /// As [`ContactSolver::solve_depth`], and [`Error::InvalidParameter`] for
+    /// a negative force (a non-adhesive contact cannot pull).
+    pub fn solve_force<I: Indenter + ?Sized>(
+        &mut self,
+        indenter: &I,
+        force: f64,
+        warm: Option<&WarmStart>,
+        observer: &mut dyn Observer,
+    ) -> Result<(Solution, WarmStart)> {
+        let force = crate::error::non_negative_finite("force", force)?;
+        self.check_warm_start(warm)?;
+        let lowest = self.sample_profile(indenter)?;
+        if force == 0.0 {
+            return Ok(self.no_contact(lowest));
+        }
+        self.constrained_cg(Control::Force(force), warm, observer)
+    }
+
+    fn constrained_cg(
+        &mut self,
+        control: Control,
+        warm: Option<&WarmStart>,
+        observer: &mut dyn Observer,
+    ) -> Result<(Solution, WarmStart)> {
+        let n = self.grid().len();
+        let area = self.grid().cell_area();
+        let reachable: Vec<bool> = self
+            .workspace
+            .profile
+            .iter()
+            .map(|f| f.is_finite())
+            .collect();
+        let self_coefficient = self.self_compliance()?;
+        let mut pressure = self.initial_pressure(control, warm, &reachable, self_coefficient);
+        if let Control::Force(w) = control {
+            let total = area * pressure.iter().sum::<f64>();
+            rescale(&mut pressure, w / total);
+        }
+        let tolerance = self.params.tolerance;
+        let (mut delta, mut g_old) = (0.0, 1.0);
+        self.workspace.direction.fill(0.0);
+        let mut depth = match control {
+            Control::Depth(d) => d,
+            Control::Force(_) => 0.0,
+        };
+        let mut residual = f64::INFINITY;
+        for iteration in 1..=self.params.max_iterations {
+            let ws = &mut self.workspace;
+            self.operator.apply(&pressure, &mut ws.displacement)?;
+            // Gap (up to the unknown depth under force control).
+            let reference = match control {
+                Control::Depth(d) => d,
+                Control::Force(_) => 0.0,
+            };
+            let mut contact = 0usize;
+            let mut gap_sum = 0.0;
+            for c in 0..n {
+                ws.gap[c] = if reachable[c] {
+                    ws.profile[c] - reference + ws.displacement[c]
+                } else {
+                    0.0
+                };
+                if pressure[c] > 0.0 {
+                    contact += 1;
+                    gap_sum += ws.gap[c];
+                }
+            }
+            if contact == 0 {
+                // Every pressure was clamped: restart from the overlap.
+                for c in 0..n {
+                    if reachable[c] && ws.gap[c] < 0.0 {
+                        pressure[c] = -ws.gap[c] / self_coefficient;
+                    }
+                }
+                delta = 0.0;
+                continue;
+            }
+            if let Control::Force(_) = control {
+                depth = gap_sum / contact as f64;
+                for (g, r) in ws.gap.iter_mut().zip(&reachable) {
+                    if *r {
+                        *g -= depth;
+                    }
+                }
+            }
+            let g_norm: f64 = (0..n)
+                .filter(|&c| pressure[c] > 0.0)
+                .map(|c| ws.gap[c].powi(2))
+                .sum();
+            for c in 0..n {
+                ws.direction[c] = if pressure[c] > 0.0 {
+                    ws.gap[c] + delta * (g_norm / g_old) * ws.direction[c]
+                } else {
+                    0.0
+                };
+            }
+            g_old = g_norm;
+            self.operator.apply(&ws.direction, &mut ws.response)?;
+            if let Control::Force(_) = control {
+                let mean = (0..n)
+                    .filter(|&c| pressure[c] > 0.0)
+                    .map(|c| ws.response[c])
+                    .sum::<f64>()
+                    / contact as f64;
+                for r in ws.response.iter_mut() {
+                    *r -= mean;
+                }
+            }
+            let (mut numerator, mut denominator) = (0.0, 0.0);
+            for c in 0..n {
+                if pressure[c] > 0.0 {
+                    numerator += ws.gap[c] * ws.direction[c];
+                    denominator += ws.response[c] * ws.direction[c];
+                }
+            }
+            let step = if denominator > 0.0 {
+                numerator / denominator
+            } else {
+                0.0
+            };
+            ws.previous.copy_from_slice(&pressure);
+            let mut overlap = false;
+            for c in 0..n {
+                if pressure[c] > 0.0 {
+                    pressure[c] = (pressure[c] - step * ws.direction[c]).max(0.0);
+                }
+            }
+            for c in 0..n {
+                if reachable[c] && pressure[c] == 0.0 && ws.gap[c] < 0.0 {
+                    pressure[c] = -step.max(0.0) * ws.gap[c];
+                    if pressure[c] <= 0.0 {
+                        pressure[c] = -ws.gap[c] / self_coefficient;
+                    }
+                    overlap = true;
+                }
+            }
+            delta = if overlap { 0.0 } else { 1.0 };
+            if let Control::Force(w) = control {
+                let total = area * pressure.iter().sum::<f64>();
+                if total > 0.0 {
+                    rescale(&mut pressure, w / total);
+                }
+            }
+            let change: f64 = pressure
+                .iter()
+                .zip(&ws.previous)
+                .map(|(a, b)| (a - b).abs())
+                .sum();
+            let size: f64 = pressure.iter().map(|p| p.abs()).sum();
+            residual = if size > 0.0 {
+                change / size
+            } else {
+                f64::INFINITY
+            };
+            let contact_cells = pressure.iter().filter(|p| **p > 0.0).count();
+            observer.observe(&IterationInfo {
+                iteration,
+                residual,
+                contact_cells,
+            });
+            if residual <= tolerance && !overlap {
+                // Final displacement and depth for the converged pressure.
+                self.operator
+                    .apply(&pressure, &mut self.workspace.displacement)?;
+                if let Control::Force(_) = control {
+                    let ws = &self.workspace;
+                    let (sum, count) = (0..n)
+                        .filter(|&c| pressure[c] > 0.0)
+                        .fold((0.0, 0usize), |(s, k), c| {
+                            (s + ws.profile[c] + ws.displacement[c], k + 1)
+                        });
+                    depth = sum / count.max(1) as f64;
+                }
+                let solution = self.solution(&pressure, depth, iteration, residual, None);
+                let attached = pressure.iter().map(|p| *p > 0.0).collect();
+                return Ok((solution, WarmStart { pressure, attached }));
+            }
+        }
+        Err(Error::NoConvergence {
+            method: "constrained conjugate gradients (Polonsky-Keer)",
+            iterations: self.params.max_iterations,
+            residual,
+        })
+    }
+
+    /// The operator's response at a cell to unit pressure on it.
+    pub(super) fn self_compliance(&mut self) -> Result<f64> {
+        if let Some(influence) = self.operator.influence() {
+            return Ok(influence.self_coefficient());
+        }
+        let ws = &mut self.workspace;
+        ws.direction.fill(0.0);
+        ws.direction[0] = 1.0;
+        self.operator.apply(&ws.direction, &mut ws.response)?;
+        Ok(ws.response[0].max(f64::MIN_POSITIVE))
+    }
+
+    /// A starting pressure: the warm start where it has contact, else the
+    /// overlap divided by the self-compliance (or uniform, for force control).
+    fn initial_pressure(
+        &self,
+        control: Control,
+        warm: Option<&WarmStart>,
+        reachable: &[bool],
+        self_coefficient: f64,
+    ) -> Vec<f64> {
+        if let Some(w) = warm {
+            let p: Vec<f64> = w
+                .pressure
+                .iter()
+                .zip(reachable)
+                .map(|(p, r)| if *r { p.max(0.0) } else { 0.0 })
+                .collect();
+            if p.iter().any(|v| *v > 0.0) {
+                return p;
+            }
+        }
+        let profile = &self.workspace.profile;
+        match control {
+            Control::Depth(d) => profile
+                .iter()
+                .map(|f| {
+                    if f.is_finite() {
+                        (d - f).max(0.0) / self_coefficient
+                    } else {
+                        0.0
+                    }
+                })
+                .collect(),
+            Control::Force(_) => reachable
+                .iter()
+                .map(|r| if *r { 1.0 } else { 0.0 })
+                .collect(),
+        }
+    }
+}
+
+fn rescale(values: &mut [f64], factor: f64) {
+    for v in values {
+        *v *= factor;
+    }
+}
