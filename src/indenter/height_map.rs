@@ -16,10 +16,10 @@ use super::Indenter;
 /// use layered_contact::Grid;
 ///
 /// let grid = Grid::new(4, 4, 1e-4)?;
-/// let heights: Vec<f64> = (0..16).map(|c| c as f64 * 1e-6).collect();
+/// let heights: Vec<f64> = (0..16).map(|c| f64::from(c) * 0.5e-6).collect();
 /// let map = HeightMap::new(grid, heights)?;
 /// assert_eq!(map.height(-1.5e-4, -1.5e-4), 0.0); // cell (0, 0)
-/// assert_eq!(map.height(1.5e-4, 1.5e-4), 15e-6); // cell (3, 3)
+/// assert_eq!(map.height(1.5e-4, 1.5e-4), 7.5e-6); // cell (3, 3)
 /// assert_eq!(map.height(3e-4, 0.0), f64::INFINITY);
 /// Ok::<(), layered_contact::Error>(())
 /// ```
