@@ -56,6 +56,7 @@ pub mod grid;
 pub mod indenter;
 pub mod kernel;
 pub mod material;
+mod numerics;
 pub mod solver;
 pub mod substrate;
 

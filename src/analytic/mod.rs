@@ -9,12 +9,14 @@
 //! | [`Hertz`] | sphere (paraboloid) on a half-space | Hertz (1882); Johnson (1985) |
 //! | [`JkrSphere`] | adhesive sphere on a half-space | Johnson, Kendall & Roberts (1971) |
 //! | [`Cone`] | conical punch on a half-space | Sneddon (1965) |
+//! | [`Axisymmetric`] | exact flat punch and paraboloid (JKR) on a coated half-space | Fredholm equation, [`doc::axisymmetric`](crate::doc::axisymmetric) |
 //!
 //! Every type here is built by a validating constructor (a typed
 //! [`Error`](crate::Error) for bad input) and then evaluated by infallible
 //! methods. The methods take the free variable (depth, contact radius, force)
 //! as an `f64`: a NaN argument gives a NaN result, as for `f64::sqrt`.
 
+pub mod axisymmetric;
 pub mod lambda;
 pub mod series;
 
@@ -23,6 +25,7 @@ mod hertz;
 mod jkr;
 mod punch;
 
+pub use axisymmetric::{Axisymmetric, ContactState, LayeredFlatPunch, LayeredParaboloid, PullOff};
 pub use cone::Cone;
 pub use hertz::Hertz;
 pub use jkr::JkrSphere;

@@ -35,15 +35,11 @@
 //! the table stops where the two agree to `1e-14`, or at `R = 512`, recording
 //! the mismatch there.
 
-use std::f64::consts::PI;
-use std::num::NonZeroUsize;
-
 use gauss_quad::legendre::GaussLegendre;
 
+use crate::numerics::{gauss, oscillatory_integral, OctaveTable};
 use crate::substrate::CoatingFunctions;
 
-/// Chebyshev nodes per octave.
-const NODES: usize = 24;
 /// Gauss points per panel of the Hankel quadrature.
 const HANKEL_ORDER: usize = 20;
 /// Gauss points per angular piece of the corner integral.
@@ -55,61 +51,16 @@ const MAX_TABLE_RADIUS: f64 = 512.0;
 /// Agreement of table and asymptotics that ends the table.
 const TAIL_AGREEMENT: f64 = 1e-14;
 
-fn gauss(order: usize) -> GaussLegendre {
-    GaussLegendre::new(NonZeroUsize::new(order).expect("order is positive"))
-}
-
-/// Chebyshev interpolant on one octave.
-#[derive(Debug, Clone)]
-struct Piece {
-    coefficients: [f64; NODES],
-}
-
-impl Piece {
-    /// Chebyshev nodes on `[-1, 1]`.
-    fn nodes() -> [f64; NODES] {
-        std::array::from_fn(|j| (PI * (j as f64 + 0.5) / NODES as f64).cos())
-    }
-
-    fn from_values(values: &[f64; NODES]) -> Self {
-        let n = NODES as f64;
-        let coefficients = std::array::from_fn(|k| {
-            let sum: f64 = values
-                .iter()
-                .enumerate()
-                .map(|(j, v)| v * (PI * k as f64 * (j as f64 + 0.5) / n).cos())
-                .sum();
-            if k == 0 {
-                sum / n
-            } else {
-                2.0 * sum / n
-            }
-        });
-        Piece { coefficients }
-    }
-
-    /// Clenshaw's recurrence at `x` in `[-1, 1]`.
-    fn eval(&self, x: f64) -> f64 {
-        let (mut b1, mut b2) = (0.0, 0.0);
-        for &c in self.coefficients.iter().skip(1).rev() {
-            let b0 = 2.0 * x * b1 - b2 + c;
-            b2 = b1;
-            b1 = b0;
-        }
-        x * b1 - b2 + self.coefficients[0]
-    }
-}
-
 /// `Gc(R)` of the module docs for one coated substrate, over a range of `R`.
 #[derive(Debug, Clone)]
 pub(crate) struct RadialRemainder {
-    pieces: Vec<Piece>,
-    first_octave: i32,
-    table_start: f64,
-    table_end: f64,
+    /// `Gc` on `[table.start(), table.end()]`; `None` if every radius needed
+    /// lies in the asymptotic range.
+    table: Option<OctaveTable>,
     /// `Gc(R) ~ a[0] + a[1]/R + a[2]/R^3 + a[3]/R^5` beyond the table.
     asymptotic: [f64; 4],
-    /// `|table - asymptotics|` at `table_end`, in units of `h`.
+    /// `|table - asymptotics|` where the asymptotics take over, in units of
+    /// `h` (0 if they are never used).
     tail_mismatch: f64,
 }
 
@@ -122,57 +73,45 @@ impl RadialRemainder {
             .lambda_taylor()
             .sub(&crate::substrate::Series::exp(-1.0).scale(lambda0));
         let f = taylor.0;
-        let asymptotic = [f[1], f[2], -3.0 * f[4], 45.0 * f[6]];
         let mut remainder = RadialRemainder {
-            pieces: Vec::new(),
-            first_octave: 0,
-            table_start: f64::INFINITY,
-            table_end: 0.0,
-            asymptotic,
+            table: None,
+            asymptotic: [f[1], f[2], -3.0 * f[4], 45.0 * f[6]],
             tail_mismatch: 0.0,
         };
         let top = r_max.min(MAX_TABLE_RADIUS);
+        let rule = gauss(HANKEL_ORDER);
         if r_min >= top {
-            // Everything needed lies in the asymptotic range.
-            remainder.table_end = 0.0;
             remainder.tail_mismatch = remainder.mismatch_at(functions, lambda0, top);
             return remainder;
         }
         let first = (r_min.log2().floor() as i32).max(MIN_OCTAVE);
-        remainder.first_octave = first;
-        remainder.table_start = 2f64.powi(first);
-        let rule = gauss(HANKEL_ORDER);
-        let nodes = Piece::nodes();
-        let mut octave = first;
-        loop {
-            let start = 2f64.powi(octave);
-            let values =
-                nodes.map(|x| disc_integral(functions, lambda0, start * (1.5 + 0.5 * x), &rule));
-            remainder.pieces.push(Piece::from_values(&values));
-            octave += 1;
-            let end = 2f64.powi(octave);
-            remainder.table_end = end;
-            if end >= r_max {
-                // The table covers every radius needed.
-                break;
-            }
-            if end >= top {
-                remainder.tail_mismatch = remainder.mismatch_at(functions, lambda0, end);
-                break;
-            }
-            if end >= 32.0 {
-                let mismatch = remainder.mismatch_at(functions, lambda0, end);
-                if mismatch <= TAIL_AGREEMENT * (1.0 + asymptotic[0].abs()) {
-                    remainder.tail_mismatch = mismatch;
-                    break;
+        let scale = 1.0 + remainder.asymptotic[0].abs();
+        let mut mismatch = 0.0;
+        let table = OctaveTable::build(
+            first,
+            false,
+            |r| disc_integral(functions, lambda0, r, &rule),
+            |end| {
+                if end >= r_max {
+                    return true; // the table covers every radius needed
                 }
-            }
+                if end >= top || end >= 32.0 {
+                    mismatch = remainder.mismatch_at(functions, lambda0, end);
+                    return end >= top || mismatch <= TAIL_AGREEMENT * scale;
+                }
+                false
+            },
+        );
+        if table.end() < r_max {
+            remainder.tail_mismatch = mismatch;
         }
+        remainder.table = Some(table);
         remainder
     }
 
     fn mismatch_at(&self, functions: &CoatingFunctions, lambda0: f64, r: f64) -> f64 {
-        (disc_integral(functions, lambda0, r, &gauss(HANKEL_ORDER)) - self.asymptotic_at(r)).abs()
+        let numeric = disc_integral(functions, lambda0, r, &gauss(HANKEL_ORDER));
+        (numeric - self.asymptotic_at(r)).abs()
     }
 
     /// `|table - asymptotics|` where the table ends (units of `h`): an
@@ -188,27 +127,30 @@ impl RadialRemainder {
         a0 + inv * (a1 + inv2 * (a3 + inv2 * a5))
     }
 
+    fn table_end(&self) -> f64 {
+        self.table.as_ref().map_or(0.0, OctaveTable::end)
+    }
+
     /// `Gc(R)`, `R >= 0` in units of `h`.
     pub(crate) fn disc(&self, r: f64) -> f64 {
-        if r >= self.table_end {
-            return self.asymptotic_at(r);
+        match &self.table {
+            Some(table) if r < table.end() => {
+                if r < table.start() {
+                    // Gc(R) ~ g(0) R^2 / 2 below the first octave.
+                    let scale = r / table.start();
+                    table.eval(table.start()) * scale * scale
+                } else {
+                    table.eval(r)
+                }
+            }
+            _ => self.asymptotic_at(r),
         }
-        if r < self.table_start {
-            // Gc(R) ~ g(0) R^2 / 2 below the first octave.
-            let scale = r / self.table_start;
-            return self.pieces[0].eval(-1.0) * scale * scale;
-        }
-        let octave = (r.log2().floor() as i32).max(self.first_octave);
-        let index = ((octave - self.first_octave) as usize).min(self.pieces.len() - 1);
-        let start = 2f64.powi(self.first_octave + index as i32);
-        let x = (2.0 * r / start - 3.0).clamp(-1.0, 1.0);
-        self.pieces[index].eval(x)
     }
 
     /// `Integral_0^atan(Y/X) Gc(X / cos t) dt` for `X > 0`, `Y >= 0`.
     fn wedge(&self, x: f64, y: f64, rule: &GaussLegendre) -> f64 {
         let end = y.atan2(x);
-        if x >= self.table_end {
+        if x >= self.table_end() {
             // Closed form of the asymptotic expansion.
             let [a0, a1, a3, a5] = self.asymptotic;
             let s = end.sin();
@@ -247,27 +189,12 @@ impl RadialRemainder {
     }
 }
 
-/// `Gc(R) = R Integral_0^inf (f(u)/u) J1(u R) du` by Gauss-Legendre on panels
-/// of one period of `J1` (at most 1 wide), refined geometrically towards
-/// `u = 0` where `f` may vary on short scales (soft bases).
+/// `Gc(R) = R Integral_0^inf (f(u)/u) J1(u R) du`.
 fn disc_integral(functions: &CoatingFunctions, lambda0: f64, r: f64, rule: &GaussLegendre) -> f64 {
     let integrand = |u: f64| {
         let f = functions.lambda(u) - lambda0 * (-u).exp();
         f / u * libm::j1(u * r)
     };
-    let width = (2.0 * PI / r).min(1.0);
     let u_max = 50.0 + (1.0 + lambda0.abs()).ln();
-    let mut total = 0.0;
-    let mut upper = width;
-    for _ in 0..60 {
-        let lower = 0.5 * upper;
-        total += rule.integrate(lower, upper, integrand);
-        upper = lower;
-    }
-    let panels = (u_max / width).ceil() as usize;
-    for i in 1..panels {
-        let lower = i as f64 * width;
-        total += rule.integrate(lower, lower + width, integrand);
-    }
-    r * total
+    r * oscillatory_integral(integrand, r, u_max, rule)
 }

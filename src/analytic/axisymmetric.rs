@@ -1,0 +1,619 @@
+//! Exact axisymmetric contact on a coated half-space: a Fredholm integral
+//! equation of the second kind, solved by Nystrom's method.
+//!
+//! The derivation is in [`doc::axisymmetric`](crate::doc::axisymmetric). In
+//! short: writing the pressure under a contact of radius `a` through an
+//! auxiliary function `phi` on `[0, a]`,
+//!
+//! ```text
+//! p(r) = (E1*/pi) [ phi(a) / sqrt(a^2 - r^2) - Integral_r^a phi'(t) / sqrt(t^2 - r^2) dt ],
+//! ```
+//!
+//! the condition `u_z(r) = d - f(r)` inside the contact becomes, with
+//! `x = a xi`, `eps = a/h` and the cosine transform
+//! `k(y) = Integral_0^inf Lambda_g(u) cos(u y) du`,
+//!
+//! ```text
+//! phi(xi) - (eps/pi) Integral_0^1 [k(eps (xi - s)) + k(eps (xi + s))] phi(s) ds = d - g(a xi),
+//! g(x) = x Integral_0^x f'(r) / sqrt(x^2 - r^2) dr          (g = x^2/R for a paraboloid),
+//! F = 2 E1* a Integral_0^1 phi(xi) d xi,
+//! K_I = -E1* phi(1) / sqrt(pi a),   G = E1* phi(1)^2 / (2 pi a).
+//! ```
+//!
+//! On a half-space `Lambda_g = 0` and `phi = d - g`: Boussinesq, Hertz and
+//! JKR exactly. The kernel is smooth, so Gauss-Legendre Nystrom converges
+//! exponentially; the order is doubled until the stiffness and the edge value
+//! `phi(1)` change by less than `1e-11`.
+
+use std::f64::consts::PI;
+use std::sync::Arc;
+
+use nalgebra::{DMatrix, DVector};
+
+use crate::error::{positive_finite, Error, Result};
+use crate::numerics::{gauss, oscillatory_integral, OctaveTable};
+use crate::substrate::Substrate;
+
+/// Smallest and largest Nystrom orders tried.
+const MIN_ORDER: usize = 16;
+const MAX_ORDER: usize = 4096;
+/// Relative change between two orders that counts as converged.
+const CONVERGED: f64 = 1e-11;
+
+/// The cosine transform `k(y)` of `Lambda_g`, and its derivative, tabulated.
+#[derive(Debug)]
+struct CosineKernel {
+    value: OctaveTable,
+    slope: OctaveTable,
+}
+
+/// Exact axisymmetric contact solutions on one substrate: flat punches and
+/// paraboloids, with and without adhesion (JKR).
+///
+/// Build once per substrate (this tabulates the kernel, a few ms to
+/// tens of ms); each solution then costs one small dense solve.
+///
+/// ```
+/// use layered_contact::analytic::{Axisymmetric, PunchStiffnessSeries};
+/// use layered_contact::{Material, Substrate};
+///
+/// let rubber = Material::new(0.324e6, 0.48)?;
+/// let film = Substrate::layer_on_rigid_base(rubber, 5e-3)?;
+/// let exact = Axisymmetric::new(&film, 4.0)?;
+/// let punch = exact.flat_punch(2.5e-3)?; // D = h = 5 mm
+/// let series = PunchStiffnessSeries::new(rubber, 5e-3)?.evaluate(2.5e-3)?;
+/// // The series is good to ~eps^5 at a/h = 0.5:
+/// assert!((punch.ratio() / series.ratio - 1.0).abs() < 0.01);
+/// // On a half-space the solution is Boussinesq's, exactly.
+/// let half = Axisymmetric::new(&Substrate::half_space(rubber), 4.0)?;
+/// assert_eq!(half.flat_punch(1e-3)?.ratio(), 1.0);
+/// Ok::<(), layered_contact::Error>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct Axisymmetric {
+    contact_modulus: f64,
+    /// Layer thickness; `None` for a half-space.
+    thickness: Option<f64>,
+    kernel: Option<Arc<CosineKernel>>,
+    max_eps: f64,
+}
+
+/// A converged Nystrom solution on `[0, 1]` for a given `eps`.
+#[derive(Debug, Clone)]
+struct Nystrom {
+    eps: f64,
+    nodes: Vec<f64>,
+    weights: Vec<f64>,
+    /// Solutions for the right-hand sides `1` and `xi^2`.
+    unit: Vec<f64>,
+    quadratic: Vec<f64>,
+    kernel: Option<Arc<CosineKernel>>,
+    /// Relative change at the last doubling.
+    change: f64,
+}
+
+impl Nystrom {
+    fn trivial() -> Self {
+        Nystrom {
+            eps: 0.0,
+            nodes: Vec::new(),
+            weights: Vec::new(),
+            unit: Vec::new(),
+            quadratic: Vec::new(),
+            kernel: None,
+            change: 0.0,
+        }
+    }
+
+    /// `(eps/pi) [k(eps (xi - s)) + k(eps (xi + s))]`.
+    fn kernel_at(kernel: &CosineKernel, eps: f64, xi: f64, s: f64) -> f64 {
+        eps / PI * (kernel.value.eval(eps * (xi - s).abs()) + kernel.value.eval(eps * (xi + s)))
+    }
+
+    /// `d/dxi` of [`Nystrom::kernel_at`].
+    fn kernel_slope(kernel: &CosineKernel, eps: f64, xi: f64, s: f64) -> f64 {
+        let sign = if xi >= s { 1.0 } else { -1.0 };
+        eps * eps / PI
+            * (sign * kernel.slope.eval(eps * (xi - s).abs()) + kernel.slope.eval(eps * (xi + s)))
+    }
+
+    /// Solves at `order` points.
+    fn solve(kernel: &Arc<CosineKernel>, eps: f64, order: usize) -> Result<Self> {
+        let rule = gauss(order);
+        let (nodes, weights): (Vec<f64>, Vec<f64>) =
+            rule.iter().map(|(x, w)| (0.5 * (x + 1.0), 0.5 * w)).unzip();
+        let n = nodes.len();
+        let matrix = DMatrix::from_fn(n, n, |i, j| {
+            let delta = if i == j { 1.0 } else { 0.0 };
+            delta - weights[j] * Self::kernel_at(kernel, eps, nodes[i], nodes[j])
+        });
+        let lu = matrix.lu();
+        let solve = |rhs: DVector<f64>| {
+            lu.solve(&rhs).ok_or(Error::Internal {
+                what: "Nystrom solve",
+                detail: "singular matrix".to_string(),
+            })
+        };
+        let unit = solve(DVector::from_element(n, 1.0))?;
+        let quadratic = solve(DVector::from_iterator(n, nodes.iter().map(|x| x * x)))?;
+        Ok(Nystrom {
+            eps,
+            nodes,
+            weights,
+            unit: unit.as_slice().to_vec(),
+            quadratic: quadratic.as_slice().to_vec(),
+            kernel: Some(Arc::clone(kernel)),
+            change: f64::INFINITY,
+        })
+    }
+
+    /// Doubles the order until integral and edge value of both solutions
+    /// have converged.
+    fn converged(kernel: &Arc<CosineKernel>, eps: f64) -> Result<Self> {
+        let mut order = MIN_ORDER.max((4.0 * eps).ceil() as usize);
+        let mut previous = Self::solve(kernel, eps, order)?;
+        loop {
+            order *= 2;
+            if order > MAX_ORDER {
+                return Err(Error::NoConvergence {
+                    method: "Nystrom discretisation",
+                    iterations: order / 2,
+                    residual: previous.change,
+                });
+            }
+            let mut next = Self::solve(kernel, eps, order)?;
+            let change = [
+                (next.integral(false), previous.integral(false)),
+                (next.edge(false), previous.edge(false)),
+                (next.integral(true), previous.integral(true)),
+                (next.edge(true), previous.edge(true)),
+            ]
+            .iter()
+            .map(|(a, b)| ((a - b) / a.abs().max(f64::MIN_POSITIVE)).abs())
+            .fold(0.0, f64::max);
+            next.change = change;
+            if change < CONVERGED {
+                return Ok(next);
+            }
+            previous = next;
+        }
+    }
+
+    fn values(&self, quadratic: bool) -> &[f64] {
+        if quadratic {
+            &self.quadratic
+        } else {
+            &self.unit
+        }
+    }
+
+    /// `Integral_0^1 psi`.
+    fn integral(&self, quadratic: bool) -> f64 {
+        match &self.kernel {
+            None => {
+                if quadratic {
+                    1.0 / 3.0
+                } else {
+                    1.0
+                }
+            }
+            Some(_) => self
+                .weights
+                .iter()
+                .zip(self.values(quadratic))
+                .map(|(w, v)| w * v)
+                .sum(),
+        }
+    }
+
+    /// `psi(xi)` by Nystrom interpolation.
+    fn value(&self, quadratic: bool, xi: f64) -> f64 {
+        let rhs = if quadratic { xi * xi } else { 1.0 };
+        match &self.kernel {
+            None => rhs,
+            Some(kernel) => {
+                rhs + self
+                    .nodes
+                    .iter()
+                    .zip(&self.weights)
+                    .zip(self.values(quadratic))
+                    .map(|((s, w), v)| w * Self::kernel_at(kernel, self.eps, xi, *s) * v)
+                    .sum::<f64>()
+            }
+        }
+    }
+
+    fn edge(&self, quadratic: bool) -> f64 {
+        self.value(quadratic, 1.0)
+    }
+
+    /// `psi'(xi)`.
+    fn slope(&self, quadratic: bool, xi: f64) -> f64 {
+        let rhs = if quadratic { 2.0 * xi } else { 0.0 };
+        match &self.kernel {
+            None => rhs,
+            Some(kernel) => {
+                rhs + self
+                    .nodes
+                    .iter()
+                    .zip(&self.weights)
+                    .zip(self.values(quadratic))
+                    .map(|((s, w), v)| w * Self::kernel_slope(kernel, self.eps, xi, *s) * v)
+                    .sum::<f64>()
+            }
+        }
+    }
+}
+
+impl Axisymmetric {
+    /// Solutions on `substrate` for contact radii up to
+    /// `max_radius_over_thickness` times the layer thickness (ignored for a
+    /// half-space). The kernel is tabulated up to that range.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] if `max_radius_over_thickness` is not
+    /// positive and finite or exceeds 1000.
+    pub fn new(substrate: &Substrate, max_radius_over_thickness: f64) -> Result<Self> {
+        let max_eps = positive_finite("max_radius_over_thickness", max_radius_over_thickness)?;
+        if max_eps > 1000.0 {
+            return Err(Error::InvalidParameter {
+                name: "max_radius_over_thickness",
+                value: max_eps,
+                expected: "at most 1000",
+            });
+        }
+        let contact_modulus = substrate.surface_material().contact_modulus();
+        let Substrate::Coated(coating) = substrate else {
+            return Ok(Axisymmetric {
+                contact_modulus,
+                thickness: None,
+                kernel: None,
+                max_eps,
+            });
+        };
+        let functions = coating.functions();
+        let u_max = 40.0 + (1.0 + functions.lambda(0.0).abs()).ln();
+        let rule = gauss(20);
+        let y_max = 2.0 * max_eps;
+        let value = OctaveTable::build(
+            0,
+            true,
+            |y| oscillatory_integral(|u| functions.lambda(u) * (u * y).cos(), y, u_max, &rule),
+            |end| end >= y_max,
+        );
+        let slope = value.derivative();
+        Ok(Axisymmetric {
+            contact_modulus,
+            thickness: Some(coating.thickness()),
+            kernel: Some(Arc::new(CosineKernel { value, slope })),
+            max_eps,
+        })
+    }
+
+    /// `eps = a/h` of a contact radius, checked against the tabulated range.
+    fn nystrom(&self, radius: f64) -> Result<(f64, Nystrom)> {
+        let radius = positive_finite("radius", radius)?;
+        match (&self.kernel, self.thickness) {
+            (Some(kernel), Some(h)) => {
+                let eps = radius / h;
+                if eps > self.max_eps {
+                    return Err(Error::InvalidParameter {
+                        name: "radius / thickness",
+                        value: eps,
+                        expected: "within the range given to Axisymmetric::new",
+                    });
+                }
+                Ok((radius, Nystrom::converged(kernel, eps)?))
+            }
+            _ => Ok((radius, Nystrom::trivial())),
+        }
+    }
+
+    /// The flat cylindrical punch of `radius` (m), bonded or not.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for a radius that is not positive or
+    /// beyond the tabulated range; [`Error::NoConvergence`] if the Nystrom
+    /// order would exceed 4096.
+    pub fn flat_punch(&self, radius: f64) -> Result<LayeredFlatPunch> {
+        let (radius, solution) = self.nystrom(radius)?;
+        Ok(LayeredFlatPunch {
+            contact_modulus: self.contact_modulus,
+            radius,
+            solution,
+        })
+    }
+
+    /// A paraboloid `f = r^2 / (2R)` of tip radius `sphere_radius` (m) with
+    /// work of adhesion `work_of_adhesion` (J/m^2; 0 for non-adhesive).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for a radius that is not positive and
+    /// finite or a negative work of adhesion.
+    pub fn paraboloid(
+        &self,
+        sphere_radius: f64,
+        work_of_adhesion: f64,
+    ) -> Result<LayeredParaboloid<'_>> {
+        Ok(LayeredParaboloid {
+            body: self,
+            sphere_radius: positive_finite("sphere_radius", sphere_radius)?,
+            work_of_adhesion: crate::error::non_negative_finite(
+                "work_of_adhesion",
+                work_of_adhesion,
+            )?,
+        })
+    }
+
+    /// The largest contact radius (m) the tabulated kernel covers
+    /// (`+inf` on a half-space).
+    pub fn max_contact_radius(&self) -> f64 {
+        self.thickness.map_or(f64::INFINITY, |h| self.max_eps * h)
+    }
+}
+
+/// `p(r) = (E1*/pi) [phi(a)/sqrt(a^2 - r^2) - Integral_r^a phi'(t)/sqrt(t^2 - r^2) dt]`
+/// for `phi(x) = depth psi1(x/a) - (a^2/R) psi2(x/a)`, with the tail integral
+/// taken over `v = sqrt(t^2 - r^2)`, which removes its singularity.
+fn pressure_profile(
+    contact_modulus: f64,
+    solution: &Nystrom,
+    radius: f64,
+    depth: f64,
+    curvature: f64,
+    r: f64,
+) -> f64 {
+    let a = radius;
+    let r = r.abs();
+    if r.is_nan() || r >= a {
+        return 0.0;
+    }
+    let phi = |xi: f64| depth * solution.value(false, xi) - curvature * solution.value(true, xi);
+    let phi_slope =
+        |xi: f64| (depth * solution.slope(false, xi) - curvature * solution.slope(true, xi)) / a;
+    let chord = ((a - r) * (a + r)).sqrt();
+    let tail = gauss(32).integrate(0.0, chord, |v| {
+        let t = r.hypot(v);
+        phi_slope(t / a) / t
+    });
+    contact_modulus / PI * (phi(1.0) / chord - tail)
+}
+
+/// A flat punch on the coated half-space: stiffness, edge stress intensity,
+/// JKR (Kendall) pull-off.
+#[derive(Debug, Clone)]
+pub struct LayeredFlatPunch {
+    contact_modulus: f64,
+    radius: f64,
+    solution: Nystrom,
+}
+
+impl LayeredFlatPunch {
+    /// `eps = a/h` (0 on a half-space).
+    pub fn eps(&self) -> f64 {
+        self.solution.eps
+    }
+
+    /// The stiffness `K = 2 a E1* Integral_0^1 psi`, N/m.
+    pub fn stiffness(&self) -> f64 {
+        2.0 * self.radius * self.contact_modulus * self.ratio()
+    }
+
+    /// `K / (2 a E1*)`.
+    pub fn ratio(&self) -> f64 {
+        self.solution.integral(false)
+    }
+
+    /// The edge factor `psi(1)`: the stress intensity relative to the
+    /// half-space punch at the same depth.
+    pub fn edge_factor(&self) -> f64 {
+        self.solution.edge(false)
+    }
+
+    /// The Nystrom order used.
+    pub fn order(&self) -> usize {
+        self.solution.nodes.len()
+    }
+
+    /// The relative change of the results at the last doubling of the order.
+    pub fn convergence(&self) -> f64 {
+        self.solution.change
+    }
+
+    /// The stress intensity factor at the rim, `K_I = -E1* d psi(1) / sqrt(pi a)`
+    /// (Pa m^(1/2), positive in tension).
+    pub fn stress_intensity_factor(&self, depth: f64) -> f64 {
+        -self.contact_modulus * depth * self.edge_factor() / (PI * self.radius).sqrt()
+    }
+
+    /// The energy release rate `G = K_I^2 / (2 E1*) = E1* d^2 psi(1)^2 / (2 pi a)`, J/m^2.
+    pub fn energy_release_rate(&self, depth: f64) -> f64 {
+        self.stress_intensity_factor(depth).powi(2) / (2.0 * self.contact_modulus)
+    }
+
+    /// The depth at which a punch stuck with `work_of_adhesion` detaches,
+    /// `-sqrt(2 pi a dgamma / E1*) / psi(1)`, m.
+    pub fn critical_depth(&self, work_of_adhesion: f64) -> f64 {
+        -(2.0 * PI * self.radius * work_of_adhesion.max(0.0) / self.contact_modulus).sqrt()
+            / self.edge_factor()
+    }
+
+    /// The pull-off force `K d_c`, N (negative). The contact radius is fixed,
+    /// so load and displacement control agree.
+    pub fn pull_off_force(&self, work_of_adhesion: f64) -> f64 {
+        self.stiffness() * self.critical_depth(work_of_adhesion)
+    }
+
+    /// The pressure at radius `r` under the punch at `depth`, Pa.
+    pub fn pressure(&self, depth: f64, r: f64) -> f64 {
+        pressure_profile(
+            self.contact_modulus,
+            &self.solution,
+            self.radius,
+            depth,
+            0.0,
+            r,
+        )
+    }
+}
+
+/// A paraboloid on the coated half-space, as functions of the contact radius.
+#[derive(Debug, Clone, Copy)]
+pub struct LayeredParaboloid<'a> {
+    body: &'a Axisymmetric,
+    sphere_radius: f64,
+    work_of_adhesion: f64,
+}
+
+/// One equilibrium state of a paraboloid contact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactState {
+    /// Contact radius `a`, m.
+    pub contact_radius: f64,
+    /// Depth `d`, m.
+    pub depth: f64,
+    /// Force `F`, N.
+    pub force: f64,
+    /// `eps = a/h`.
+    pub eps: f64,
+}
+
+/// The pull-off point of an adhesive contact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PullOff {
+    /// Under load control: the state of minimum force.
+    pub load_control: ContactState,
+    /// Under displacement control: the state of minimum depth, where the
+    /// contact jumps off.
+    pub displacement_control: ContactState,
+}
+
+impl LayeredParaboloid<'_> {
+    fn solved(&self, contact_radius: f64) -> Result<(f64, Nystrom)> {
+        self.body.nystrom(contact_radius)
+    }
+
+    fn state(&self, a: f64, solution: &Nystrom) -> ContactState {
+        let e = self.body.contact_modulus;
+        let curvature = a * a / self.sphere_radius;
+        let adhesive = (2.0 * PI * a * self.work_of_adhesion / e).sqrt();
+        let depth = (curvature * solution.edge(true) - adhesive) / solution.edge(false);
+        let force =
+            2.0 * e * a * (depth * solution.integral(false) - curvature * solution.integral(true));
+        ContactState {
+            contact_radius: a,
+            depth,
+            force,
+            eps: solution.eps,
+        }
+    }
+
+    /// The equilibrium at contact radius `a` (m): JKR if the work of adhesion
+    /// is positive (`G = dgamma` at the edge), else non-adhesive (`phi(a) = 0`).
+    ///
+    /// # Errors
+    /// As [`Axisymmetric::flat_punch`].
+    pub fn at_contact_radius(&self, contact_radius: f64) -> Result<ContactState> {
+        let (a, solution) = self.solved(contact_radius)?;
+        Ok(self.state(a, &solution))
+    }
+
+    /// The pressure at radius `r` in the equilibrium of contact radius `a`, Pa.
+    ///
+    /// # Errors
+    /// As [`LayeredParaboloid::at_contact_radius`].
+    pub fn pressure(&self, contact_radius: f64, r: f64) -> Result<f64> {
+        let (a, solution) = self.solved(contact_radius)?;
+        let state = self.state(a, &solution);
+        let curvature = a * a / self.sphere_radius;
+        Ok(pressure_profile(
+            self.body.contact_modulus,
+            &solution,
+            a,
+            state.depth,
+            curvature,
+            r,
+        ))
+    }
+
+    /// Equilibria at each of `contact_radii`.
+    ///
+    /// # Errors
+    /// As [`LayeredParaboloid::at_contact_radius`].
+    pub fn curve(&self, contact_radii: &[f64]) -> Result<Vec<ContactState>> {
+        contact_radii
+            .iter()
+            .map(|&a| self.at_contact_radius(a))
+            .collect()
+    }
+
+    /// The pull-off points under load and displacement control, by a
+    /// logarithmic scan of the contact radius over
+    /// `[a_JKR / 100, min(10 a_JKR, max radius)]` (`a_JKR` the half-space
+    /// pull-off radius) refined by golden-section search.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] without adhesion (no pull-off); others as
+    /// [`LayeredParaboloid::at_contact_radius`].
+    pub fn pull_off(&self) -> Result<PullOff> {
+        if self.work_of_adhesion == 0.0 {
+            return Err(Error::InvalidParameter {
+                name: "work_of_adhesion",
+                value: 0.0,
+                expected: "positive for a pull-off",
+            });
+        }
+        let e = self.body.contact_modulus;
+        let scale =
+            (9.0 * PI * self.work_of_adhesion * self.sphere_radius.powi(2) / (8.0 * e)).cbrt();
+        let lo = scale / 100.0;
+        let hi = (10.0 * scale).min(self.body.max_contact_radius());
+        let load = self.minimise(lo, hi, |s| s.force)?;
+        let displacement = self.minimise(lo, hi, |s| s.depth)?;
+        Ok(PullOff {
+            load_control: load,
+            displacement_control: displacement,
+        })
+    }
+
+    fn minimise(
+        &self,
+        lo: f64,
+        hi: f64,
+        key: impl Fn(&ContactState) -> f64,
+    ) -> Result<ContactState> {
+        const SCAN: usize = 48;
+        let ratio = (hi / lo).powf(1.0 / (SCAN - 1) as f64);
+        let states: Vec<ContactState> = (0..SCAN)
+            .map(|k| self.at_contact_radius(lo * ratio.powi(k as i32)))
+            .collect::<Result<_>>()?;
+        let best = (0..SCAN)
+            .min_by(|&i, &j| key(&states[i]).total_cmp(&key(&states[j])))
+            .unwrap_or(0);
+        let (mut a, mut b) = (
+            states[best.saturating_sub(1)].contact_radius,
+            states[(best + 1).min(SCAN - 1)].contact_radius,
+        );
+        let golden = 0.5 * (5f64.sqrt() - 1.0);
+        let mut x1 = b - golden * (b - a);
+        let mut x2 = a + golden * (b - a);
+        let mut f1 = key(&self.at_contact_radius(x1)?);
+        let mut f2 = key(&self.at_contact_radius(x2)?);
+        for _ in 0..60 {
+            if f1 < f2 {
+                b = x2;
+                x2 = x1;
+                f2 = f1;
+                x1 = b - golden * (b - a);
+                f1 = key(&self.at_contact_radius(x1)?);
+            } else {
+                a = x1;
+                x1 = x2;
+                f1 = f2;
+                x2 = a + golden * (b - a);
+                f2 = key(&self.at_contact_radius(x2)?);
+            }
+        }
+        self.at_contact_radius(0.5 * (a + b))
+    }
+}

@@ -1,0 +1,89 @@
+//! # Exact axisymmetric contact on a coated half-space
+//!
+//! Implemented by [`Axisymmetric`](crate::analytic::Axisymmetric).
+//!
+//! ## Setting
+//!
+//! A rigid axisymmetric indenter of profile `f(r)` is pressed to depth `d`
+//! into a coated half-space with surface compliance
+//! `u_z(q) = 2 (1 - Lambda_g(q h)) / (E1* q)` (see [`theory`](super::theory)).
+//! The contact is a disc of radius `a`. With the Hankel transform
+//! `P(q) = Integral_0^a p(r) J0(q r) r dr`, the surface displacement is
+//!
+//! ```text
+//! u(r) = Integral_0^inf u_z(q) P(q) J0(q r) q dq = (2/E1*) Integral_0^inf (1 - Lambda_g(q h)) P(q) J0(q r) dq.
+//! ```
+//!
+//! ## Reduction to a Fredholm equation
+//!
+//! Represent the pressure by an auxiliary function `phi` on `[0, a]`
+//! (Sneddon 1966, *Mixed boundary value problems in potential theory*;
+//! the same device as in Vorovich et al. 1974 for layers):
+//!
+//! ```text
+//! P(q) = (E1*/pi) Integral_0^a phi(t) cos(q t) dt,
+//! p(r) = (E1*/pi) [ phi(a)/sqrt(a^2 - r^2) - Integral_r^a phi'(t)/sqrt(t^2 - r^2) dt ].
+//! ```
+//!
+//! Using `Integral_0^inf cos(q t) J0(q r) dq = H(r - t) / sqrt(r^2 - t^2)`,
+//!
+//! ```text
+//! u(r) = (2/pi) Integral_0^r phi(t)/sqrt(r^2 - t^2) dt
+//!      - (2/pi) Integral_0^a phi(s) Integral_0^inf Lambda_g(q h) cos(q s) J0(q r) dq ds.
+//! ```
+//!
+//! The first term is an Abel operator. Its inverse,
+//! `phi(x) = d/dx Integral_0^x r w(r)/sqrt(x^2 - r^2) dr` for
+//! `(2/pi) Integral_0^r phi/sqrt(r^2 - t^2) dt = w(r)`, together with
+//! `Integral_0^x r J0(q r)/sqrt(x^2 - r^2) dr = sin(q x)/q`, turns the contact
+//! condition `u(r) = d - f(r)` (`r <= a`) into
+//!
+//! ```text
+//! phi(x) - (2/pi) Integral_0^a K(x, s) phi(s) ds = d - g(x),
+//! K(x, s) = Integral_0^inf Lambda_g(q h) cos(q x) cos(q s) dq = [k(x - s) + k(x + s)] / (2h),
+//! k(y) = Integral_0^inf Lambda_g(u) cos(u y / h) du,
+//! g(x) = d/dx Integral_0^x r f(r)/sqrt(x^2 - r^2) dr = x Integral_0^x f'(r)/sqrt(x^2 - r^2) dr,
+//! ```
+//!
+//! `g` being the equivalent profile of the method of dimensionality
+//! reduction (Popov & Hess 2015): `g = 0` for a flat punch, `x^2 / R` for a
+//! paraboloid. In `xi = x/a` and `eps = a/h` the kernel is
+//! `(eps/pi) [k(eps (xi - s)) + k(eps (xi + s))]`: a Fredholm equation of the
+//! second kind with a smooth kernel.
+//!
+//! ## Results
+//!
+//! ```text
+//! F   = 2 pi P(0) = 2 E1* Integral_0^a phi(t) dt,
+//! K_I = lim sqrt(2 pi (a - r)) (-p) = -E1* phi(a) / sqrt(pi a),
+//! G   = K_I^2 / (2 E1*) = E1* phi(a)^2 / (2 pi a).
+//! ```
+//!
+//! By linearity `phi = d psi_1 - (a^2/R) psi_2` with `psi_1`, `psi_2` the
+//! solutions for right-hand sides 1 and `xi^2`. Then:
+//!
+//! * flat punch: `K / (2 a E1*) = Integral_0^1 psi_1`; detachment at
+//!   `G = dgamma`, `d_c = -sqrt(2 pi a dgamma / E1*) / psi_1(1)`;
+//! * paraboloid, non-adhesive: `phi(a) = 0` gives
+//!   `d = (a^2/R) psi_2(1) / psi_1(1)`;
+//! * paraboloid, JKR: `phi(a) = -sqrt(2 pi a dgamma / E1*)`.
+//!
+//! On a half-space `Lambda_g = 0`: `psi_1 = 1`, `psi_2 = xi^2`, and the
+//! formulas are Boussinesq's, Hertz's and JKR's.
+//!
+//! ## Numerics
+//!
+//! `k(y)` is tabulated once per substrate by Chebyshev interpolation on
+//! `[0, 1]` and octaves `[2^k, 2^(k+1)]` up to `y = 2 eps_max`, each node a
+//! Gauss-Legendre quadrature of the cosine transform (panels of one period,
+//! geometric refinement towards `u = 0` for soft bases); its derivative is
+//! the derivative of the Chebyshev series. The Fredholm equation is solved by
+//! Nystrom's method with Gauss-Legendre nodes on `[0, 1]`, starting at
+//! `max(16, 4 eps)` nodes and doubling until `Integral psi` and `psi(1)`
+//! change by less than `1e-11`. The solution is evaluated off the nodes by
+//! Nystrom interpolation.
+//!
+//! Measured (nu = 0.48, rigid base): 32 nodes suffice up to `eps = 2`
+//! (70-90 microseconds per stiffness), 160 at `eps = 10`, 800 at `eps = 50`;
+//! the difference to the series falls like `eps^5` (4.1e-6 at `eps = 0.1`),
+//! and is -4.0 % at `eps = 1`.
