@@ -67,7 +67,7 @@ impl Chebyshev {
     pub(crate) fn derivative(&self) -> Self {
         let mut d = [0.0; NODES];
         for k in (1..NODES).rev() {
-            let next = if k + 1 < NODES { d[k] } else { 0.0 };
+            let next = if k + 1 < NODES { d[k + 1] } else { 0.0 };
             d[k - 1] = next + 2.0 * k as f64 * self.coefficients[k];
         }
         d[0] *= 0.5;

@@ -213,3 +213,41 @@ fn layered_kendall() {
     }
     assert!(previous < 0.01);
 }
+
+/// The pressure profiles integrate to the force (`r = a sin(t)` removes the
+/// edge singularity of the punch; 64 Gauss points), on a layer over a rigid
+/// base and over a soft base, for the punch and the JKR paraboloid.
+#[test]
+fn pressure_profiles_integrate_to_the_force() {
+    let m = rubber();
+    let rule = gauss_quad::legendre::GaussLegendre::new(64.try_into().unwrap());
+    for substrate in [
+        Substrate::layer_on_rigid_base(m, 5e-3).unwrap(),
+        Substrate::layer_on_elastic_base(m, 5e-3, Material::new(3e4, 0.3).unwrap()).unwrap(),
+    ] {
+        let exact = Axisymmetric::new(&substrate, 2.0).unwrap();
+        let a = 4e-3;
+        let d = 1e-4;
+        let punch = exact.flat_punch(a).unwrap();
+        let integral = rule.integrate(0.0, PI / 2.0, |t| {
+            let r = a * t.sin();
+            2.0 * PI * r * punch.pressure(d, r) * a * t.cos()
+        });
+        assert!(
+            (integral / (punch.stiffness() * d) - 1.0).abs() < 1e-9,
+            "punch: {integral}"
+        );
+        let ball = exact.paraboloid(0.05, 0.1).unwrap();
+        let state = ball.at_contact_radius(a).unwrap();
+        let integral = rule.integrate(0.0, PI / 2.0, |t| {
+            let r = a * t.sin();
+            2.0 * PI * r * ball.pressure(a, r).unwrap() * a * t.cos()
+        });
+        assert!(
+            (integral / state.force - 1.0).abs() < 1e-9,
+            "paraboloid: {integral} vs {}",
+            state.force
+        );
+        assert_eq!(punch.pressure(d, 1.01 * a), 0.0);
+    }
+}

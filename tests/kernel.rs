@@ -261,6 +261,15 @@ fn periodic_operator_eigenvalues() {
         for (a, p) in u.iter().zip(&pressure) {
             assert!((a - eigenvalue * p).abs() < 1e-13 * eigenvalue);
         }
+        if let Substrate::Coated(_) = substrate {
+            // u_z(0) is the uniaxial-strain compliance; zero when incompressible.
+            let uniaxial = 2e-4 * 1.35 * 0.3 / (1e6 * 0.65);
+            assert!((compliance.at_zero() / uniaxial - 1.0).abs() < 1e-15);
+            let incompressible = coated(Material::new(1e6, 0.5).unwrap(), 2e-4, Base::Rigid);
+            assert_eq!(FourierCompliance::new(&incompressible).at_zero(), 0.0);
+        } else {
+            assert_eq!(compliance.at_zero(), f64::INFINITY);
+        }
         operator.apply(&vec![1e3; grid.len()], &mut u).unwrap();
         let expected = match substrate {
             Substrate::HalfSpace(_) => 0.0,

@@ -617,3 +617,32 @@ impl LayeredParaboloid<'_> {
         self.at_contact_radius(0.5 * (a + b))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Material;
+
+    /// The tabulated kernel slope (derivative of the Chebyshev series) and
+    /// the Nystrom interpolant's slope against central differences (step
+    /// 1e-6, error ~1e-10 of the values).
+    #[test]
+    fn slopes_match_finite_differences() {
+        let m = Material::new(0.324e6, 0.48).unwrap();
+        let exact =
+            Axisymmetric::new(&Substrate::layer_on_rigid_base(m, 5e-3).unwrap(), 2.0).unwrap();
+        let (_, s) = exact.nystrom(4e-3).unwrap();
+        let kernel = s.kernel.as_ref().unwrap();
+        let h = 1e-6;
+        for y in [0.1, 0.7, 1.3, 2.5] {
+            let fd = (kernel.value.eval(y + h) - kernel.value.eval(y - h)) / (2.0 * h);
+            assert!((kernel.slope.eval(y) - fd).abs() < 1e-9, "k'({y})");
+        }
+        for xi in [0.1, 0.5, 0.9] {
+            for quadratic in [false, true] {
+                let fd = (s.value(quadratic, xi + h) - s.value(quadratic, xi - h)) / (2.0 * h);
+                assert!((s.slope(quadratic, xi) - fd).abs() < 1e-9, "psi'({xi})");
+            }
+        }
+    }
+}
