@@ -57,6 +57,7 @@ pub mod indenter;
 pub mod kernel;
 pub mod material;
 mod numerics;
+pub mod scene;
 pub mod solver;
 pub mod substrate;
 

@@ -585,7 +585,7 @@ impl LayeredParaboloid<'_> {
         const SCAN: usize = 48;
         let ratio = (hi / lo).powf(1.0 / (SCAN - 1) as f64);
         let states: Vec<ContactState> = (0..SCAN)
-            .map(|k| self.at_contact_radius(lo * ratio.powi(k as i32)))
+            .map(|k| self.at_contact_radius((lo * ratio.powi(k as i32)).min(hi)))
             .collect::<Result<_>>()?;
         let best = (0..SCAN)
             .min_by(|&i, &j| key(&states[i]).total_cmp(&key(&states[j])))

@@ -44,6 +44,16 @@ pub trait Indenter {
     fn bounding_radius(&self) -> f64;
 }
 
+impl<T: Indenter + ?Sized> Indenter for Box<T> {
+    fn height(&self, x: f64, y: f64) -> f64 {
+        (**self).height(x, y)
+    }
+
+    fn bounding_radius(&self) -> f64 {
+        (**self).bounding_radius()
+    }
+}
+
 impl<T: Indenter + ?Sized> Indenter for &T {
     fn height(&self, x: f64, y: f64) -> f64 {
         (**self).height(x, y)

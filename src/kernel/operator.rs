@@ -57,11 +57,18 @@ pub struct ComplianceOperator {
     grid: Grid,
     boundary: Boundary,
     influence: Option<InfluenceCoefficients>,
+    /// Whether the kernel is that of a coated body (else a half-space's).
+    layered: bool,
     /// FFT sizes: rows and columns of the (padded) grid.
     size: (usize, usize),
     /// The kernel's spectrum, transposed (`columns/2 + 1` rows of `rows`
     /// values) and divided by the FFT normalisation `rows * columns`.
     spectrum: Vec<f64>,
+    /// The spectrum of an approximate inverse, `E* |q| / 2` on the same
+    /// grid (built on first use by [`ComplianceOperator::precondition`]).
+    inverse_spectrum: Vec<f64>,
+    /// `E*` of the surface material, for the approximate inverse.
+    surface_modulus: f64,
     row_forward: Arc<dyn RealToComplex<f64>>,
     row_inverse: Arc<dyn ComplexToReal<f64>>,
     column_forward: Arc<dyn Fft<f64>>,
@@ -125,8 +132,11 @@ impl ComplianceOperator {
             grid: *grid,
             boundary,
             influence: None,
+            layered: matches!(substrate, Substrate::Coated(_)),
             size,
             spectrum: Vec::new(),
+            inverse_spectrum: Vec::new(),
+            surface_modulus: substrate.surface_material().contact_modulus(),
             row_forward,
             row_inverse,
             column_forward,
@@ -153,6 +163,12 @@ impl ComplianceOperator {
     /// The boundary condition it was built for.
     pub fn boundary(&self) -> Boundary {
         self.boundary
+    }
+
+    /// Whether a layered kernel was built (`false` for a homogeneous
+    /// half-space, which needs only Love's closed form or `2/(E* q)`).
+    pub fn is_layered(&self) -> bool {
+        self.layered
     }
 
     /// The influence coefficients (isolated operators only).
@@ -197,14 +213,7 @@ impl ComplianceOperator {
         let (n0, n1) = self.size;
         let delta = self.grid.spacing();
         let half = n1 / 2 + 1;
-        let wavenumber = |index: usize, n: usize| {
-            let k = if index <= n / 2 {
-                index as f64
-            } else {
-                index as f64 - n as f64
-            };
-            2.0 * PI * k / (n as f64 * delta)
-        };
+        let wavenumber = |index: usize, n: usize| wavenumber(index, n, delta);
         let sinc = |x: f64| if x == 0.0 { 1.0 } else { x.sin() / x };
         let zero_mode = compliance.at_zero();
         let zero_mode = if zero_mode.is_finite() {
@@ -257,6 +266,57 @@ impl ComplianceOperator {
     /// # Errors
     /// [`Error::ShapeMismatch`] if a slice does not have `grid.len()` values.
     pub fn apply(&mut self, pressure: &[f64], displacement: &mut [f64]) -> Result<()> {
+        let spectrum = std::mem::take(&mut self.spectrum);
+        let result = self.convolve(pressure, displacement, &spectrum);
+        self.spectrum = spectrum;
+        result
+    }
+
+    /// Applies an approximate inverse of the operator, the half-space
+    /// stiffness `E* |q| / 2` of the surface material on the same (padded)
+    /// grid: a spectrally equivalent, symmetric positive-definite
+    /// preconditioner for conjugate gradients on subsets of the grid.
+    ///
+    /// # Errors
+    /// As [`ComplianceOperator::apply`].
+    pub fn precondition(&mut self, residual: &[f64], result: &mut [f64]) -> Result<()> {
+        if self.inverse_spectrum.is_empty() {
+            self.inverse_spectrum = self.stiffness_spectrum();
+        }
+        let spectrum = std::mem::take(&mut self.inverse_spectrum);
+        let outcome = self.convolve(residual, result, &spectrum);
+        self.inverse_spectrum = spectrum;
+        outcome
+    }
+
+    /// `E* |q| / 2` at the wavevectors of the (padded) grid, with the `q = 0`
+    /// mode given the value of the smallest nonzero `|q|`, normalised and
+    /// laid out like `spectrum`.
+    fn stiffness_spectrum(&self) -> Vec<f64> {
+        let (n0, n1) = self.size;
+        let delta = self.grid.spacing();
+        let half = n1 / 2 + 1;
+        let wavenumber = |index: usize, n: usize| wavenumber(index, n, delta);
+        let smallest = wavenumber(1, n0.max(n1).max(2)).abs();
+        let normalisation = 1.0 / (n0 * n1) as f64;
+        let mut spectrum = vec![0.0; half * n0];
+        for ky in 0..half {
+            let qy = wavenumber(ky, n1);
+            for kx in 0..n0 {
+                let q = wavenumber(kx, n0).hypot(qy).max(smallest);
+                spectrum[ky * n0 + kx] = 0.5 * self.surface_modulus * q * normalisation;
+            }
+        }
+        spectrum
+    }
+
+    /// `output = IFFT(spectrum * FFT(input))` on the (padded) grid.
+    fn convolve(
+        &mut self,
+        pressure: &[f64],
+        displacement: &mut [f64],
+        spectrum: &[f64],
+    ) -> Result<()> {
         let cells = self.grid.len();
         for (field, found) in [
             ("pressure", pressure.len()),
@@ -291,7 +351,7 @@ impl ComplianceOperator {
             transpose::transpose(&ws.rows, &mut ws.columns, half, n0);
             self.column_forward
                 .process_with_scratch(&mut ws.columns, &mut ws.scratch);
-            for (c, k) in ws.columns.iter_mut().zip(&self.spectrum) {
+            for (c, k) in ws.columns.iter_mut().zip(spectrum) {
                 *c *= *k;
             }
             self.column_inverse
@@ -321,4 +381,15 @@ fn fft_error(error: realfft::FftError) -> Error {
         what: "FFT",
         detail: error.to_string(),
     }
+}
+
+/// The wavenumber (rad/m) of FFT index `index` on `n` cells of side `delta`,
+/// indices above `n/2` standing for negative frequencies.
+fn wavenumber(index: usize, n: usize, delta: f64) -> f64 {
+    let k = if index <= n / 2 {
+        index as f64
+    } else {
+        index as f64 - n as f64
+    };
+    2.0 * PI * k / (n as f64 * delta)
 }

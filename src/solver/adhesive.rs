@@ -15,7 +15,10 @@ impl ContactSolver {
     /// exceeds the critical stress [`critical_stress`](Self::critical_stress)
     /// detaches. On each attached set the displacement is prescribed
     /// (`u = d - f`) and the pressures follow from a conjugate-gradient solve;
-    /// the set is updated until nothing attaches or detaches. Pass the
+    /// the set is updated until nothing attaches or detaches. Only cells on
+    /// the boundary of the attached set detach (the criterion stands for a
+    /// crack at the contact edge; interior tension never nucleates one in the
+    /// JKR limit). Pass the
     /// loading value of the work of adhesion while the indenter advances and
     /// the unloading value while it retracts.
     ///
@@ -41,6 +44,7 @@ impl ContactSolver {
         self.sample_profile(indenter)?;
         let sigma_c = self.critical_stress(work);
         let n = self.grid().len();
+        let columns = self.grid().columns();
         let reachable: Vec<bool> = self
             .workspace
             .profile
@@ -59,6 +63,7 @@ impl ContactSolver {
                 .collect(),
             None => vec![0.0; n],
         };
+        let mut released = vec![false; n];
         let mut total_iterations = 0;
         let mut residual = 0.0;
         // Each round removes or adds at least one cell of a finite set, so
@@ -71,16 +76,27 @@ impl ContactSolver {
             total_iterations += iterations;
             residual = r;
             // Displacement of the converged pressure is in the workspace.
+            // Only cells connected to the boundary of the contact through
+            // cells over the critical stress detach: the criterion stands for a
+            // crack at the contact edge (SPEC section 2); tension inside the
+            // contact never nucleates one in the JKR limit.
+            let detach = edge_connected(&attached, columns, |c| pressure[c] < -sigma_c);
             let ws = &self.workspace;
-            let mut changed = 0usize;
+            let mut changed = detach.len();
+            for c in detach {
+                attached[c] = false;
+                pressure[c] = 0.0;
+                released[c] = true;
+            }
             for c in 0..n {
-                if attached[c] {
-                    if pressure[c] < -sigma_c {
-                        attached[c] = false;
-                        pressure[c] = 0.0;
-                        changed += 1;
-                    }
-                } else if reachable[c] && ws.profile[c] - depth + ws.displacement[c] < 0.0 {
+                // A cell released in this step stays released: the collocated
+                // surface of a small ring of cells in tension can overshoot the
+                // indenter, which would re-attach it and cycle.
+                if !attached[c]
+                    && !released[c]
+                    && reachable[c]
+                    && ws.profile[c] - depth + ws.displacement[c] < 0.0
+                {
                     attached[c] = true;
                     changed += 1;
                 }
@@ -108,10 +124,14 @@ impl ContactSolver {
         })
     }
 
-    /// Conjugate gradients for the pressures on the attached cells that give
-    /// `u = depth - f` there (pressure 0 elsewhere). Leaves the displacement
-    /// of the result in the workspace. Returns iterations and the final
-    /// relative residual.
+    /// Preconditioned conjugate gradients for the pressures on the attached
+    /// cells that give `u = depth - f` there (pressure 0 elsewhere), with the
+    /// operator's approximate inverse ([`ComplianceOperator::precondition`])
+    /// restricted to the attached set as preconditioner. Leaves the
+    /// displacement of the result in the workspace. Returns iterations and
+    /// the final relative residual.
+    ///
+    /// [`ComplianceOperator::precondition`]: crate::kernel::ComplianceOperator::precondition
     fn clamped_solve(
         &mut self,
         depth: f64,
@@ -121,7 +141,8 @@ impl ContactSolver {
         let n = pressure.len();
         let tolerance = self.params.tolerance;
         let ws = &mut self.workspace;
-        // residual r = b - K p on the attached set; `gap` holds r, `direction` the search direction.
+        // `gap` holds the residual r = b - K p on the attached set,
+        // `previous` the preconditioned residual z, `direction` the search direction.
         self.operator.apply(pressure, &mut ws.displacement)?;
         let mut b_norm = 0.0;
         let mut r_norm = 0.0;
@@ -136,7 +157,8 @@ impl ContactSolver {
             }
         }
         let b_norm = b_norm.sqrt().max(f64::MIN_POSITIVE);
-        ws.direction.copy_from_slice(&ws.gap);
+        let mut rz = precondition(&mut self.operator, attached, &ws.gap, &mut ws.previous)?;
+        ws.direction.copy_from_slice(&ws.previous);
         let mut iterations = 0;
         while r_norm.sqrt() > tolerance * b_norm {
             if iterations == self.params.max_iterations {
@@ -154,23 +176,24 @@ impl ContactSolver {
                     curvature += ws.direction[c] * ws.response[c];
                 }
             }
-            if curvature <= 0.0 {
+            if curvature.is_nan() || rz.is_nan() || curvature <= 0.0 || rz <= 0.0 {
                 break;
             }
-            let step = r_norm / curvature;
-            let mut new_norm = 0.0;
+            let step = rz / curvature;
+            r_norm = 0.0;
             for c in 0..n {
                 if attached[c] {
                     pressure[c] += step * ws.direction[c];
                     ws.gap[c] -= step * ws.response[c];
-                    new_norm += ws.gap[c] * ws.gap[c];
+                    r_norm += ws.gap[c] * ws.gap[c];
                 }
             }
-            let beta = new_norm / r_norm;
-            r_norm = new_norm;
+            let rz_new = precondition(&mut self.operator, attached, &ws.gap, &mut ws.previous)?;
+            let beta = rz_new / rz;
+            rz = rz_new;
             for c in 0..n {
                 ws.direction[c] = if attached[c] {
-                    ws.gap[c] + beta * ws.direction[c]
+                    ws.previous[c] + beta * ws.direction[c]
                 } else {
                     0.0
                 };
@@ -179,4 +202,73 @@ impl ContactSolver {
         self.operator.apply(pressure, &mut ws.displacement)?;
         Ok((iterations, r_norm.sqrt() / b_norm))
     }
+}
+
+/// `z = M r` restricted to the attached cells; returns `<r, z>`.
+fn precondition(
+    operator: &mut crate::kernel::ComplianceOperator,
+    attached: &[bool],
+    residual: &[f64],
+    z: &mut [f64],
+) -> Result<f64> {
+    operator.precondition(residual, z)?;
+    let mut rz = 0.0;
+    for c in 0..z.len() {
+        if attached[c] {
+            rz += residual[c] * z[c];
+        } else {
+            z[c] = 0.0;
+        }
+    }
+    Ok(rz)
+}
+
+/// Whether attached cell `c` has a detached (or missing) 4-neighbour.
+fn on_boundary(attached: &[bool], columns: usize, c: usize) -> bool {
+    let rows = attached.len() / columns;
+    let (i, j) = (c / columns, c % columns);
+    i == 0
+        || j == 0
+        || i + 1 == rows
+        || j + 1 == columns
+        || !attached[c - columns]
+        || !attached[c + columns]
+        || !attached[c - 1]
+        || !attached[c + 1]
+}
+
+/// The attached cells satisfying `violates` that are 4-connected, through
+/// such cells, to a boundary cell of the attached set.
+fn edge_connected(
+    attached: &[bool],
+    columns: usize,
+    violates: impl Fn(usize) -> bool,
+) -> Vec<usize> {
+    let n = attached.len();
+    let mut marked = vec![false; n];
+    let mut stack: Vec<usize> = (0..n)
+        .filter(|&c| attached[c] && violates(c) && on_boundary(attached, columns, c))
+        .collect();
+    for &c in &stack {
+        marked[c] = true;
+    }
+    let mut found = Vec::new();
+    while let Some(c) = stack.pop() {
+        found.push(c);
+        let (i, j) = (c / columns, c % columns);
+        let rows = n / columns;
+        let neighbours = [
+            (i > 0).then(|| c - columns),
+            (i + 1 < rows).then(|| c + columns),
+            (j > 0).then(|| c - 1),
+            (j + 1 < columns).then(|| c + 1),
+        ];
+        for m in neighbours.into_iter().flatten() {
+            if attached[m] && !marked[m] && violates(m) {
+                marked[m] = true;
+                stack.push(m);
+            }
+        }
+    }
+    found
 }

@@ -146,6 +146,11 @@ impl ContactSolver {
         self.operator.grid()
     }
 
+    /// The compliance operator (kernel and FFT plans).
+    pub fn operator(&self) -> &ComplianceOperator {
+        &self.operator
+    }
+
     /// The parameters.
     pub fn params(&self) -> &SolverParams {
         &self.params
@@ -283,7 +288,7 @@ impl ContactSolver {
     }
 }
 
-fn check_finite(name: &'static str, value: f64) -> Result<f64> {
+pub(crate) fn check_finite(name: &'static str, value: f64) -> Result<f64> {
     if value.is_finite() {
         Ok(value)
     } else {

@@ -6,6 +6,8 @@ use ndarray::Array2;
 /// a thousand steps stores a thousand sets of scalars, not a thousand
 /// pressure maps.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(default, deny_unknown_fields))]
 pub struct Fields {
     /// Keep the cell pressures (Pa).
     pub pressure: bool,
@@ -121,5 +123,10 @@ impl WarmStart {
     /// Number of cells attached (in contact).
     pub fn attached_cells(&self) -> usize {
         self.attached.iter().filter(|a| **a).count()
+    }
+
+    /// Whether cell `c` (row-major index) is attached.
+    pub fn is_attached(&self, c: usize) -> bool {
+        self.attached.get(c).copied().unwrap_or(false)
     }
 }

@@ -1,0 +1,287 @@
+//! The computations of the `paper` example, shared with the test that runs a
+//! reduced version of them (`tests/paper.rs`). No I/O here.
+
+#![allow(dead_code)]
+
+use layered_contact::analytic::{Axisymmetric, PunchStiffnessSeries};
+use layered_contact::indenter::FlatPunch;
+use layered_contact::scene::{
+    Adhesion, Curve, IndenterSpec, Protocol, Resolution, Scene, SolverSettings, SubstrateSpec,
+};
+use layered_contact::solver::{ContactSolver, SolverParams};
+use layered_contact::{Boundary, Error, Grid, Material, Substrate};
+
+/// Material of the reference experiment (Lyashenko, Popov & Borysiuk 2023).
+pub const YOUNGS_MODULUS: f64 = 0.324e6;
+/// Poisson ratio of the rubber.
+pub const POISSON_RATIO: f64 = 0.48;
+/// Work of adhesion while the contact grows, J/m^2.
+pub const DGAMMA_LOADING: f64 = 0.0175;
+/// Work of adhesion while a flat punch is pulled off, J/m^2.
+pub const DGAMMA_PUNCH: f64 = 0.326;
+
+/// How much to compute.
+#[derive(Debug, Clone)]
+pub struct Config {
+    /// Layer thicknesses, mm.
+    pub thicknesses_mm: Vec<f64>,
+    /// Punch diameters of the stiffness table, mm.
+    pub stiffness_diameters_mm: Vec<f64>,
+    /// Punch diameters of the force-depth curves, mm.
+    pub punch_diameters_mm: Vec<f64>,
+    /// Sphere radii, mm.
+    pub sphere_radii_mm: Vec<f64>,
+    /// Maximum depth of the punches, m.
+    pub punch_depth: f64,
+    /// Maximum depth of the spheres, m.
+    pub sphere_depth: f64,
+    /// Cells across a punch for the stiffness.
+    pub cells_across_punch: usize,
+    /// Cells across the largest sphere contact.
+    pub cells_across_sphere: usize,
+    /// Loading increments of each curve.
+    pub steps: usize,
+}
+
+impl Config {
+    /// The default run (the README's main command).
+    pub fn standard() -> Self {
+        Config {
+            thicknesses_mm: vec![5.0, 10.0, 15.0, 20.0, 25.0],
+            stiffness_diameters_mm: vec![1.0, 2.0, 4.0, 7.0, 10.0, 15.0],
+            punch_diameters_mm: vec![4.0, 7.0, 10.0, 15.0],
+            sphere_radii_mm: vec![30.0, 50.0, 100.0],
+            punch_depth: 0.2e-3,
+            sphere_depth: 0.5e-3,
+            cells_across_punch: 80,
+            cells_across_sphere: 96,
+            steps: 20,
+        }
+    }
+
+    /// Publication resolution (`--fine`).
+    pub fn fine() -> Self {
+        Config {
+            cells_across_punch: 160,
+            cells_across_sphere: 160,
+            steps: 50,
+            ..Self::standard()
+        }
+    }
+
+    /// The sphere runs: `(R mm, h mm, dgamma1)`; the extra unloading works
+    /// of adhesion only for the thinnest layer.
+    pub fn sphere_runs(&self) -> Vec<(f64, f64, f64)> {
+        let thinnest = self
+            .thicknesses_mm
+            .iter()
+            .cloned()
+            .fold(f64::INFINITY, f64::min);
+        let mut runs = Vec::new();
+        for &r in &self.sphere_radii_mm {
+            for &h in &self.thicknesses_mm {
+                runs.push((r, h, DGAMMA_PUNCH));
+                if h == thinnest {
+                    runs.push((r, h, 0.27));
+                    runs.push((r, h, 0.722));
+                }
+            }
+        }
+        runs
+    }
+}
+
+pub fn rubber() -> Material {
+    Material::new(YOUNGS_MODULUS, POISSON_RATIO).expect("valid material")
+}
+
+pub fn film(h_mm: f64) -> Result<Substrate, Error> {
+    Substrate::layer_on_rigid_base(rubber(), h_mm * 1e-3)
+}
+
+/// One row of `stiffness.csv`.
+#[derive(Debug, Clone, Copy)]
+pub struct StiffnessRow {
+    pub h_mm: f64,
+    pub d_mm: f64,
+    pub eps: f64,
+    pub series: f64,
+    pub exact: f64,
+    pub bem: Option<f64>,
+}
+
+/// A grid spacing near `2a/n` for which the cells whose centres lie on the
+/// punch have exactly (to 1e-3) the punch's area, so that the BEM's
+/// staircase punch has the true radius on average.
+pub fn equal_area_grid(radius: f64, n: usize) -> Result<Grid, Error> {
+    let cells = n + 2;
+    let count = |spacing: f64| {
+        let half = 0.5 * cells as f64;
+        (0..cells * cells)
+            .filter(|c| {
+                let x = ((c / cells) as f64 + 0.5 - half) * spacing;
+                let y = ((c % cells) as f64 + 0.5 - half) * spacing;
+                x.hypot(y) <= radius
+            })
+            .count() as f64
+    };
+    let target = std::f64::consts::PI * radius * radius;
+    let nominal = 2.0 * radius / n as f64;
+    let best = (0..400)
+        .map(|k| nominal * (0.98 + 0.0001 * k as f64))
+        .min_by(|a, b| {
+            let ea = (count(*a) * a * a / target - 1.0).abs();
+            let eb = (count(*b) * b * b / target - 1.0).abs();
+            ea.total_cmp(&eb)
+        })
+        .unwrap_or(nominal);
+    Grid::new(cells, cells, best)
+}
+
+/// `K / (2 a E*)` of a flat punch of diameter `d_mm` on layer `h_mm` by the
+/// BEM (non-adhesive, 1 um deep).
+pub fn bem_ratio(h_mm: f64, d_mm: f64, cells_across: usize) -> Result<f64, Error> {
+    let radius = 0.5e-3 * d_mm;
+    let grid = equal_area_grid(radius, cells_across)?;
+    let params = SolverParams {
+        tolerance: 1e-10,
+        ..SolverParams::default()
+    };
+    let mut solver = ContactSolver::new(&film(h_mm)?, &grid, Boundary::Isolated, params)?;
+    let depth = 1e-6;
+    let (solution, _) = solver.solve_depth(&FlatPunch::new(radius)?, depth, None, &mut ())?;
+    Ok(solution.force / depth / (2.0 * radius * rubber().contact_modulus()))
+}
+
+/// The stiffness table: every `h` and `D` with series, exact and BEM, plus a
+/// fine `D` grid (0.25 mm to 16 mm) with series and exact only.
+pub fn stiffness_rows(
+    config: &Config,
+    progress: &(dyn Fn() + Sync),
+) -> Result<Vec<StiffnessRow>, Error> {
+    let mut rows = Vec::new();
+    let fine_d: Vec<f64> = (1..=64).map(|k| 0.25 * k as f64).collect();
+    for &h in &config.thicknesses_mm {
+        let series = PunchStiffnessSeries::new(rubber(), h * 1e-3)?;
+        let max_d = config
+            .stiffness_diameters_mm
+            .iter()
+            .chain(&fine_d)
+            .cloned()
+            .fold(0.0, f64::max);
+        let exact = Axisymmetric::new(&film(h)?, 0.5 * max_d / h * 1.01)?;
+        for &d in &fine_d {
+            let radius = 0.5e-3 * d;
+            rows.push(StiffnessRow {
+                h_mm: h,
+                d_mm: d,
+                eps: 0.5 * d / h,
+                series: series.evaluate(radius)?.ratio,
+                exact: exact.flat_punch(radius)?.ratio(),
+                bem: None,
+            });
+        }
+        for &d in &config.stiffness_diameters_mm {
+            let radius = 0.5e-3 * d;
+            rows.push(StiffnessRow {
+                h_mm: h,
+                d_mm: d,
+                eps: 0.5 * d / h,
+                series: series.evaluate(radius)?.ratio,
+                exact: exact.flat_punch(radius)?.ratio(),
+                bem: Some(bem_ratio(h, d, config.cells_across_punch)?),
+            });
+            progress();
+        }
+    }
+    Ok(rows)
+}
+
+/// The scene of a flat punch of diameter `d_mm` on layer `h_mm`: loaded to
+/// `depth` with `dgamma0`, pulled off with `dgamma1`.
+pub fn punch_scene(h_mm: f64, d_mm: f64, depth: f64, steps: usize) -> Scene {
+    Scene {
+        substrate: SubstrateSpec::LayerOnRigidBase {
+            youngs_modulus: YOUNGS_MODULUS,
+            poisson_ratio: POISSON_RATIO,
+            thickness: h_mm * 1e-3,
+        },
+        indenter: IndenterSpec::FlatPunch {
+            radius: 0.5e-3 * d_mm,
+        },
+        adhesion: Adhesion::Hysteresis {
+            loading: DGAMMA_LOADING,
+            unloading: DGAMMA_PUNCH,
+        },
+        protocol: Protocol::Cycle {
+            max_depth: depth,
+            steps,
+        },
+        resolution: Resolution {
+            cells_across: 64,
+            margin: 0.0,
+        },
+        solver: SolverSettings {
+            pull_off_bisections: 12,
+            ..SolverSettings::default()
+        },
+        ..Scene::default()
+    }
+}
+
+/// The scene of a sphere of radius `r_mm` on layer `h_mm`.
+pub fn sphere_scene(
+    r_mm: f64,
+    h_mm: f64,
+    dgamma1: f64,
+    depth: f64,
+    steps: usize,
+    cells: usize,
+) -> Scene {
+    Scene {
+        substrate: SubstrateSpec::LayerOnRigidBase {
+            youngs_modulus: YOUNGS_MODULUS,
+            poisson_ratio: POISSON_RATIO,
+            thickness: h_mm * 1e-3,
+        },
+        indenter: IndenterSpec::Sphere {
+            radius: r_mm * 1e-3,
+        },
+        adhesion: Adhesion::Hysteresis {
+            loading: DGAMMA_LOADING,
+            unloading: dgamma1,
+        },
+        protocol: Protocol::Cycle {
+            max_depth: depth,
+            steps,
+        },
+        resolution: Resolution {
+            cells_across: cells,
+            margin: 0.15,
+        },
+        ..Scene::default()
+    }
+}
+
+/// Exact pull-off force of a flat punch (diameter `d_mm`, layer `h_mm`).
+pub fn exact_punch_pull_off(h_mm: f64, d_mm: f64, dgamma: f64) -> Result<f64, Error> {
+    let radius = 0.5e-3 * d_mm;
+    let exact = Axisymmetric::new(&film(h_mm)?, radius / (h_mm * 1e-3) * 1.01)?;
+    Ok(exact.flat_punch(radius)?.pull_off_force(dgamma))
+}
+
+/// Exact pull-off force (load control) of a paraboloid of radius `r_mm` on
+/// layer `h_mm`.
+pub fn exact_sphere_pull_off(r_mm: f64, h_mm: f64, dgamma: f64) -> Result<f64, Error> {
+    let exact = Axisymmetric::new(&film(h_mm)?, 4.0)?;
+    Ok(exact
+        .paraboloid(r_mm * 1e-3, dgamma)?
+        .pull_off()?
+        .load_control
+        .force)
+}
+
+/// The minimum force of a curve (its pull-off force), or 0.
+pub fn pull_off(curve: &Curve) -> f64 {
+    curve.pull_off().map_or(0.0, |s| s.force)
+}

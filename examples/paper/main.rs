@@ -1,0 +1,243 @@
+//! Reproduces the simulations and analytics of Lyashenko, Popov & Borysiuk
+//! (2023, Lubricants 11, 84): a rubber layer (`E = 0.324 MPa`, `nu = 0.48`) on
+//! glass, `h = 5 .. 25 mm`, probed by flat punches and spheres.
+//!
+//! ```text
+//! cargo run --release --example paper -- [--out DIR] [--fine]
+//! ```
+//!
+//! Writes to `DIR` (default `target/paper`):
+//! * `stiffness.csv` (`h_mm,D_mm,eps,series,exact,bem`) and `stiffness.svg`;
+//! * `flat_punch_curves.csv` (`h_mm,D_mm,phase,depth_m,force_N,contact_area_m2`)
+//!   and `flat_punch_curves.svg`;
+//! * `sphere_curves.csv` (`R_mm,h_mm,dgamma1,phase,depth_m,force_N,contact_radius_m`)
+//!   and `sphere_curves.svg`;
+//!
+//! and prints a summary. `--fine` doubles the resolution.
+
+mod experiment;
+mod figures;
+
+use std::error::Error as StdError;
+use std::path::PathBuf;
+
+use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
+
+use experiment::{Config, StiffnessRow};
+use layered_contact::analytic::PunchStiffnessSeries;
+use layered_contact::scene::Curve;
+
+type Result<T> = std::result::Result<T, Box<dyn StdError + Send + Sync>>;
+
+fn main() -> Result<()> {
+    let mut out = PathBuf::from("target/paper");
+    let mut config = Config::standard();
+    let mut args = std::env::args().skip(1);
+    while let Some(arg) = args.next() {
+        match arg.as_str() {
+            "--out" => out = PathBuf::from(args.next().ok_or("--out needs a directory")?),
+            "--fine" => config = Config::fine(),
+            other => {
+                return Err(format!("unknown argument {other}; use --out DIR and/or --fine").into())
+            }
+        }
+    }
+    std::fs::create_dir_all(&out)?;
+    let started = std::time::Instant::now();
+
+    let punch_jobs: Vec<(f64, f64)> = config
+        .thicknesses_mm
+        .iter()
+        .flat_map(|&h| config.punch_diameters_mm.iter().map(move |&d| (h, d)))
+        .collect();
+    let sphere_jobs = config.sphere_runs();
+    let total = config.thicknesses_mm.len() * config.stiffness_diameters_mm.len()
+        + punch_jobs.len()
+        + sphere_jobs.len();
+    let bar = ProgressBar::new(total as u64);
+    bar.set_style(ProgressStyle::with_template(
+        "{elapsed_precise} [{bar:40}] {pos}/{len} {msg}",
+    )?);
+
+    bar.set_message("stiffness");
+    let tick = || bar.inc(1);
+    let stiffness = experiment::stiffness_rows(&config, &tick)?;
+
+    bar.set_message("flat punches");
+    let punch_curves: Vec<(f64, f64, Curve)> = punch_jobs
+        .par_iter()
+        .map(|&(h, d)| {
+            let curve =
+                experiment::punch_scene(h, d, config.punch_depth, config.steps).run(&mut |_| {});
+            bar.inc(1);
+            curve.map(|c| (h, d, c))
+        })
+        .collect::<std::result::Result<_, _>>()?;
+
+    bar.set_message("spheres");
+    let sphere_curves: Vec<(f64, f64, f64, Curve)> = sphere_jobs
+        .par_iter()
+        .map(|&(r, h, dgamma)| {
+            let scene = experiment::sphere_scene(
+                r,
+                h,
+                dgamma,
+                config.sphere_depth,
+                config.steps,
+                config.cells_across_sphere,
+            );
+            let curve = scene.run(&mut |_| {});
+            bar.inc(1);
+            curve.map(|c| (r, h, dgamma, c))
+        })
+        .collect::<std::result::Result<_, _>>()?;
+    bar.finish_with_message("done");
+
+    write_stiffness(&out, &stiffness)?;
+    write_punch_curves(&out, &punch_curves)?;
+    write_sphere_curves(&out, &sphere_curves)?;
+    figures::stiffness(&out.join("stiffness.svg"), &stiffness, &config)?;
+    figures::punch_curves(&out.join("flat_punch_curves.svg"), &punch_curves, &config)?;
+    figures::sphere_curves(&out.join("sphere_curves.svg"), &sphere_curves, &config)?;
+
+    summary(&stiffness, &punch_curves, &sphere_curves)?;
+    println!(
+        "\nwrote {} in {:.1} s",
+        out.display(),
+        started.elapsed().as_secs_f64()
+    );
+    Ok(())
+}
+
+fn write_stiffness(out: &std::path::Path, rows: &[StiffnessRow]) -> Result<()> {
+    let mut w = csv::Writer::from_path(out.join("stiffness.csv"))?;
+    w.write_record(["h_mm", "D_mm", "eps", "series", "exact", "bem"])?;
+    for r in rows {
+        let bem = r.bem.map_or(String::new(), |b| format!("{b:.8}"));
+        w.write_record([
+            format!("{}", r.h_mm),
+            format!("{}", r.d_mm),
+            format!("{:.6}", r.eps),
+            format!("{:.8}", r.series),
+            format!("{:.8}", r.exact),
+            bem,
+        ])?;
+    }
+    w.flush()?;
+    Ok(())
+}
+
+fn write_punch_curves(out: &std::path::Path, curves: &[(f64, f64, Curve)]) -> Result<()> {
+    let mut w = csv::Writer::from_path(out.join("flat_punch_curves.csv"))?;
+    w.write_record([
+        "h_mm",
+        "D_mm",
+        "phase",
+        "depth_m",
+        "force_N",
+        "contact_area_m2",
+    ])?;
+    for (h, d, curve) in curves {
+        for s in &curve.steps {
+            w.write_record([
+                format!("{h}"),
+                format!("{d}"),
+                s.phase.name().to_string(),
+                format!("{:e}", s.depth),
+                format!("{:e}", s.force),
+                format!("{:e}", s.contact_area),
+            ])?;
+        }
+    }
+    w.flush()?;
+    Ok(())
+}
+
+fn write_sphere_curves(out: &std::path::Path, curves: &[(f64, f64, f64, Curve)]) -> Result<()> {
+    let mut w = csv::Writer::from_path(out.join("sphere_curves.csv"))?;
+    w.write_record([
+        "R_mm",
+        "h_mm",
+        "dgamma1",
+        "phase",
+        "depth_m",
+        "force_N",
+        "contact_radius_m",
+    ])?;
+    for (r, h, dgamma, curve) in curves {
+        for s in &curve.steps {
+            w.write_record([
+                format!("{r}"),
+                format!("{h}"),
+                format!("{dgamma}"),
+                s.phase.name().to_string(),
+                format!("{:e}", s.depth),
+                format!("{:e}", s.force),
+                format!("{:e}", s.contact_radius),
+            ])?;
+        }
+    }
+    w.flush()?;
+    Ok(())
+}
+
+fn summary(
+    stiffness: &[StiffnessRow],
+    punches: &[(f64, f64, Curve)],
+    spheres: &[(f64, f64, f64, Curve)],
+) -> Result<()> {
+    let series = PunchStiffnessSeries::new(experiment::rubber(), 5e-3)?;
+    let (mut lo, mut hi) = (1e-6, 5e-3);
+    for _ in 0..100 {
+        let mid = 0.5 * (lo + hi);
+        if series.evaluate(0.5 * mid)?.ratio < 1.2 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    println!("\n# Summary");
+    println!(
+        "series K/(2aE*) at h = D = 5 mm: {:.4} (paper: 1.9)",
+        series.evaluate(2.5e-3)?.ratio
+    );
+    println!(
+        "h = 5 mm series reaches 1.2 at D = {:.4} mm (paper: 1.55 mm)",
+        0.5 * (lo + hi) * 1e3
+    );
+    let worst = stiffness
+        .iter()
+        .filter_map(|r| r.bem.map(|b| (b / r.exact - 1.0, r)))
+        .max_by(|a, b| a.0.abs().total_cmp(&b.0.abs()));
+    if let Some((error, row)) = worst {
+        println!(
+            "largest BEM deviation from the exact stiffness: {:+.2} % (h = {} mm, D = {} mm)",
+            100.0 * error,
+            row.h_mm,
+            row.d_mm
+        );
+    }
+    println!(
+        "\nflat punch pull-off [mN], BEM / exact (dgamma1 = {}):",
+        experiment::DGAMMA_PUNCH
+    );
+    for (h, d, curve) in punches {
+        let exact = experiment::exact_punch_pull_off(*h, *d, experiment::DGAMMA_PUNCH)?;
+        println!(
+            "  h = {h:>4} mm, D = {d:>4} mm: {:9.2} / {:9.2}",
+            experiment::pull_off(curve) * 1e3,
+            exact * 1e3
+        );
+    }
+    println!("\nsphere pull-off [mN], BEM / exact JKR on the layer (load control):");
+    for (r, h, dgamma, curve) in spheres {
+        let exact = experiment::exact_sphere_pull_off(*r, *h, *dgamma)?;
+        println!(
+            "  R = {r:>5} mm, h = {h:>4} mm, dgamma1 = {dgamma:5.3}: {:9.2} / {:9.2}",
+            experiment::pull_off(curve) * 1e3,
+            exact * 1e3
+        );
+    }
+    Ok(())
+}

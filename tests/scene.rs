@@ -1,0 +1,229 @@
+//! Scenes: only the physics asked for, shared kernels, serialization, errors.
+
+use layered_contact::indenter::FlatPunch;
+use layered_contact::scene::{
+    Adhesion, IndenterSpec, Outputs, Phase, Protocol, Resolution, Scene, SubstrateSpec,
+};
+use layered_contact::solver::{ContactSolver, Fields, SolverParams};
+use layered_contact::{Boundary, Error};
+
+fn film_punch(protocol: Protocol) -> Scene {
+    Scene {
+        substrate: SubstrateSpec::LayerOnRigidBase {
+            youngs_modulus: 1e6,
+            poisson_ratio: 0.45,
+            thickness: 2e-3,
+        },
+        indenter: IndenterSpec::FlatPunch { radius: 1e-3 },
+        protocol,
+        resolution: Resolution {
+            cells_across: 32,
+            margin: 0.0,
+        },
+        ..Scene::default()
+    }
+}
+
+/// Without adhesion a scene runs the non-adhesive solver: its steps are
+/// bit-for-bit what `solve_depth` gives on the same grid with warm starts.
+#[test]
+fn non_adhesive_scene_is_the_plain_solver() {
+    let scene = film_punch(Protocol::Cycle {
+        max_depth: 1e-5,
+        steps: 4,
+    });
+    let curve = scene.run(&mut |_| {}).unwrap();
+    let grid = scene.grid().unwrap();
+    assert_eq!(curve.grid, grid);
+    let params = SolverParams {
+        tolerance: scene.solver.tolerance,
+        max_iterations: scene.solver.max_iterations,
+        fields: Fields::default(),
+    };
+    let mut solver = ContactSolver::new(
+        &scene.substrate.build().unwrap(),
+        &grid,
+        Boundary::Isolated,
+        params,
+    )
+    .unwrap();
+    let punch = FlatPunch::new(1e-3).unwrap();
+    let mut warm = None;
+    for (k, step) in curve.phase(Phase::Loading).enumerate() {
+        let (s, w) = solver
+            .solve_depth(&punch, k as f64 * 2.5e-6, warm.as_ref(), &mut ())
+            .unwrap();
+        warm = Some(w);
+        assert_eq!(step.force.to_bits(), s.force.to_bits());
+        assert_eq!(step.contact_area.to_bits(), s.contact_area.to_bits());
+    }
+    assert!(curve.pull_off().is_none(), "no adhesion, no pull-off");
+    // K from the loading branch is the punch stiffness F/d.
+    let last = curve.phase(Phase::Loading).last().unwrap();
+    assert!((curve.stiffness().unwrap() / (last.force / last.depth) - 1.0).abs() < 1e-9);
+}
+
+/// A homogeneous half-space (also a layer of the base's own material) never
+/// builds a layered kernel; a real coating does.
+#[test]
+fn half_space_builds_no_layered_kernel() {
+    let mut scene = film_punch(Protocol::Depth { depth: 1e-6 });
+    assert!(scene.solver().unwrap().operator().is_layered());
+    scene.substrate = SubstrateSpec::LayerOnElasticBase {
+        youngs_modulus: 1e6,
+        poisson_ratio: 0.45,
+        thickness: 2e-3,
+        base_youngs_modulus: 1e6,
+        base_poisson_ratio: 0.45,
+    };
+    assert!(!scene.solver().unwrap().operator().is_layered());
+    scene.substrate = SubstrateSpec::HalfSpace {
+        youngs_modulus: 1e6,
+        poisson_ratio: 0.45,
+    };
+    assert!(!scene.solver().unwrap().operator().is_layered());
+}
+
+/// Fields are kept only when asked for, and then only for the peak.
+#[test]
+fn fields_only_on_request() {
+    let mut scene = film_punch(Protocol::Cycle {
+        max_depth: 1e-5,
+        steps: 2,
+    });
+    assert!(scene.run(&mut |_| {}).unwrap().peak.is_none());
+    scene.outputs = Outputs {
+        fields: Fields {
+            pressure: true,
+            ..Fields::default()
+        },
+    };
+    let curve = scene.run(&mut |_| {}).unwrap();
+    let peak = curve.peak.clone().unwrap();
+    assert!(peak.displacement.is_none() && peak.gap.is_none());
+    let pressure = peak.pressure.unwrap();
+    let force = pressure.sum() * curve.grid.cell_area();
+    let deepest = curve.phase(Phase::Loading).last().unwrap();
+    assert!((force / deepest.force - 1.0).abs() < 1e-12);
+}
+
+/// Kernels and plans are built once and shared: running two scenes on one
+/// solver gives the same curves as running each on its own.
+#[test]
+fn scenes_share_a_solver() {
+    let a = film_punch(Protocol::Depth { depth: 1e-6 });
+    let b = Scene {
+        adhesion: Adhesion::Constant {
+            work_of_adhesion: 0.05,
+        },
+        protocol: Protocol::Cycle {
+            max_depth: 2e-6,
+            steps: 2,
+        },
+        ..a.clone()
+    };
+    let mut shared = a.solver().unwrap();
+    let first = a.run_on(&mut shared, &mut |_| {}).unwrap();
+    let second = b.run_on(&mut shared, &mut |_| {}).unwrap();
+    assert_eq!(first, a.run(&mut |_| {}).unwrap());
+    assert_eq!(second, b.run(&mut |_| {}).unwrap());
+    assert!(second.pull_off().unwrap().force < 0.0);
+}
+
+/// A sphere whose contact outgrows its grid is rerun on a wider grid.
+#[test]
+fn grid_grows_with_the_contact() {
+    let scene = Scene {
+        substrate: SubstrateSpec::HalfSpace {
+            youngs_modulus: 1e6,
+            poisson_ratio: 0.5,
+        },
+        indenter: IndenterSpec::Paraboloid { radius: 0.01 },
+        protocol: Protocol::Force { force: 1e-2 },
+        resolution: Resolution {
+            cells_across: 16,
+            margin: 0.0,
+        },
+        ..Scene::default()
+    };
+    let initial = scene.grid().unwrap();
+    let curve = scene.run(&mut |_| {}).unwrap();
+    assert!(curve.grid.rows() > initial.rows());
+    assert_eq!(curve.grid.spacing(), initial.spacing());
+    // Hertz: a = (3 F R / (4 E*))^(1/3).
+    let hertz = (0.75 * 1e-2 * 0.01 / (1e6 / 0.75f64)).cbrt();
+    assert!((curve.steps[0].contact_radius / hertz - 1.0).abs() < 0.1);
+}
+
+/// The example scene files parse, and scenes survive a JSON and a TOML round
+/// trip unchanged.
+#[test]
+fn scenes_serialize() {
+    let toml_scene: Scene =
+        toml::from_str(include_str!("../examples/scenes/sphere_on_film.toml")).unwrap();
+    let json_scene: Scene =
+        serde_json::from_str(include_str!("../examples/scenes/punch_on_half_space.json")).unwrap();
+    for scene in [toml_scene, json_scene] {
+        scene.validate().unwrap();
+        let json = serde_json::to_string(&scene).unwrap();
+        assert_eq!(serde_json::from_str::<Scene>(&json).unwrap(), scene);
+        let text = toml::to_string(&scene).unwrap();
+        assert_eq!(toml::from_str::<Scene>(&text).unwrap(), scene);
+    }
+    // Unknown fields are errors, not silently ignored.
+    assert!(serde_json::from_str::<Scene>(r#"{"substrate": {"kind": "half_space", "youngs_modulus": 1, "poisson_ratio": 0.3, "colour": 1}, "indenter": {"kind": "sphere", "radius": 1}, "protocol": {"kind": "depth", "depth": 1e-6}}"#).is_err());
+}
+
+/// Invalid scenes are typed errors naming the value.
+#[test]
+fn invalid_scenes_are_typed_errors() {
+    let mut scene = film_punch(Protocol::Depth { depth: 1e-6 });
+    scene.substrate = SubstrateSpec::HalfSpace {
+        youngs_modulus: 1e6,
+        poisson_ratio: 0.7,
+    };
+    assert!(matches!(scene.validate(), Err(Error::InvalidPoissonRatio { value }) if value == 0.7));
+    let scene = film_punch(Protocol::Cycle {
+        max_depth: 1e-6,
+        steps: 0,
+    });
+    assert!(matches!(
+        scene.run(&mut |_| {}),
+        Err(Error::InvalidParameter { name: "steps", .. })
+    ));
+    let scene = Scene {
+        adhesion: Adhesion::Constant {
+            work_of_adhesion: 0.1,
+        },
+        ..film_punch(Protocol::Force { force: 1.0 })
+    };
+    assert!(matches!(
+        scene.validate(),
+        Err(Error::InvalidParameter {
+            name: "protocol",
+            ..
+        })
+    ));
+    let scene = Scene {
+        adhesion: Adhesion::Hysteresis {
+            loading: -1.0,
+            unloading: 0.1,
+        },
+        ..film_punch(Protocol::Depth { depth: 1e-6 })
+    };
+    assert!(scene.validate().is_err());
+    let mut scene = film_punch(Protocol::Depth { depth: f64::NAN });
+    assert!(matches!(
+        scene.validate(),
+        Err(Error::InvalidParameter { name: "depth", .. })
+    ));
+    scene.protocol = Protocol::Depth { depth: 1e-6 };
+    scene.resolution.cells_across = 1;
+    assert!(matches!(
+        scene.validate(),
+        Err(Error::InvalidParameter {
+            name: "cells_across",
+            ..
+        })
+    ));
+}
