@@ -65,7 +65,9 @@ pub enum Protocol {
     },
     /// Displacement control: from depth 0 to `max_depth` in `steps` equal
     /// increments, then back out with the same increment until the contact
-    /// is lost; the pull-off depth is located by bisection.
+    /// is lost; the pull-off depth is located by bisection. A contact still
+    /// attached at `-20 max_depth` ends the run with
+    /// [`Error::NoConvergence`].
     Cycle {
         /// Maximum depth, m.
         max_depth: f64,
@@ -190,6 +192,9 @@ impl Default for Scene {
 
 /// Bounds on a scene's work, so that no input can run forever.
 const MAX_PROTOCOL_STEPS: usize = 100_000;
+/// Unloading past zero depth stops after this many times the loading depth
+/// (a contact so sticky that it holds beyond is reported, not followed forever).
+const MAX_PULL_DEPTHS: f64 = 20.0;
 const MAX_GRID_GROWTH: usize = 4;
 
 impl Scene {
@@ -607,7 +612,8 @@ impl<'a> Runner<'a> {
         let mut depth = max_depth;
         let mut cells = self.last_contact_cells();
         let mut shrinking_refined = false;
-        for _ in 0..MAX_PROTOCOL_STEPS {
+        let limit = (MAX_PULL_DEPTHS * max_depth / increment).ceil() as usize + 1;
+        for _ in 0..limit {
             let before = self.warm.clone();
             let solution = self.solve(Control::Depth(depth - increment), Phase::Unloading)?;
             let lost = solution.contact_cells == 0;
@@ -634,8 +640,9 @@ impl<'a> Runner<'a> {
             }
         }
         Err(Error::NoConvergence {
-            method: "unloading to contact loss",
-            iterations: MAX_PROTOCOL_STEPS,
+            method:
+                "unloading to contact loss (still attached 20 loading depths above the surface)",
+            iterations: limit,
             residual: depth,
         })
     }
