@@ -468,6 +468,7 @@ proptest! {
 
     /// Building scenes from arbitrary bytes: every input is a valid scene or
     /// a typed error, never a panic.
+    #[cfg(feature = "serde")]
     #[test]
     fn scene_from_bytes_never_panics(bytes in proptest::collection::vec(any::<u8>(), 0..256)) {
         if let Ok(scene) = serde_json::from_slice::<Scene>(&bytes) {
@@ -476,6 +477,7 @@ proptest! {
     }
 
     /// Building scenes from structurally valid JSON with wild numbers.
+    #[cfg(feature = "serde")]
     #[test]
     fn scene_from_wild_numbers(values in proptest::collection::vec(
         prop_oneof![Just(0.0), Just(-1.0), Just(1e308), Just(-1e308), Just(5e-324), -1e3f64..1e3], 8),

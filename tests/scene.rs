@@ -157,6 +157,7 @@ fn grid_grows_with_the_contact() {
 
 /// The example scene files parse, and scenes survive a JSON and a TOML round
 /// trip unchanged.
+#[cfg(feature = "serde")]
 #[test]
 fn scenes_serialize() {
     let toml_scene: Scene =

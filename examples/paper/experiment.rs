@@ -4,12 +4,10 @@
 #![allow(dead_code)]
 
 use layered_contact::analytic::{Axisymmetric, PunchStiffnessSeries};
-use layered_contact::indenter::FlatPunch;
 use layered_contact::scene::{
     Adhesion, Curve, IndenterSpec, Protocol, Resolution, Scene, SolverSettings, SubstrateSpec,
 };
-use layered_contact::solver::{ContactSolver, SolverParams};
-use layered_contact::{Boundary, Error, Grid, Material, Substrate};
+use layered_contact::{Error, Material, Substrate};
 
 /// Material of the reference experiment (Lyashenko, Popov & Borysiuk 2023).
 pub const YOUNGS_MODULUS: f64 = 0.324e6;
@@ -110,47 +108,27 @@ pub struct StiffnessRow {
     pub bem: Option<f64>,
 }
 
-/// A grid spacing near `2a/n` for which the cells whose centres lie on the
-/// punch have exactly (to 1e-3) the punch's area, so that the BEM's
-/// staircase punch has the true radius on average.
-pub fn equal_area_grid(radius: f64, n: usize) -> Result<Grid, Error> {
-    let cells = n + 2;
-    let count = |spacing: f64| {
-        let half = 0.5 * cells as f64;
-        (0..cells * cells)
-            .filter(|c| {
-                let x = ((c / cells) as f64 + 0.5 - half) * spacing;
-                let y = ((c % cells) as f64 + 0.5 - half) * spacing;
-                x.hypot(y) <= radius
-            })
-            .count() as f64
-    };
-    let target = std::f64::consts::PI * radius * radius;
-    let nominal = 2.0 * radius / n as f64;
-    let best = (0..400)
-        .map(|k| nominal * (0.98 + 0.0001 * k as f64))
-        .min_by(|a, b| {
-            let ea = (count(*a) * a * a / target - 1.0).abs();
-            let eb = (count(*b) * b * b / target - 1.0).abs();
-            ea.total_cmp(&eb)
-        })
-        .unwrap_or(nominal);
-    Grid::new(cells, cells, best)
-}
-
 /// `K / (2 a E*)` of a flat punch of diameter `d_mm` on layer `h_mm` by the
-/// BEM (non-adhesive, 1 um deep).
+/// BEM (non-adhesive, 1 um deep, on the scene's equal-area grid).
 pub fn bem_ratio(h_mm: f64, d_mm: f64, cells_across: usize) -> Result<f64, Error> {
     let radius = 0.5e-3 * d_mm;
-    let grid = equal_area_grid(radius, cells_across)?;
-    let params = SolverParams {
-        tolerance: 1e-10,
-        ..SolverParams::default()
-    };
-    let mut solver = ContactSolver::new(&film(h_mm)?, &grid, Boundary::Isolated, params)?;
     let depth = 1e-6;
-    let (solution, _) = solver.solve_depth(&FlatPunch::new(radius)?, depth, None, &mut ())?;
-    Ok(solution.force / depth / (2.0 * radius * rubber().contact_modulus()))
+    let scene = Scene {
+        protocol: Protocol::Depth { depth },
+        resolution: Resolution {
+            cells_across,
+            margin: 0.0,
+        },
+        solver: SolverSettings {
+            tolerance: 1e-10,
+            ..SolverSettings::default()
+        },
+        adhesion: Adhesion::None,
+        ..punch_scene(h_mm, d_mm, depth, 1)
+    };
+    let curve = scene.run(&mut |_| {})?;
+    let force = curve.steps.last().map_or(0.0, |s| s.force);
+    Ok(force / depth / (2.0 * radius * rubber().contact_modulus()))
 }
 
 /// The stiffness table: every `h` and `D` with series, exact and BEM, plus a

@@ -81,7 +81,59 @@ struct Workspace {
     real: Vec<f64>,
     rows: Vec<Complex<f64>>,
     columns: Vec<Complex<f64>>,
-    scratch: Vec<Complex<f64>>,
+    /// One scratch buffer per task of the row and column passes.
+    scratch: Vec<Vec<Complex<f64>>>,
+    /// Rows (of the padded grid) per task of the row passes.
+    rows_per_task: usize,
+    /// Columns (of the half spectrum) per task of the column passes.
+    columns_per_task: usize,
+}
+
+/// Tasks the row and column passes are split into: one per thread (with the
+/// `parallel` feature), else one. Each row or column is transformed by the
+/// same code whatever the split, so results do not depend on it.
+fn task_count() -> usize {
+    #[cfg(feature = "parallel")]
+    {
+        rayon::current_num_threads().max(1)
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        1
+    }
+}
+
+/// One task of the column pass: its columns, their multipliers, a scratch buffer.
+type ColumnTask<'a> = (
+    &'a mut [Complex<f64>],
+    (&'a [f64], &'a mut Vec<Complex<f64>>),
+);
+
+/// Runs `f` on matching chunks of `a` and `b` with one scratch buffer each,
+/// in parallel with the `parallel` feature.
+fn for_each_chunk<A: Send, B: Send>(
+    a: &mut [A],
+    a_chunk: usize,
+    b: &mut [B],
+    b_chunk: usize,
+    scratch: &mut [Vec<Complex<f64>>],
+    f: impl Fn(&mut [A], &mut [B], &mut [Complex<f64>]) -> Result<()> + Sync + Send,
+) -> Result<()> {
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        a.par_chunks_mut(a_chunk)
+            .zip(b.par_chunks_mut(b_chunk))
+            .zip(scratch.par_iter_mut())
+            .try_for_each(|((x, y), s)| f(x, y, s))
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        a.chunks_mut(a_chunk)
+            .zip(b.chunks_mut(b_chunk))
+            .zip(scratch.iter_mut())
+            .try_for_each(|((x, y), s)| f(x, y, s))
+    }
 }
 
 impl std::fmt::Debug for ComplianceOperator {
@@ -122,11 +174,14 @@ impl ComplianceOperator {
         .into_iter()
         .max()
         .unwrap_or(0);
+        let tasks = task_count();
         let workspace = Workspace {
             real: vec![0.0; size.0 * size.1],
             rows: vec![Complex::default(); size.0 * half],
             columns: vec![Complex::default(); size.0 * half],
-            scratch: vec![Complex::default(); scratch_len],
+            scratch: vec![vec![Complex::default(); scratch_len]; tasks],
+            rows_per_task: size.0.div_ceil(tasks),
+            columns_per_task: half.div_ceil(tasks),
         };
         let mut operator = ComplianceOperator {
             grid: *grid,
@@ -243,21 +298,72 @@ impl ComplianceOperator {
     /// `workspace.columns`.
     fn forward_all_rows(&mut self) -> Result<()> {
         let (n0, n1) = self.size;
+        self.forward_rows(n0)?;
         let half = n1 / 2 + 1;
         let ws = &mut self.workspace;
-        for (row, out) in ws
-            .real
-            .chunks_exact_mut(n1)
-            .zip(ws.rows.chunks_exact_mut(half))
-        {
-            self.row_forward
-                .process_with_scratch(row, out, &mut ws.scratch)
-                .map_err(fft_error)?;
-        }
         transpose::transpose(&ws.rows, &mut ws.columns, half, n0);
+        let scratch = &mut ws.scratch[0];
         self.column_forward
-            .process_with_scratch(&mut ws.columns, &mut ws.scratch);
+            .process_with_scratch(&mut ws.columns, scratch);
         Ok(())
+    }
+
+    /// Real-to-complex transforms of the first `count` rows of
+    /// `workspace.real` into `workspace.rows`.
+    fn forward_rows(&mut self, count: usize) -> Result<()> {
+        let (_, n1) = self.size;
+        let half = n1 / 2 + 1;
+        let ws = &mut self.workspace;
+        let per_task = ws.rows_per_task;
+        let fft = &self.row_forward;
+        for_each_chunk(
+            &mut ws.real[..count * n1],
+            per_task * n1,
+            &mut ws.rows[..count * half],
+            per_task * half,
+            &mut ws.scratch,
+            |real, spectrum, scratch| {
+                for (row, out) in real
+                    .chunks_exact_mut(n1)
+                    .zip(spectrum.chunks_exact_mut(half))
+                {
+                    fft.process_with_scratch(row, out, scratch)
+                        .map_err(fft_error)?;
+                }
+                Ok(())
+            },
+        )
+    }
+
+    /// Forward transform of every column, multiplication by `spectrum`, and
+    /// inverse transform, one chunk of columns per task.
+    fn filter_columns(&mut self, spectrum: &[f64]) {
+        let (n0, _) = self.size;
+        let ws = &mut self.workspace;
+        let per_task = ws.columns_per_task * n0;
+        let (forward, inverse) = (&self.column_forward, &self.column_inverse);
+        let filter = |(columns, (k, scratch)): ColumnTask<'_>| {
+            forward.process_with_scratch(columns, scratch);
+            for (c, k) in columns.iter_mut().zip(k) {
+                *c *= *k;
+            }
+            inverse.process_with_scratch(columns, scratch);
+        };
+        #[cfg(feature = "parallel")]
+        {
+            use rayon::prelude::*;
+            ws.columns
+                .par_chunks_mut(per_task)
+                .zip(spectrum.par_chunks(per_task).zip(ws.scratch.par_iter_mut()))
+                .for_each(filter);
+        }
+        #[cfg(not(feature = "parallel"))]
+        {
+            ws.columns
+                .chunks_mut(per_task)
+                .zip(spectrum.chunks(per_task).zip(ws.scratch.iter_mut()))
+                .for_each(filter);
+        }
     }
 
     /// Displacements `u = K p` for cell pressures `pressure` (both row-major
@@ -333,42 +439,50 @@ impl ComplianceOperator {
         let (n0, n1) = self.size;
         let (rows, columns) = (self.grid.rows(), self.grid.columns());
         let half = n1 / 2 + 1;
+        // Rows of the pressure, zero-padded; the padding rows transform to zero.
+        for (i, row) in self
+            .workspace
+            .real
+            .chunks_exact_mut(n1)
+            .take(rows)
+            .enumerate()
         {
-            let ws = &mut self.workspace;
-            // Rows of the pressure, zero-padded; the padding rows transform to zero.
-            for (i, out) in ws.rows.chunks_exact_mut(half).enumerate() {
-                if i < rows {
-                    let row = &mut ws.real[..n1];
-                    row[..columns].copy_from_slice(&pressure[i * columns..(i + 1) * columns]);
-                    row[columns..].fill(0.0);
-                    self.row_forward
-                        .process_with_scratch(row, out, &mut ws.scratch)
+            row[..columns].copy_from_slice(&pressure[i * columns..(i + 1) * columns]);
+            row[columns..].fill(0.0);
+        }
+        self.workspace.rows[rows * half..].fill(Complex::default());
+        self.forward_rows(rows)?;
+        let ws = &mut self.workspace;
+        transpose::transpose(&ws.rows, &mut ws.columns, half, n0);
+        self.filter_columns(spectrum);
+        let ws = &mut self.workspace;
+        transpose::transpose(&ws.columns, &mut ws.rows, n0, half);
+        let per_task = ws.rows_per_task;
+        let fft = &self.row_inverse;
+        for_each_chunk(
+            &mut ws.rows[..rows * half],
+            per_task * half,
+            &mut ws.real[..rows * n1],
+            per_task * n1,
+            &mut ws.scratch,
+            |spectrum, real, scratch| {
+                for (spectrum_row, row) in spectrum
+                    .chunks_exact_mut(half)
+                    .zip(real.chunks_exact_mut(n1))
+                {
+                    // A real signal has real DC and Nyquist terms; clear the rounding.
+                    spectrum_row[0].im = 0.0;
+                    if n1 % 2 == 0 {
+                        spectrum_row[half - 1].im = 0.0;
+                    }
+                    fft.process_with_scratch(spectrum_row, row, scratch)
                         .map_err(fft_error)?;
-                } else {
-                    out.fill(Complex::default());
                 }
-            }
-            transpose::transpose(&ws.rows, &mut ws.columns, half, n0);
-            self.column_forward
-                .process_with_scratch(&mut ws.columns, &mut ws.scratch);
-            for (c, k) in ws.columns.iter_mut().zip(spectrum) {
-                *c *= *k;
-            }
-            self.column_inverse
-                .process_with_scratch(&mut ws.columns, &mut ws.scratch);
-            transpose::transpose(&ws.columns, &mut ws.rows, n0, half);
-            for (i, spectrum_row) in ws.rows.chunks_exact_mut(half).take(rows).enumerate() {
-                // A real signal has real DC and Nyquist terms; clear the rounding.
-                spectrum_row[0].im = 0.0;
-                if n1 % 2 == 0 {
-                    spectrum_row[half - 1].im = 0.0;
-                }
-                let row = &mut ws.real[..n1];
-                self.row_inverse
-                    .process_with_scratch(spectrum_row, row, &mut ws.scratch)
-                    .map_err(fft_error)?;
-                displacement[i * columns..(i + 1) * columns].copy_from_slice(&row[..columns]);
-            }
+                Ok(())
+            },
+        )?;
+        for (i, row) in ws.real.chunks_exact(n1).take(rows).enumerate() {
+            displacement[i * columns..(i + 1) * columns].copy_from_slice(&row[..columns]);
         }
         Ok(())
     }

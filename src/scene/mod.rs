@@ -34,9 +34,11 @@
 //! Ok::<(), layered_contact::Error>(())
 //! ```
 
+mod accuracy;
 mod curve;
 mod spec;
 
+pub use accuracy::{richardson, Converged, Quantity};
 pub use curve::{Curve, Phase, Step};
 pub use spec::{Adhesion, IndenterSpec, SubstrateSpec, Tilt};
 
@@ -314,16 +316,25 @@ impl Scene {
     ///
     /// # Errors
     /// As [`Scene::validate`].
+    ///
+    /// For a flat punch (untilted or not) the spacing is adjusted within 2 %
+    /// of `2a / cells_across` so that the cells whose centres lie on the
+    /// punch have the punch's area: the staircase punch then has the right
+    /// radius on average, and the stiffness converges smoothly like `1/N`
+    /// instead of oscillating with the staircase.
     pub fn grid(&self) -> Result<Grid> {
         self.validate()?;
         let radius = self.contact_radius_estimate()?;
         let n = self.resolution.cells_across;
-        let spacing = 2.0 * radius / n as f64;
-        let cells = match self.indenter {
-            IndenterSpec::FlatPunch { .. } => n + 2,
-            _ => (n as f64 * (1.0 + 2.0 * self.resolution.margin)).ceil() as usize,
-        };
-        Grid::new(cells, cells, spacing)
+        match self.indenter {
+            IndenterSpec::FlatPunch { radius } => {
+                Grid::new(n + 2, n + 2, equal_area_spacing(radius, n))
+            }
+            _ => {
+                let cells = (n as f64 * (1.0 + 2.0 * self.resolution.margin)).ceil() as usize;
+                Grid::new(cells, cells, 2.0 * radius / n as f64)
+            }
+        }
     }
 
     /// A solver for this scene's substrate on `grid`.
@@ -386,6 +397,29 @@ impl Scene {
             expected: "a grid that holds the contact (it still reached the edge after growing)",
         })
     }
+}
+
+/// A spacing within 2 % of `2 radius / n` for which the cells of an
+/// `(n + 2)`-square grid whose centres lie within `radius` of its centre cover
+/// the disc's area most closely.
+fn equal_area_spacing(radius: f64, n: usize) -> f64 {
+    let cells = n + 2;
+    let half = 0.5 * cells as f64;
+    let area_error = |spacing: f64| {
+        let inside = (0..cells * cells)
+            .filter(|c| {
+                let x = ((c / cells) as f64 + 0.5 - half) * spacing;
+                let y = ((c % cells) as f64 + 0.5 - half) * spacing;
+                x.hypot(y) <= radius
+            })
+            .count() as f64;
+        (inside * spacing * spacing / (std::f64::consts::PI * radius * radius) - 1.0).abs()
+    };
+    let nominal = 2.0 * radius / n as f64;
+    (0..=80)
+        .map(|k| nominal * (0.98 + 0.0005 * k as f64))
+        .min_by(|a, b| area_error(*a).total_cmp(&area_error(*b)))
+        .unwrap_or(nominal)
 }
 
 /// The contact radius of a paraboloid of tip radius `radius` at depth (or

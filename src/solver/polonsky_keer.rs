@@ -6,6 +6,9 @@ use crate::indenter::Indenter;
 
 use super::{check_finite, ContactSolver, IterationInfo, Observer, Solution, WarmStart};
 
+/// Iterations between full recomputations of `u = K p`.
+const REFRESH: usize = 50;
+
 /// Which quantity a non-adhesive solve prescribes.
 #[derive(Clone, Copy)]
 enum Control {
@@ -94,9 +97,17 @@ impl ContactSolver {
             Control::Force(_) => 0.0,
         };
         let mut residual = f64::INFINITY;
+        // u = K p is kept up to date incrementally: one operator application
+        // per iteration (K t), plus one only when clamping or new overlap
+        // changed the pressure off the search direction, and a full refresh
+        // every REFRESH iterations against drift.
+        self.operator
+            .apply(&pressure, &mut self.workspace.displacement)?;
         for iteration in 1..=self.params.max_iterations {
             let ws = &mut self.workspace;
-            self.operator.apply(&pressure, &mut ws.displacement)?;
+            if iteration % REFRESH == 0 {
+                self.operator.apply(&pressure, &mut ws.displacement)?;
+            }
             // Gap (up to the unknown depth under force control).
             let reference = match control {
                 Control::Depth(d) => d,
@@ -123,6 +134,7 @@ impl ContactSolver {
                     }
                 }
                 delta = 0.0;
+                self.operator.apply(&pressure, &mut ws.displacement)?;
                 continue;
             }
             if let Control::Force(_) = control {
@@ -146,8 +158,9 @@ impl ContactSolver {
             }
             g_old = g_norm;
             self.operator.apply(&ws.direction, &mut ws.response)?;
+            let mut mean = 0.0;
             if let Control::Force(_) = control {
-                let mean = (0..n)
+                mean = (0..n)
                     .filter(|&c| pressure[c] > 0.0)
                     .map(|c| ws.response[c])
                     .sum::<f64>()
@@ -185,10 +198,25 @@ impl ContactSolver {
                 }
             }
             delta = if overlap { 0.0 } else { 1.0 };
+            // u += -step K t + K (correction), the correction being what
+            // clamping and overlap added to p - step t (`gap` is free now).
+            let mut corrected = false;
+            for c in 0..n {
+                ws.displacement[c] -= step * (ws.response[c] + mean);
+                ws.gap[c] = pressure[c] - (ws.previous[c] - step * ws.direction[c]);
+                corrected |= ws.gap[c] != 0.0;
+            }
+            if corrected {
+                self.operator.apply(&ws.gap, &mut ws.response)?;
+                for (u, k) in ws.displacement.iter_mut().zip(&ws.response) {
+                    *u += k;
+                }
+            }
             if let Control::Force(w) = control {
                 let total = area * pressure.iter().sum::<f64>();
                 if total > 0.0 {
                     rescale(&mut pressure, w / total);
+                    rescale(&mut ws.displacement, w / total);
                 }
             }
             let change: f64 = pressure

@@ -1,0 +1,480 @@
+//! What accuracy costs in time: each case solved on grids of 8 .. 256 cells
+//! across the contact (512 where the previous run took under 12 s), against
+//! a trusted reference (closed forms and the exact axisymmetric solutions),
+//! with the Richardson extrapolation of consecutive resolutions and the exact
+//! solver as rows of their own. Also times one CG iteration against one FFT
+//! round trip of the padded grid.
+//!
+//! ```text
+//! cargo run --release --example accuracy -- [--out DIR] [--max-cells N] [--floor-only]
+//! ```
+//!
+//! Writes `accuracy.csv` (`case,cells_across,n_grid,rel_error,seconds,iterations,grid_bytes`),
+//! `accuracy.svg` (error against time, log-log) and `BENCHMARKS.md` to `DIR`
+//! (default `target/accuracy`), and prints the markdown table.
+
+use std::error::Error;
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use layered_contact::analytic::{Axisymmetric, Hertz, JkrSphere};
+use layered_contact::indenter::FlatPunch;
+use layered_contact::scene::{
+    richardson, Adhesion, IndenterSpec, Protocol, Quantity, Resolution, Scene, SubstrateSpec,
+};
+use layered_contact::solver::{ContactSolver, SolverParams};
+use layered_contact::{Boundary, Grid, Material, Substrate};
+use plotters::prelude::*;
+use realfft::RealFftPlanner;
+
+type Result<T> = std::result::Result<T, Box<dyn Error>>;
+
+struct Case {
+    name: &'static str,
+    scene: Scene,
+    quantity: Quantity,
+    reference: f64,
+    /// Seconds for the exact (analytic / axisymmetric) value and its error.
+    exact: (f64, f64),
+}
+
+struct Row {
+    case: String,
+    cells_across: usize,
+    n_grid: usize,
+    rel_error: f64,
+    seconds: f64,
+    iterations: usize,
+    grid_bytes: usize,
+}
+
+fn rubber() -> Material {
+    Material::new(0.324e6, 0.48).expect("valid")
+}
+
+fn timed<T>(f: impl FnOnce() -> T) -> (T, f64) {
+    let start = Instant::now();
+    let value = f();
+    (value, start.elapsed().as_secs_f64())
+}
+
+fn cases() -> Result<Vec<Case>> {
+    let soft = Material::new(1e6, 0.5)?;
+    let half_space = SubstrateSpec::HalfSpace {
+        youngs_modulus: 1e6,
+        poisson_ratio: 0.5,
+    };
+    let layer = |h: f64| SubstrateSpec::LayerOnRigidBase {
+        youngs_modulus: 0.324e6,
+        poisson_ratio: 0.48,
+        thickness: h,
+    };
+    let base = |substrate, indenter, adhesion, protocol| Scene {
+        substrate,
+        indenter,
+        adhesion,
+        protocol,
+        resolution: Resolution {
+            cells_across: 8,
+            margin: 0.25,
+        },
+        ..Scene::default()
+    };
+    let mut cases = Vec::new();
+
+    let (a, d) = (1e-3, 1e-5);
+    cases.push(Case {
+        name: "punch_half_space",
+        scene: base(
+            half_space,
+            IndenterSpec::FlatPunch { radius: a },
+            Adhesion::None,
+            Protocol::Depth { depth: d },
+        ),
+        quantity: Quantity::PeakForce,
+        reference: 2.0 * a * soft.contact_modulus() * d,
+        exact: (0.0, 0.0),
+    });
+    for eps in [0.5, 2.0] {
+        let (a, h) = (2.5e-3, 2.5e-3 / eps);
+        let ((punch, exact_error), seconds) = timed(|| {
+            let exact = Axisymmetric::new(
+                &Substrate::layer_on_rigid_base(rubber(), h).expect("valid"),
+                eps,
+            )
+            .expect("valid");
+            let punch = exact.flat_punch(a).expect("converges");
+            (punch.stiffness(), punch.convergence())
+        });
+        cases.push(Case {
+            name: if eps < 1.0 {
+                "punch_layer_a/h=0.5"
+            } else {
+                "punch_layer_a/h=2"
+            },
+            scene: base(
+                layer(h),
+                IndenterSpec::FlatPunch { radius: a },
+                Adhesion::None,
+                Protocol::Depth { depth: 1e-5 },
+            ),
+            quantity: Quantity::PeakForce,
+            reference: punch * 1e-5,
+            exact: (seconds, exact_error),
+        });
+    }
+    let (r, d) = (0.01, 1e-4);
+    cases.push(Case {
+        name: "hertz_sphere",
+        scene: base(
+            half_space,
+            IndenterSpec::Paraboloid { radius: r },
+            Adhesion::None,
+            Protocol::Depth { depth: d },
+        ),
+        quantity: Quantity::PeakForce,
+        reference: Hertz::new(&soft, r)?.force(d),
+        exact: (0.0, 0.0),
+    });
+    let dgamma = 0.05;
+    let jkr = JkrSphere::new(&soft, r, dgamma)?;
+    let a_max = 1.3 * jkr.pull_off_contact_radius();
+    cases.push(Case {
+        name: "jkr_sphere_pull_off",
+        scene: base(
+            half_space,
+            IndenterSpec::Paraboloid { radius: r },
+            Adhesion::Constant {
+                work_of_adhesion: dgamma,
+            },
+            Protocol::Cycle {
+                max_depth: a_max * a_max / r,
+                steps: 30,
+            },
+        ),
+        quantity: Quantity::PullOffForce,
+        reference: jkr.pull_off_force(),
+        exact: (0.0, 0.0),
+    });
+    let (a, h) = (2.5e-3, 5e-3);
+    let ((pull_off, exact_error), seconds) = timed(|| {
+        let exact = Axisymmetric::new(
+            &Substrate::layer_on_rigid_base(rubber(), h).expect("valid"),
+            0.5,
+        )
+        .expect("valid");
+        let punch = exact.flat_punch(a).expect("converges");
+        (punch.pull_off_force(0.326), punch.convergence())
+    });
+    cases.push(Case {
+        name: "punch_jkr_layer_pull_off",
+        scene: base(
+            layer(h),
+            IndenterSpec::FlatPunch { radius: a },
+            Adhesion::Constant {
+                work_of_adhesion: 0.326,
+            },
+            Protocol::Cycle {
+                max_depth: 2e-4,
+                steps: 20,
+            },
+        ),
+        quantity: Quantity::PullOffForce,
+        reference: pull_off,
+        exact: (seconds, exact_error),
+    });
+    Ok(cases)
+}
+
+/// Bytes of the grids of one solve: the padded real array, two complex
+/// buffers and the spectrum of the operator, and six per-cell solver vectors.
+fn grid_bytes(grid: &Grid) -> usize {
+    let (n0, n1) = (2 * grid.rows(), 2 * grid.columns());
+    let half = n1 / 2 + 1;
+    8 * n0 * n1 + 2 * 16 * n0 * half + 8 * n0 * half + 6 * 8 * grid.len()
+}
+
+fn main() -> Result<()> {
+    let mut out = PathBuf::from("target/accuracy");
+    let mut max_cells = 512;
+    let mut args = std::env::args().skip(1);
+    while let Some(arg) = args.next() {
+        match arg.as_str() {
+            "--out" => out = PathBuf::from(args.next().ok_or("--out needs a directory")?),
+            "--max-cells" => {
+                max_cells = args.next().ok_or("--max-cells needs a number")?.parse()?
+            }
+            "--floor-only" => {
+                println!("{}", fft_floor()?);
+                return Ok(());
+            }
+            other => return Err(format!("unknown argument {other}").into()),
+        }
+    }
+    std::fs::create_dir_all(&out)?;
+    let mut rows = Vec::new();
+    for case in cases()? {
+        let mut previous: Option<(usize, f64, f64)> = None;
+        rows.push(Row {
+            case: format!("{}/exact", case.name),
+            cells_across: 0,
+            n_grid: 0,
+            rel_error: case.exact.1,
+            seconds: case.exact.0,
+            iterations: 0,
+            grid_bytes: 0,
+        });
+        let mut cells = 8;
+        while cells <= max_cells {
+            let scene = Scene {
+                resolution: Resolution {
+                    cells_across: cells,
+                    ..case.scene.resolution
+                },
+                ..case.scene.clone()
+            };
+            let (curve, seconds) = timed(|| scene.run(&mut |_| {}));
+            let curve = curve?;
+            let value = case.quantity.of(&curve).ok_or("quantity missing")?;
+            let error = (value / case.reference - 1.0).abs();
+            rows.push(Row {
+                case: case.name.to_string(),
+                cells_across: cells,
+                n_grid: curve.grid.rows(),
+                rel_error: error,
+                seconds,
+                iterations: curve.steps.iter().map(|s| s.iterations).sum(),
+                grid_bytes: grid_bytes(&curve.grid),
+            });
+            if let Some((coarse, coarse_value, coarse_seconds)) = previous {
+                let extrapolated = richardson((coarse, coarse_value), (cells, value), 1.0);
+                rows.push(Row {
+                    case: format!("{}/richardson", case.name),
+                    cells_across: cells,
+                    n_grid: curve.grid.rows(),
+                    rel_error: (extrapolated / case.reference - 1.0).abs(),
+                    seconds: seconds + coarse_seconds,
+                    iterations: 0,
+                    grid_bytes: grid_bytes(&curve.grid),
+                });
+            }
+            eprintln!(
+                "{:28} {cells:4} cells: error {error:.2e}, {seconds:.3} s",
+                case.name
+            );
+            previous = Some((cells, value, seconds));
+            // Each doubling costs four to eight times as much: stop before a minute.
+            if seconds > 8.0 || (cells >= 256 && seconds > 2.0) {
+                break;
+            }
+            cells *= 2;
+        }
+    }
+
+    let mut csv = csv::Writer::from_path(out.join("accuracy.csv"))?;
+    csv.write_record([
+        "case",
+        "cells_across",
+        "n_grid",
+        "rel_error",
+        "seconds",
+        "iterations",
+        "grid_bytes",
+    ])?;
+    for r in &rows {
+        csv.write_record([
+            r.case.clone(),
+            r.cells_across.to_string(),
+            r.n_grid.to_string(),
+            format!("{:.3e}", r.rel_error),
+            format!("{:.4e}", r.seconds),
+            r.iterations.to_string(),
+            r.grid_bytes.to_string(),
+        ])?;
+    }
+    csv.flush()?;
+
+    let mut table = String::from("| case | cells across | grid | rel. error | seconds | CG iterations | grid memory |\n|---|---|---|---|---|---|---|\n");
+    for r in &rows {
+        writeln!(
+            table,
+            "| {} | {} | {} | {:.2e} | {:.4} | {} | {:.1} MB |",
+            r.case,
+            r.cells_across,
+            r.n_grid,
+            r.rel_error,
+            r.seconds,
+            r.iterations,
+            r.grid_bytes as f64 / 1e6
+        )?;
+    }
+    let floor = fft_floor()?;
+    println!("{table}\n{floor}");
+    let benchmarks = format!(
+        "# Benchmarks\n\nRegenerated by `cargo run --release --example accuracy` (this machine: 2 cores).\n\n\
+         ## Accuracy against cost\n\nErrors against closed forms (Boussinesq, Hertz, JKR) and the exact \
+         axisymmetric solutions (rows `/exact`: their own cost and convergence); rows `/richardson` \
+         extrapolate the two resolutions up to the given one (`1/N`).\n\n{table}\n## One CG iteration against the FFT floor\n\n{floor}"
+    );
+    std::fs::write(out.join("BENCHMARKS.md"), benchmarks)?;
+    plot(&out.join("accuracy.svg"), &rows)?;
+    eprintln!("wrote {}", out.display());
+    Ok(())
+}
+
+/// Times one non-adhesive CG iteration (sphere on a film) against one
+/// real-to-complex plus complex-to-real FFT of the padded grid.
+fn fft_floor() -> Result<String> {
+    let mut text = String::from(
+        "| N | padded FFT round trip [ms] | CG iteration [ms] | ratio |\n|---|---|---|---|\n",
+    );
+    for n in [128usize, 256, 512, 1024] {
+        let padded = 2 * n;
+        let mut planner = RealFftPlanner::<f64>::new();
+        let forward = planner.plan_fft_forward(padded);
+        let inverse = planner.plan_fft_inverse(padded);
+        let mut column = rustfft::FftPlanner::<f64>::new();
+        let col_forward = column.plan_fft_forward(padded);
+        let col_inverse = column.plan_fft_inverse(padded);
+        let half = padded / 2 + 1;
+        let mut real = vec![1.0; padded * padded];
+        let mut spectrum = vec![num_complex::Complex::<f64>::default(); padded * half];
+        let mut transposed = spectrum.clone();
+        let repeats = 5;
+        let (_, seconds) = timed(|| {
+            for _ in 0..repeats {
+                for (r, s) in real
+                    .chunks_exact_mut(padded)
+                    .zip(spectrum.chunks_exact_mut(half))
+                {
+                    forward.process(r, s).expect("sizes match");
+                }
+                transpose::transpose(&spectrum, &mut transposed, half, padded);
+                col_forward.process(&mut transposed);
+                col_inverse.process(&mut transposed);
+                transpose::transpose(&transposed, &mut spectrum, padded, half);
+                for (s, r) in spectrum
+                    .chunks_exact_mut(half)
+                    .zip(real.chunks_exact_mut(padded))
+                {
+                    s[0].im = 0.0;
+                    s[half - 1].im = 0.0;
+                    inverse.process(s, r).expect("sizes match");
+                }
+            }
+        });
+        let round_trip = seconds / repeats as f64;
+        let grid = Grid::new(n, n, 1e-5)?;
+        let substrate = Substrate::layer_on_rigid_base(rubber(), 1e-3)?;
+        let mut solver = ContactSolver::new(
+            &substrate,
+            &grid,
+            Boundary::Isolated,
+            SolverParams::default(),
+        )?;
+        let punch = FlatPunch::new(0.45 * n as f64 * 1e-5)?;
+        let ((solution, _), seconds) = timed(|| {
+            solver
+                .solve_depth(&punch, 1e-7, None, &mut ())
+                .expect("converges")
+        });
+        let per_iteration = seconds / solution.iterations as f64;
+        writeln!(
+            text,
+            "| {n} | {:.2} | {:.2} | {:.2} |",
+            round_trip * 1e3,
+            per_iteration * 1e3,
+            per_iteration / round_trip
+        )?;
+    }
+    Ok(text)
+}
+
+fn plot(path: &std::path::Path, rows: &[Row]) -> Result<()> {
+    plotters::style::register_font("sans-serif", FontStyle::Normal, dejavu::sans::regular())
+        .map_err(|_| "invalid font")?;
+    let root = SVGBackend::new(path, (1000, 700)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let positive: Vec<&Row> = rows
+        .iter()
+        .filter(|r| r.rel_error > 0.0 && r.seconds > 0.0)
+        .collect();
+    let t0 = positive
+        .iter()
+        .map(|r| r.seconds)
+        .fold(f64::INFINITY, f64::min)
+        / 2.0;
+    let t1 = positive.iter().map(|r| r.seconds).fold(0.0, f64::max) * 2.0;
+    let e0 = positive
+        .iter()
+        .map(|r| r.rel_error)
+        .fold(f64::INFINITY, f64::min)
+        / 2.0;
+    let e1 = positive.iter().map(|r| r.rel_error).fold(0.0, f64::max) * 2.0;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            "What accuracy costs: BEM (lines), Richardson (squares), exact solver (stars)",
+            ("sans-serif", 20),
+        )
+        .margin(15)
+        .x_label_area_size(55)
+        .y_label_area_size(75)
+        .build_cartesian_2d((t0..t1).log_scale(), (e0..e1).log_scale())?;
+    chart
+        .configure_mesh()
+        .x_desc("wall time [s]")
+        .y_desc("relative error")
+        .x_label_formatter(&|v| format!("{v:.0e}"))
+        .y_label_formatter(&|v| format!("{v:.0e}"))
+        .label_style(("sans-serif", 15))
+        .axis_desc_style(("sans-serif", 17))
+        .draw()?;
+    let mut names: Vec<&str> = rows
+        .iter()
+        .filter(|r| !r.case.contains('/'))
+        .map(|r| r.case.as_str())
+        .collect();
+    names.dedup();
+    for (i, name) in names.iter().enumerate() {
+        let color = Palette99::pick(i).to_rgba();
+        let bem: Vec<(f64, f64)> = positive
+            .iter()
+            .filter(|r| r.case == *name)
+            .map(|r| (r.seconds, r.rel_error))
+            .collect();
+        chart
+            .draw_series(LineSeries::new(bem.clone(), color.stroke_width(2)))?
+            .label(*name)
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(2))
+            });
+        chart.draw_series(bem.iter().map(|p| Circle::new(*p, 3, color.filled())))?;
+        let extrapolated = format!("{name}/richardson");
+        chart.draw_series(positive.iter().filter(|r| r.case == extrapolated).map(|r| {
+            Rectangle::new(
+                [
+                    (r.seconds * 0.93, r.rel_error * 0.85),
+                    (r.seconds * 1.07, r.rel_error * 1.15),
+                ],
+                color.filled(),
+            )
+        }))?;
+        let exact = format!("{name}/exact");
+        chart.draw_series(
+            positive
+                .iter()
+                .filter(|r| r.case == exact)
+                .map(|r| Cross::new((r.seconds, r.rel_error), 7, color.stroke_width(3))),
+        )?;
+    }
+    chart
+        .configure_series_labels()
+        .label_font(("sans-serif", 14))
+        .position(SeriesLabelPosition::LowerLeft)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()?;
+    root.present()?;
+    Ok(())
+}
