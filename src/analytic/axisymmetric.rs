@@ -206,9 +206,16 @@ impl Nystrom {
         }
     }
 
-    /// `psi(xi)` by Nystrom interpolation.
-    fn value(&self, quadratic: bool, xi: f64) -> f64 {
-        let rhs = if quadratic { xi * xi } else { 1.0 };
+    /// `rhs + Integral_0^1 kernel(xi, s) psi(s) ds` by the Nystrom rule, for
+    /// `kernel` = [`Nystrom::kernel_at`] (values) or
+    /// [`Nystrom::kernel_slope`] (slopes).
+    fn interpolate(
+        &self,
+        quadratic: bool,
+        xi: f64,
+        rhs: f64,
+        kernel_fn: fn(&CosineKernel, f64, f64, f64) -> f64,
+    ) -> f64 {
         match &self.kernel {
             None => rhs,
             Some(kernel) => {
@@ -217,10 +224,16 @@ impl Nystrom {
                     .iter()
                     .zip(&self.weights)
                     .zip(self.values(quadratic))
-                    .map(|((s, w), v)| w * Self::kernel_at(kernel, self.eps, xi, *s) * v)
+                    .map(|((s, w), v)| w * kernel_fn(kernel, self.eps, xi, *s) * v)
                     .sum::<f64>()
             }
         }
+    }
+
+    /// `psi(xi)` by Nystrom interpolation.
+    fn value(&self, quadratic: bool, xi: f64) -> f64 {
+        let rhs = if quadratic { xi * xi } else { 1.0 };
+        self.interpolate(quadratic, xi, rhs, Self::kernel_at)
     }
 
     fn edge(&self, quadratic: bool) -> f64 {
@@ -230,18 +243,7 @@ impl Nystrom {
     /// `psi'(xi)`.
     fn slope(&self, quadratic: bool, xi: f64) -> f64 {
         let rhs = if quadratic { 2.0 * xi } else { 0.0 };
-        match &self.kernel {
-            None => rhs,
-            Some(kernel) => {
-                rhs + self
-                    .nodes
-                    .iter()
-                    .zip(&self.weights)
-                    .zip(self.values(quadratic))
-                    .map(|((s, w), v)| w * Self::kernel_slope(kernel, self.eps, xi, *s) * v)
-                    .sum::<f64>()
-            }
-        }
+        self.interpolate(quadratic, xi, rhs, Self::kernel_slope)
     }
 }
 

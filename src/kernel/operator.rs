@@ -308,6 +308,38 @@ impl ComplianceOperator {
         Ok(())
     }
 
+    /// Complex-to-real transforms of the first `count` rows of
+    /// `workspace.rows` into `workspace.real`.
+    fn inverse_rows(&mut self, count: usize) -> Result<()> {
+        let (_, n1) = self.size;
+        let half = n1 / 2 + 1;
+        let ws = &mut self.workspace;
+        let per_task = ws.rows_per_task;
+        let fft = &self.row_inverse;
+        for_each_chunk(
+            &mut ws.rows[..count * half],
+            per_task * half,
+            &mut ws.real[..count * n1],
+            per_task * n1,
+            &mut ws.scratch,
+            |spectrum, real, scratch| {
+                for (spectrum_row, row) in spectrum
+                    .chunks_exact_mut(half)
+                    .zip(real.chunks_exact_mut(n1))
+                {
+                    // A real signal has real DC and Nyquist terms; clear the rounding.
+                    spectrum_row[0].im = 0.0;
+                    if n1 % 2 == 0 {
+                        spectrum_row[half - 1].im = 0.0;
+                    }
+                    fft.process_with_scratch(spectrum_row, row, scratch)
+                        .map_err(fft_error)?;
+                }
+                Ok(())
+            },
+        )
+    }
+
     /// Real-to-complex transforms of the first `count` rows of
     /// `workspace.real` into `workspace.rows`.
     fn forward_rows(&mut self, count: usize) -> Result<()> {
@@ -457,30 +489,8 @@ impl ComplianceOperator {
         self.filter_columns(spectrum);
         let ws = &mut self.workspace;
         transpose::transpose(&ws.columns, &mut ws.rows, n0, half);
-        let per_task = ws.rows_per_task;
-        let fft = &self.row_inverse;
-        for_each_chunk(
-            &mut ws.rows[..rows * half],
-            per_task * half,
-            &mut ws.real[..rows * n1],
-            per_task * n1,
-            &mut ws.scratch,
-            |spectrum, real, scratch| {
-                for (spectrum_row, row) in spectrum
-                    .chunks_exact_mut(half)
-                    .zip(real.chunks_exact_mut(n1))
-                {
-                    // A real signal has real DC and Nyquist terms; clear the rounding.
-                    spectrum_row[0].im = 0.0;
-                    if n1 % 2 == 0 {
-                        spectrum_row[half - 1].im = 0.0;
-                    }
-                    fft.process_with_scratch(spectrum_row, row, scratch)
-                        .map_err(fft_error)?;
-                }
-                Ok(())
-            },
-        )?;
+        self.inverse_rows(rows)?;
+        let ws = &self.workspace;
         for (i, row) in ws.real.chunks_exact(n1).take(rows).enumerate() {
             displacement[i * columns..(i + 1) * columns].copy_from_slice(&row[..columns]);
         }

@@ -45,12 +45,7 @@ impl ContactSolver {
         let sigma_c = self.critical_stress(work);
         let n = self.grid().len();
         let columns = self.grid().columns();
-        let reachable: Vec<bool> = self
-            .workspace
-            .profile
-            .iter()
-            .map(|f| f.is_finite())
-            .collect();
+        let reachable = self.reachable();
         let mut attached: Vec<bool> = (0..n)
             .map(|c| {
                 reachable[c]

@@ -200,6 +200,15 @@ impl ContactSolver {
         Ok(lowest)
     }
 
+    /// Which cells the sampled indenter can reach (finite height).
+    fn reachable(&self) -> Vec<bool> {
+        self.workspace
+            .profile
+            .iter()
+            .map(|f| f.is_finite())
+            .collect()
+    }
+
     /// Assembles the solution from `pressure` (with the workspace holding
     /// the displacement of that pressure and the profile).
     fn solution(

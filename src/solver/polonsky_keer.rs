@@ -77,12 +77,7 @@ impl ContactSolver {
     ) -> Result<(Solution, WarmStart)> {
         let n = self.grid().len();
         let area = self.grid().cell_area();
-        let reachable: Vec<bool> = self
-            .workspace
-            .profile
-            .iter()
-            .map(|f| f.is_finite())
-            .collect();
+        let reachable = self.reachable();
         let self_coefficient = self.self_compliance()?;
         let mut pressure = self.initial_pressure(control, warm, &reachable, self_coefficient);
         if let Control::Force(w) = control {
