@@ -1,5 +1,6 @@
-//! Kernel construction and one operator application, N = 128 .. 1024
-//! (a 5 mm rubber film on glass, cells of 0.1 mm).
+//! Kernel construction (N = 128 .. 1024) and one operator application
+//! (N = 128 .. 2048; padded 4096 x 4096 for the largest), for a 5 mm rubber
+//! film on glass with cells of 0.1 mm.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::hint::black_box;
@@ -27,7 +28,7 @@ fn bench_kernel(c: &mut Criterion) {
 
     let mut group = c.benchmark_group("operator application (isolated, padded 2N x 2N)");
     group.sample_size(10);
-    for n in SIZES {
+    for n in SIZES.into_iter().chain([2048]) {
         let grid = Grid::new(n, n, 1e-4).unwrap();
         let mut operator = ComplianceOperator::new(&substrate, &grid, Boundary::Isolated).unwrap();
         let pressure: Vec<f64> = (0..grid.len()).map(|i| (i % 17) as f64).collect();

@@ -15,6 +15,10 @@
 //! 3. [`analytic`]: closed forms, series and exact solutions the solver is
 //!    checked against.
 //!
+//! [`scene`] ties them into experiments (substrate, indenter, adhesion,
+//! loading protocol, outputs) that serialize to TOML or JSON, and runs them
+//! to a requested accuracy. Guide pages: [`doc`].
+//!
 //! # Conventions
 //!
 //! * SI units throughout, `f64`.

@@ -270,6 +270,23 @@ fn adhesion_extremes() {
         );
         assert!(wet.contact_cells.abs_diff(dry.contact_cells) <= 8);
     }
+    // Past contact loss: pulling further from the detached state is no contact.
+    let punch = FlatPunch::new(1.5e-4).unwrap();
+    let (mut s, mut warm) = solver.solve_depth(&punch, 1e-7, None, &mut ()).unwrap();
+    let mut depth = 1e-7;
+    while s.contact_cells > 0 {
+        depth -= 2e-7;
+        (s, warm) = solver
+            .solve_depth_adhesive(&punch, depth, 0.05, Some(&warm), &mut ())
+            .unwrap();
+    }
+    for further in [2.0, 10.0, 1e6] {
+        let (past, _) = solver
+            .solve_depth_adhesive(&punch, further * depth, 0.05, Some(&warm), &mut ())
+            .unwrap();
+        assert_eq!((past.force, past.contact_cells), (0.0, 0));
+    }
+
     let scene = Scene {
         indenter: IndenterSpec::FlatPunch { radius: 1e-4 },
         adhesion: Adhesion::Constant {

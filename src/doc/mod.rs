@@ -3,7 +3,9 @@
 //! * [`conventions`]: units, signs, names.
 //! * [`theory`]: the coating factor, the Green's function and the influence coefficients.
 //! * [`axisymmetric`]: the exact axisymmetric solutions and their Fredholm equation.
+//! * [`accuracy`]: what each part achieves, and what it costs.
 
+pub mod accuracy;
 pub mod axisymmetric;
 pub mod conventions;
 pub mod theory;

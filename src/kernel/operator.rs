@@ -90,17 +90,19 @@ struct Workspace {
 }
 
 /// Tasks the row and column passes are split into: one per thread (with the
-/// `parallel` feature), else one. Each row or column is transformed by the
-/// same code whatever the split, so results do not depend on it.
-fn task_count() -> usize {
+/// `parallel` feature, and for grids of at least 2^16 padded cells, below
+/// which the fork costs more than it saves), else one. Each row or column is
+/// transformed by the same code whatever the split, so results do not depend
+/// on it.
+fn task_count(padded_cells: usize) -> usize {
     #[cfg(feature = "parallel")]
     {
-        rayon::current_num_threads().max(1)
+        if padded_cells >= 1 << 16 {
+            return rayon::current_num_threads().max(1);
+        }
     }
-    #[cfg(not(feature = "parallel"))]
-    {
-        1
-    }
+    let _ = padded_cells;
+    1
 }
 
 /// One task of the column pass: its columns, their multipliers, a scratch buffer.
@@ -174,7 +176,7 @@ impl ComplianceOperator {
         .into_iter()
         .max()
         .unwrap_or(0);
-        let tasks = task_count();
+        let tasks = task_count(size.0 * size.1);
         let workspace = Workspace {
             real: vec![0.0; size.0 * size.1],
             rows: vec![Complex::default(); size.0 * half],

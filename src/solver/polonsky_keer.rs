@@ -109,7 +109,7 @@ impl ContactSolver {
                 Control::Force(_) => 0.0,
             };
             let mut contact = 0usize;
-            let mut gap_sum = 0.0;
+            let (mut gap_sum, mut g_norm) = (0.0, 0.0);
             for c in 0..n {
                 ws.gap[c] = if reachable[c] {
                     ws.profile[c] - reference + ws.displacement[c]
@@ -119,6 +119,7 @@ impl ContactSolver {
                 if pressure[c] > 0.0 {
                     contact += 1;
                     gap_sum += ws.gap[c];
+                    g_norm += ws.gap[c] * ws.gap[c];
                 }
             }
             if contact == 0 {
@@ -133,17 +134,19 @@ impl ContactSolver {
                 continue;
             }
             if let Control::Force(_) = control {
+                // Gaps relative to the mean over the contact (the depth);
+                // the norm is recomputed, not corrected, to avoid cancellation.
                 depth = gap_sum / contact as f64;
-                for (g, r) in ws.gap.iter_mut().zip(&reachable) {
-                    if *r {
-                        *g -= depth;
+                g_norm = 0.0;
+                for c in 0..n {
+                    if reachable[c] {
+                        ws.gap[c] -= depth;
+                    }
+                    if pressure[c] > 0.0 {
+                        g_norm += ws.gap[c] * ws.gap[c];
                     }
                 }
             }
-            let g_norm: f64 = (0..n)
-                .filter(|&c| pressure[c] > 0.0)
-                .map(|c| ws.gap[c].powi(2))
-                .sum();
             for c in 0..n {
                 ws.direction[c] = if pressure[c] > 0.0 {
                     ws.gap[c] + delta * (g_norm / g_old) * ws.direction[c]
@@ -176,31 +179,38 @@ impl ContactSolver {
             } else {
                 0.0
             };
-            ws.previous.copy_from_slice(&pressure);
+            // One pass: step along the direction, clamp at zero, add new
+            // overlap (Polonsky & Keer's steps 7-9), and keep u = K p up to
+            // date: u += -step K t now, + K (correction) below, the
+            // correction being what clamping and overlap added to
+            // p - step t (`gap` holds it once read).
             let mut overlap = false;
-            for c in 0..n {
-                if pressure[c] > 0.0 {
-                    pressure[c] = (pressure[c] - step * ws.direction[c]).max(0.0);
-                }
+            let mut corrected = false;
+            let (mut change, mut size, mut contact_cells) = (0.0, 0.0, 0usize);
+            let force_control = matches!(control, Control::Force(_));
+            if force_control {
+                ws.previous.copy_from_slice(&pressure);
             }
             for c in 0..n {
-                if reachable[c] && pressure[c] == 0.0 && ws.gap[c] < 0.0 {
-                    pressure[c] = -step.max(0.0) * ws.gap[c];
-                    if pressure[c] <= 0.0 {
-                        pressure[c] = -ws.gap[c] / self_coefficient;
+                let old = pressure[c];
+                let stepped = old - step * ws.direction[c];
+                let mut new = if old > 0.0 { stepped.max(0.0) } else { 0.0 };
+                if reachable[c] && new == 0.0 && ws.gap[c] < 0.0 {
+                    new = -step.max(0.0) * ws.gap[c];
+                    if new <= 0.0 {
+                        new = -ws.gap[c] / self_coefficient;
                     }
                     overlap = true;
                 }
+                pressure[c] = new;
+                ws.displacement[c] -= step * (ws.response[c] + mean);
+                ws.gap[c] = new - stepped;
+                corrected |= ws.gap[c] != 0.0;
+                change += (new - old).abs();
+                size += new;
+                contact_cells += usize::from(new > 0.0);
             }
             delta = if overlap { 0.0 } else { 1.0 };
-            // u += -step K t + K (correction), the correction being what
-            // clamping and overlap added to p - step t (`gap` is free now).
-            let mut corrected = false;
-            for c in 0..n {
-                ws.displacement[c] -= step * (ws.response[c] + mean);
-                ws.gap[c] = pressure[c] - (ws.previous[c] - step * ws.direction[c]);
-                corrected |= ws.gap[c] != 0.0;
-            }
             if corrected {
                 self.operator.apply(&ws.gap, &mut ws.response)?;
                 for (u, k) in ws.displacement.iter_mut().zip(&ws.response) {
@@ -208,24 +218,23 @@ impl ContactSolver {
                 }
             }
             if let Control::Force(w) = control {
-                let total = area * pressure.iter().sum::<f64>();
+                let total = area * size;
                 if total > 0.0 {
                     rescale(&mut pressure, w / total);
                     rescale(&mut ws.displacement, w / total);
                 }
+                change = pressure
+                    .iter()
+                    .zip(&ws.previous)
+                    .map(|(a, b)| (a - b).abs())
+                    .sum();
+                size = pressure.iter().sum();
             }
-            let change: f64 = pressure
-                .iter()
-                .zip(&ws.previous)
-                .map(|(a, b)| (a - b).abs())
-                .sum();
-            let size: f64 = pressure.iter().map(|p| p.abs()).sum();
             residual = if size > 0.0 {
                 change / size
             } else {
                 f64::INFINITY
             };
-            let contact_cells = pressure.iter().filter(|p| **p > 0.0).count();
             observer.observe(&IterationInfo {
                 iteration,
                 residual,
