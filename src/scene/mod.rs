@@ -505,29 +505,26 @@ impl<'a> Runner<'a> {
         }
     }
 
-    /// One solve at `depth` (or force), warm-started from the last.
-    fn solve(&mut self, control: Control, phase: Phase) -> Result<Solution> {
+    /// One solve at `depth` (or force), warm-started from the last. With
+    /// adhesion the contact edge advances against the loading and recedes
+    /// against the unloading work of adhesion, in either phase.
+    fn solve(&mut self, control: Control) -> Result<Solution> {
         let warm = self.warm.as_ref();
-        let (solution, warm) = match (control, self.scene.adhesion.works()) {
-            (Control::Depth(d), None) => {
-                self.solver.solve_depth(self.indenter, d, warm, &mut ())?
-            }
-            (Control::Force(f), None) => {
-                self.solver.solve_force(self.indenter, f, warm, &mut ())?
-            }
-            (Control::Depth(d), Some((loading, unloading))) => {
-                let work = if phase == Phase::Loading {
-                    loading
-                } else {
-                    unloading
-                };
-                self.solver
-                    .solve_depth_adhesive(self.indenter, d, work, warm, &mut ())?
-            }
-            (Control::Force(_), Some(_)) => {
-                unreachable!("validated: adhesion needs displacement control")
-            }
-        };
+        let (solution, warm) =
+            match (control, self.scene.adhesion.works()) {
+                (Control::Depth(d), None) => {
+                    self.solver.solve_depth(self.indenter, d, warm, &mut ())?
+                }
+                (Control::Force(f), None) => {
+                    self.solver.solve_force(self.indenter, f, warm, &mut ())?
+                }
+                (Control::Depth(d), Some((loading, unloading))) => self
+                    .solver
+                    .solve_depth_hysteretic(self.indenter, d, loading, unloading, warm, &mut ())?,
+                (Control::Force(_), Some(_)) => {
+                    unreachable!("validated: adhesion needs displacement control")
+                }
+            };
         self.warm = Some(warm);
         Ok(solution)
     }
@@ -563,11 +560,11 @@ impl<'a> Runner<'a> {
     fn solve_peak(&mut self, control: Control) -> Result<Solution> {
         let fields = self.scene.outputs.fields;
         if fields == Fields::default() {
-            return self.solve(control, Phase::Loading);
+            return self.solve(control);
         }
         let params = *self.solver.params();
         self.solver.set_params(SolverParams { fields, ..params });
-        let result = self.solve(control, Phase::Loading);
+        let result = self.solve(control);
         self.solver.set_params(params);
         let solution = result?;
         self.peak = Some(solution.clone());
@@ -595,7 +592,7 @@ impl<'a> Runner<'a> {
                     let s = if k == steps {
                         self.solve_peak(control)?
                     } else {
-                        self.solve(control, Phase::Loading)?
+                        self.solve(control)?
                     };
                     if !self.record(s, Phase::Loading, progress) {
                         return Ok(Outcome::ReachedEdge);
@@ -618,7 +615,7 @@ impl<'a> Runner<'a> {
                     let s = if n == steps {
                         self.solve_peak(control)?
                     } else {
-                        self.solve(control, phase)?
+                        self.solve(control)?
                     };
                     if !self.record(s, phase, progress) {
                         return Ok(Outcome::ReachedEdge);
@@ -649,7 +646,7 @@ impl<'a> Runner<'a> {
         let limit = (MAX_PULL_DEPTHS * max_depth / increment).ceil() as usize + 1;
         for _ in 0..limit {
             let before = self.warm.clone();
-            let solution = self.solve(Control::Depth(depth - increment), Phase::Unloading)?;
+            let solution = self.solve(Control::Depth(depth - increment))?;
             let lost = solution.contact_cells == 0;
             let shrinks = solution.contact_cells < cells;
             if lost || (shrinks && !shrinking_refined) {
@@ -661,7 +658,7 @@ impl<'a> Runner<'a> {
                 }
                 shrinking_refined = true;
                 if lost {
-                    let s = self.solve(Control::Depth(depth - increment), Phase::Unloading)?;
+                    let s = self.solve(Control::Depth(depth - increment))?;
                     self.record(s, Phase::Unloading, progress);
                     return Ok(true);
                 }
@@ -701,7 +698,7 @@ impl<'a> Runner<'a> {
         for _ in 0..self.scene.solver.pull_off_bisections {
             let middle = 0.5 * (near + far);
             self.warm = near_state.clone();
-            let s = self.solve(Control::Depth(middle), Phase::Unloading)?;
+            let s = self.solve(Control::Depth(middle))?;
             let crossed = if to_loss {
                 s.contact_cells == 0
             } else {

@@ -6,30 +6,21 @@ use crate::indenter::Indenter;
 
 use super::{check_finite, ContactSolver, IterationInfo, Observer, Solution, WarmStart};
 
+/// How far beyond `sigma_c K(0,0)` a gap may be for a cell next to the
+/// contact to be tried: the near-tip gap of a crack at the critical stress
+/// intensity is about `sigma_c K(0,0)` one cell from the tip and grows like
+/// the square root of the distance, so the filter is loose and the solve
+/// that follows decides.
+const REACH_FACTOR: f64 = 4.0;
+
 impl ContactSolver {
-    /// Adhesive contact at `depth` (m) with work of adhesion
-    /// `work_of_adhesion` (J/m^2), in the JKR limit (SPEC section 2).
-    ///
-    /// The set of attached cells evolves from the warm start's (the history):
-    /// cells the indenter penetrates attach; an attached cell whose tension
-    /// exceeds the critical stress [`critical_stress`](Self::critical_stress)
-    /// detaches. On each attached set the displacement is prescribed
-    /// (`u = d - f`) and the pressures follow from a conjugate-gradient solve;
-    /// the set is updated until nothing attaches or detaches. Only cells on
-    /// the boundary of the attached set detach (the criterion stands for a
-    /// crack at the contact edge; interior tension never nucleates one in the
-    /// JKR limit). Pass the
-    /// loading value of the work of adhesion while the indenter advances and
-    /// the unloading value while it retracts.
-    ///
-    /// Growth is by penetration only: with zero-range adhesion an advancing
-    /// edge is not pulled ahead, so a monotonic loading branch follows the
-    /// non-adhesive one unless the contact recedes. When every cell has
-    /// detached the contact is lost: the solution has no contact and force 0.
+    /// Adhesive contact at `depth` (m) with one work of adhesion
+    /// `work_of_adhesion` (J/m^2) for advancing and receding contact: the
+    /// JKR limit of SPEC section 2. See
+    /// [`solve_depth_hysteretic`](Self::solve_depth_hysteretic).
     ///
     /// # Errors
-    /// As [`ContactSolver::solve_depth`], and [`Error::InvalidParameter`]
-    /// for a negative or non-finite work of adhesion.
+    /// As [`ContactSolver::solve_depth_hysteretic`].
     pub fn solve_depth_adhesive<I: Indenter + ?Sized>(
         &mut self,
         indenter: &I,
@@ -38,18 +29,78 @@ impl ContactSolver {
         warm: Option<&WarmStart>,
         observer: &mut dyn Observer,
     ) -> Result<(Solution, WarmStart)> {
-        check_finite("depth", depth)?;
         let work = crate::error::non_negative_finite("work_of_adhesion", work_of_adhesion)?;
+        self.solve_depth_hysteretic(indenter, depth, work, work, warm, observer)
+    }
+
+    /// Adhesive contact at `depth` (m) in the JKR limit with adhesion
+    /// hysteresis: the contact edge advances while the energy release rate is
+    /// below `advancing` (`dgamma0`, J/m^2) and recedes where it exceeds
+    /// `receding` (`dgamma1 >= dgamma0`), through the mesh-dependent critical
+    /// stress `sqrt(E1* dgamma / (0.473201 Delta))` of each
+    /// ([`critical_stress`](Self::critical_stress); Pohrt & Popov 2015).
+    ///
+    /// The set of attached cells evolves from the warm start's (the history).
+    /// On each attached set the displacement is prescribed (`u = d - f`) and
+    /// the pressures follow from a preconditioned conjugate-gradient solve;
+    /// then
+    ///
+    /// * cells over the receding critical tension that are connected to the
+    ///   contact edge through such cells detach (tension inside the contact
+    ///   never nucleates a crack in the JKR limit), and stay detached for the
+    ///   rest of this call;
+    /// * cells the indenter penetrates attach, and, while nothing has
+    ///   detached in this call (an edge that recedes does not also advance),
+    ///   so, tentatively, do cells next to the contact whose gap is below
+    ///   `sigma_c(advancing) K(0,0)` (a cell with a larger gap would carry
+    ///   more than the advancing critical tension once attached); after the
+    ///   next solve, tentative cells over the advancing critical tension are
+    ///   let go again, so the edge moves out only as far as it holds;
+    ///
+    /// until nothing changes. With zero work of adhesion this is the
+    /// non-adhesive contact. When every cell has detached the contact is
+    /// lost: the solution has no contact and force 0.
+    ///
+    /// # Errors
+    /// As [`ContactSolver::solve_depth`], and [`Error::InvalidParameter`]
+    /// for a negative or non-finite work of adhesion.
+    pub fn solve_depth_hysteretic<I: Indenter + ?Sized>(
+        &mut self,
+        indenter: &I,
+        depth: f64,
+        advancing: f64,
+        receding: f64,
+        warm: Option<&WarmStart>,
+        observer: &mut dyn Observer,
+    ) -> Result<(Solution, WarmStart)> {
+        check_finite("depth", depth)?;
+        let advancing =
+            crate::error::non_negative_finite("work_of_adhesion (advancing)", advancing)?;
+        let receding = crate::error::non_negative_finite("work_of_adhesion (receding)", receding)?;
         self.check_warm_start(warm)?;
         self.sample_profile(indenter)?;
-        let sigma_c = self.critical_stress(work);
+        let sigma_c = self.critical_stress(receding);
+        let sigma_advancing = self.critical_stress(advancing);
+        // A gap below this, next to the contact, may close and still hold.
+        let reach = REACH_FACTOR * sigma_advancing * self.self_compliance()?;
         let n = self.grid().len();
         let columns = self.grid().columns();
         let reachable = self.reachable();
+        // The history's attached cells, and the cells within half the depth
+        // of the indenter's lowest point (Hertz: the contact reaches f = d/2),
+        // from which the contact grows by penetration and advance (starting
+        // with every geometrically overlapping cell would make it recede).
+        let lowest = self
+            .workspace
+            .profile
+            .iter()
+            .cloned()
+            .fold(f64::INFINITY, f64::min);
         let mut attached: Vec<bool> = (0..n)
             .map(|c| {
+                let f = self.workspace.profile[c];
                 reachable[c]
-                    && (self.workspace.profile[c] < depth || warm.is_some_and(|w| w.attached[c]))
+                    && (warm.is_some_and(|w| w.attached[c]) || f - lowest < 0.5 * (depth - lowest))
             })
             .collect();
         let mut pressure: Vec<f64> = match warm {
@@ -59,6 +110,7 @@ impl ContactSolver {
             None => vec![0.0; n],
         };
         let mut released = vec![false; n];
+        let mut tentative = vec![false; n];
         let mut total_iterations = 0;
         let mut residual = 0.0;
         // Each round removes or adds at least one cell of a finite set, so
@@ -71,6 +123,26 @@ impl ContactSolver {
             total_iterations += iterations;
             residual = r;
             // Displacement of the converged pressure is in the workspace.
+            // Cells the edge advanced onto in the last round stay only if
+            // they hold against the advancing criterion; if any is let go,
+            // solve again before judging the rest.
+            let mut reverted = 0usize;
+            for c in 0..n {
+                if std::mem::take(&mut tentative[c]) && pressure[c] < -sigma_advancing {
+                    attached[c] = false;
+                    pressure[c] = 0.0;
+                    released[c] = true;
+                    reverted += 1;
+                }
+            }
+            if reverted > 0 {
+                observer.observe(&IterationInfo {
+                    iteration: round,
+                    residual,
+                    contact_cells: attached.iter().filter(|a| **a).count(),
+                });
+                continue;
+            }
             // Only cells connected to the boundary of the contact through
             // cells over the critical stress detach: the criterion stands for a
             // crack at the contact edge (SPEC section 2); tension inside the
@@ -83,16 +155,21 @@ impl ContactSolver {
                 pressure[c] = 0.0;
                 released[c] = true;
             }
+            let before = attached.clone();
             for c in 0..n {
                 // A cell released in this step stays released: the collocated
                 // surface of a small ring of cells in tension can overshoot the
                 // indenter, which would re-attach it and cycle.
-                if !attached[c]
-                    && !released[c]
-                    && reachable[c]
-                    && ws.profile[c] - depth + ws.displacement[c] < 0.0
-                {
+                if attached[c] || released[c] || !reachable[c] {
+                    continue;
+                }
+                let gap = ws.profile[c] - depth + ws.displacement[c];
+                if gap < 0.0 {
                     attached[c] = true;
+                    changed += 1;
+                } else if gap <= reach && next_to(&before, columns, c) {
+                    attached[c] = true;
+                    tentative[c] = true;
                     changed += 1;
                 }
             }
@@ -216,6 +293,16 @@ fn precondition(
         }
     }
     Ok(rz)
+}
+
+/// Whether cell `c` has an attached 4-neighbour.
+fn next_to(attached: &[bool], columns: usize, c: usize) -> bool {
+    let rows = attached.len() / columns;
+    let (i, j) = (c / columns, c % columns);
+    (i > 0 && attached[c - columns])
+        || (i + 1 < rows && attached[c + columns])
+        || (j > 0 && attached[c - 1])
+        || (j + 1 < columns && attached[c + 1])
 }
 
 /// Whether attached cell `c` has a detached (or missing) 4-neighbour.

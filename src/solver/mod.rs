@@ -8,12 +8,14 @@
 //!   231, 206), displacement-controlled variant;
 //! * [`ContactSolver::solve_force`]: non-adhesive contact at a given total
 //!   force, Polonsky & Keer's original force-controlled algorithm;
-//! * [`ContactSolver::solve_depth_adhesive`]: adhesive contact in the JKR
-//!   limit with the mesh-dependent detachment criterion of Pohrt & Popov
-//!   (2015, Facta Univ. Mech. Eng. 13, 3):
-//!   a cell in contact may carry tension down to
-//!   `-sigma_c = -sqrt(E1* dgamma / (0.473201 Delta))`; a cell whose tension
-//!   exceeds it detaches; a cell the indenter penetrates attaches.
+//! * [`ContactSolver::solve_depth_adhesive`] and
+//!   [`ContactSolver::solve_depth_hysteretic`]: adhesive contact in the JKR
+//!   limit with the mesh-dependent criterion of Pohrt & Popov (2015, Facta
+//!   Univ. Mech. Eng. 13, 3): a cell in contact may carry tension down to
+//!   `-sigma_c = -sqrt(E1* dgamma / (0.473201 Delta))`; an edge cell whose
+//!   tension exceeds it detaches (receding work of adhesion), and the edge
+//!   advances onto the cells next to it that can hold (advancing work of
+//!   adhesion) and onto every cell the indenter penetrates.
 //!
 //! Each solve may start from the [`WarmStart`] of the previous one, so a
 //! quasi-static curve costs little more than its hardest step, and for
