@@ -148,27 +148,22 @@ pub fn stiffness_rows(
             .cloned()
             .fold(0.0, f64::max);
         let exact = Axisymmetric::new(&film(h)?, 0.5 * max_d / h * 1.01)?;
-        for &d in &fine_d {
+        let row = |d: f64, bem: Option<f64>| -> Result<StiffnessRow, Error> {
             let radius = 0.5e-3 * d;
-            rows.push(StiffnessRow {
+            Ok(StiffnessRow {
                 h_mm: h,
                 d_mm: d,
                 eps: 0.5 * d / h,
                 series: series.evaluate(radius)?.ratio,
                 exact: exact.flat_punch(radius)?.ratio(),
-                bem: None,
-            });
+                bem,
+            })
+        };
+        for &d in &fine_d {
+            rows.push(row(d, None)?);
         }
         for &d in &config.stiffness_diameters_mm {
-            let radius = 0.5e-3 * d;
-            rows.push(StiffnessRow {
-                h_mm: h,
-                d_mm: d,
-                eps: 0.5 * d / h,
-                series: series.evaluate(radius)?.ratio,
-                exact: exact.flat_punch(radius)?.ratio(),
-                bem: Some(bem_ratio(h, d, config.cells_across_punch)?),
-            });
+            rows.push(row(d, Some(bem_ratio(h, d, config.cells_across_punch)?))?);
             progress();
         }
     }

@@ -38,6 +38,26 @@ fn tick(v: &f64) -> String {
     format!("{rounded}")
 }
 
+/// The legend box of a chart.
+fn legend<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
+    chart: &mut ChartContext<'a, DB, CT>,
+    size: u32,
+    position: SeriesLabelPosition,
+) -> Result<()>
+where
+    DB::ErrorType: 'static,
+{
+    chart
+        .configure_series_labels()
+        .label_font((FONT, size))
+        .position(position)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()
+        .map_err(|e| e.to_string())?;
+    Ok(())
+}
+
 fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
     let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
         (lo.min(v), hi.max(v))
@@ -116,13 +136,7 @@ pub fn stiffness(path: &Path, rows: &[StiffnessRow], config: &Config) -> Result<
             }
         }
     }
-    chart
-        .configure_series_labels()
-        .label_font((FONT, 14))
-        .position(SeriesLabelPosition::UpperLeft)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .draw()?;
+    legend(&mut chart, 14, SeriesLabelPosition::UpperLeft)?;
     root.present()?;
     Ok(())
 }
@@ -171,13 +185,7 @@ pub fn punch_curves(path: &Path, curves: &[(f64, f64, Curve)], config: &Config) 
                 }
             }
         }
-        chart
-            .configure_series_labels()
-            .label_font((FONT, 13))
-            .position(SeriesLabelPosition::UpperLeft)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .draw()?;
+        legend(&mut chart, 13, SeriesLabelPosition::UpperLeft)?;
     }
     root.present()?;
     Ok(())
@@ -285,17 +293,15 @@ pub fn sphere_curves(
                         PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(2))
                     });
             }
-            chart
-                .configure_series_labels()
-                .label_font((FONT, 12))
-                .position(if row == 0 {
+            legend(
+                &mut chart,
+                12,
+                if row == 0 {
                     SeriesLabelPosition::UpperLeft
                 } else {
                     SeriesLabelPosition::LowerRight
-                })
-                .background_style(WHITE.mix(0.85))
-                .border_style(BLACK)
-                .draw()?;
+                },
+            )?;
         }
     }
     root.present()?;
