@@ -76,6 +76,14 @@ pub enum Error {
         /// The smaller side of the grid, m.
         grid_extent: f64,
     },
+    /// A combination of options the library does not offer.
+    #[error("{feature} is not available: {reason}")]
+    Unsupported {
+        /// What was asked for.
+        feature: &'static str,
+        /// Why not, and what to use instead.
+        reason: &'static str,
+    },
     /// A failure inside the library that valid input should never cause;
     /// please report it.
     #[error("internal error in {what}: {detail}")]

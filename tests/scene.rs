@@ -198,13 +198,9 @@ fn invalid_scenes_are_typed_errors() {
         },
         ..film_punch(Protocol::Force { force: 1.0 })
     };
-    assert!(matches!(
-        scene.validate(),
-        Err(Error::InvalidParameter {
-            name: "protocol",
-            ..
-        })
-    ));
+    let err = scene.validate().unwrap_err();
+    assert!(matches!(err, Error::Unsupported { .. }));
+    assert!(err.to_string().contains("force control with adhesion"));
     let scene = Scene {
         adhesion: Adhesion::Hysteresis {
             loading: -1.0,

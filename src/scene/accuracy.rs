@@ -88,8 +88,9 @@ impl Scene {
     /// ```
     ///
     /// # Errors
-    /// [`Error::InvalidParameter`] for a target that is not positive or a
-    /// quantity the protocol does not produce; [`Error::NoConvergence`] if
+    /// [`Error::InvalidParameter`] for a target that is not positive;
+    /// [`Error::Unsupported`] for a quantity the protocol does not produce;
+    /// [`Error::NoConvergence`] if
     /// 1024 cells across do not reach the target; any error of the runs.
     pub fn converge(&self, quantity: Quantity, target: f64) -> Result<Converged> {
         crate::error::positive_finite("target", target)?;
@@ -104,10 +105,9 @@ impl Scene {
                 ..self.clone()
             };
             let curve = scene.run(&mut |_| {})?;
-            let value = quantity.of(&curve).ok_or(Error::InvalidParameter {
-                name: "quantity",
-                value: f64::NAN,
-                expected: "a quantity the scene's protocol produces",
+            let value = quantity.of(&curve).ok_or(Error::Unsupported {
+                feature: "this quantity for this protocol",
+                reason: "stiffness needs two loaded steps (a cycle), pull-off an adhesive cycle",
             })?;
             runs.push((cells, value));
             if let [.., coarse, fine] = runs.as_slice() {

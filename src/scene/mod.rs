@@ -233,10 +233,9 @@ impl Scene {
                 Protocol::Force { .. } | Protocol::ForceCycle { .. }
             )
         {
-            return Err(Error::InvalidParameter {
-                name: "protocol",
-                value: f64::NAN,
-                expected: "displacement control (depth or cycle) with adhesion",
+            return Err(Error::Unsupported {
+                feature: "force control with adhesion",
+                reason: "adhesive scenes are displacement-controlled (depth or cycle protocols)",
             });
         }
         if !(self.resolution.cells_across >= 2 && self.resolution.cells_across <= 8192) {
