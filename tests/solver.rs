@@ -10,6 +10,17 @@ fn rubber() -> Material {
     Material::new(1e6, 0.5).unwrap()
 }
 
+/// A solver on an `n x n` half-space grid of spacing `delta` with the
+/// tolerance the adhesive tests use.
+fn adhesive_solver(m: Material, n: usize, delta: f64) -> ContactSolver {
+    let grid = Grid::new(n, n, delta).unwrap();
+    let params = SolverParams {
+        tolerance: 1e-8,
+        ..SolverParams::default()
+    };
+    ContactSolver::new(&Substrate::half_space(m), &grid, Boundary::Isolated, params).unwrap()
+}
+
 fn solver(substrate: &Substrate, grid: &Grid) -> ContactSolver {
     ContactSolver::new(substrate, grid, Boundary::Isolated, SolverParams::default()).unwrap()
 }
@@ -175,13 +186,7 @@ fn sphere_pull_off_matches_jkr() {
     let delta = a_pull / 40.0;
     let a_max = 1.3 * a_pull;
     let n = (2.2 * a_max / delta) as usize;
-    let grid = Grid::new(n, n, delta).unwrap();
-    let params = SolverParams {
-        tolerance: 1e-8,
-        ..SolverParams::default()
-    };
-    let mut solver =
-        ContactSolver::new(&Substrate::half_space(m), &grid, Boundary::Isolated, params).unwrap();
+    let mut solver = adhesive_solver(m, n, delta);
     let ball = Paraboloid::new(r).unwrap();
     let d_max = a_max * a_max / r;
     let (mut s, mut warm) = solver.solve_depth(&ball, d_max, None, &mut ()).unwrap();
@@ -393,13 +398,7 @@ fn sphere_loading_follows_jkr_and_hysteresis_opens_a_loop() {
     let delta = a_pull / 20.0;
     let d_max = (1.3 * a_pull).powi(2) / r;
     let n = (2.4 * jkr.contact_radius_at_depth(d_max).unwrap() / delta) as usize;
-    let grid = Grid::new(n, n, delta).unwrap();
-    let params = SolverParams {
-        tolerance: 1e-8,
-        ..SolverParams::default()
-    };
-    let mut solver =
-        ContactSolver::new(&Substrate::half_space(m), &grid, Boundary::Isolated, params).unwrap();
+    let mut solver = adhesive_solver(m, n, delta);
     let ball = Paraboloid::new(r).unwrap();
     let mut warm = None;
     let mut loaded = None;

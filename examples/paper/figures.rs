@@ -58,6 +58,42 @@ where
     Ok(())
 }
 
+/// A panel of force against depth with labelled axes.
+fn force_depth_chart<'a, DB: DrawingBackend + 'a>(
+    panel: &'a DrawingArea<DB, plotters::coord::Shift>,
+    caption: String,
+    x: (f64, f64),
+    y: (f64, f64),
+) -> Result<
+    ChartContext<
+        'a,
+        DB,
+        Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+    >,
+>
+where
+    DB::ErrorType: 'static,
+{
+    let mut chart = ChartBuilder::on(panel)
+        .caption(caption, (FONT, 20))
+        .margin(10)
+        .x_label_area_size(45)
+        .y_label_area_size(60)
+        .build_cartesian_2d(x.0..x.1, y.0..y.1)
+        .map_err(|e| e.to_string())?;
+    chart
+        .configure_mesh()
+        .x_desc("depth d [mm]")
+        .y_desc("force F [N]")
+        .x_label_formatter(&tick)
+        .y_label_formatter(&tick)
+        .label_style((FONT, 14))
+        .axis_desc_style((FONT, 16))
+        .draw()
+        .map_err(|e| e.to_string())?;
+    Ok(chart)
+}
+
 fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
     let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
         (lo.min(v), hi.max(v))
@@ -154,21 +190,8 @@ pub fn punch_curves(path: &Path, curves: &[(f64, f64, Curve)], config: &Config) 
                 .flat_map(|c| c.2.steps.iter().map(|s| s.depth * 1e3)),
         );
         let (y0, y1) = range(mine.iter().flat_map(|c| c.2.steps.iter().map(|s| s.force)));
-        let mut chart = ChartBuilder::on(panel)
-            .caption(format!("flat punch D = {d} mm"), (FONT, 20))
-            .margin(10)
-            .x_label_area_size(45)
-            .y_label_area_size(60)
-            .build_cartesian_2d(x0..x1, y0..y1)?;
-        chart
-            .configure_mesh()
-            .x_desc("depth d [mm]")
-            .y_desc("force F [N]")
-            .x_label_formatter(&tick)
-            .y_label_formatter(&tick)
-            .label_style((FONT, 14))
-            .axis_desc_style((FONT, 16))
-            .draw()?;
+        let mut chart =
+            force_depth_chart(panel, format!("flat punch D = {d} mm"), (x0, x1), (y0, y1))?;
         for (i, (h, _, curve)) in mine.iter().enumerate() {
             let color = palette(i);
             for phase in [Phase::Loading, Phase::Unloading] {
@@ -237,21 +260,7 @@ pub fn sphere_curves(
         .enumerate()
         {
             let panel = &panels[row * columns + column];
-            let mut chart = ChartBuilder::on(panel)
-                .caption(caption, (FONT, 20))
-                .margin(10)
-                .x_label_area_size(45)
-                .y_label_area_size(60)
-                .build_cartesian_2d(x_range.0..x_range.1, y_range.0..y_range.1)?;
-            chart
-                .configure_mesh()
-                .x_desc("depth d [mm]")
-                .y_desc("force F [N]")
-                .x_label_formatter(&tick)
-                .y_label_formatter(&tick)
-                .label_style((FONT, 14))
-                .axis_desc_style((FONT, 16))
-                .draw()?;
+            let mut chart = force_depth_chart(panel, caption, x_range, y_range)?;
             let mut index = 0;
             for (_, h, dgamma, curve) in &mine {
                 let standard = (*dgamma - crate::experiment::DGAMMA_PUNCH).abs() < 1e-12;
