@@ -116,6 +116,13 @@ fn lambda_matches_spec_formula() {
     ));
 }
 
+/// Huge orders return at once: `|a_m| ~ m^2 4^-m` underflows beyond m ~ 530.
+#[test]
+fn huge_moment_orders_underflow_quickly() {
+    assert!(a_m(500, 0.3).unwrap().abs() < 1e-290);
+    assert_eq!(a_m(u32::MAX, 0.3).unwrap(), 0.0);
+}
+
 /// Higher moments against an independent quadrature of `lambda_spec` times
 /// `(u/2)^(2m) / (m!)^2` with a different rule (40 points on panels of 0.5),
 /// to 1e-12.

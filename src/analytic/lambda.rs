@@ -56,6 +56,9 @@ pub fn lambda_g(t: f64, layer: &Material, base: &Base) -> f64 {
     CoatingFunctions::new(layer, base).lambda(t)
 }
 
+/// Beyond this order `|a_m|` (about `m^2 4^-m`) underflows `f64`.
+const UNDERFLOW_ORDER: u32 = 560;
+
 /// Panel width and order of the composite Gauss-Legendre rule for `a_m`.
 const PANEL_WIDTH: f64 = 1.0;
 const PANEL_ORDER: usize = 24;
@@ -69,7 +72,8 @@ const PANEL_ORDER: usize = 24;
 /// logarithms and multiplied by `e^(2u) Lambda(u)`, so nothing overflows for
 /// any `m`. Relative accuracy: `2e-15` for `m <= 2` against 80-digit
 /// references (tests), degrading like `1e-16 m ln m` for large `m` through
-/// the logarithms.
+/// the logarithms. Since `|a_m|` falls like `m^2 4^-m`, it is 0 in `f64`
+/// beyond `m = 560` (returned at once).
 ///
 /// ```
 /// use layered_contact::analytic::a_m;
@@ -86,6 +90,10 @@ const PANEL_ORDER: usize = 24;
 /// panels (not observed).
 pub fn a_m(m: u32, nu: f64) -> Result<f64> {
     let functions = CoatingFunctions::rigid_base(nu)?;
+    if m > UNDERFLOW_ORDER {
+        // |a_m| ~ m^2 / 4^m is below the smallest subnormal f64.
+        return Ok(0.0);
+    }
     let order = NonZeroUsize::new(PANEL_ORDER).expect("order is positive");
     let rule = GaussLegendre::new(order);
     let mf = f64::from(m);

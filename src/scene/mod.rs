@@ -434,8 +434,11 @@ fn exact_contact_radius(
     hertz: f64,
 ) -> Option<f64> {
     let upper = (2.0 * hertz).min(radius);
-    let exact =
-        crate::analytic::Axisymmetric::new(substrate, (upper / thickness).min(1000.0)).ok()?;
+    let exact = crate::analytic::Axisymmetric::new(
+        substrate,
+        (upper / thickness).min(crate::analytic::Axisymmetric::MAX_RADIUS_OVER_THICKNESS),
+    )
+    .ok()?;
     let ball = exact.paraboloid(radius, 0.0).ok()?;
     let value = |a: f64| {
         ball.at_contact_radius(a)
