@@ -114,9 +114,10 @@ impl JkrSphere {
 
     /// The contact radius at `depth` on the branch that is stable under
     /// displacement control (`a >= a_c`), or `None` once the contact has
-    /// jumped off (`d < d_c`). Found by bisection to full precision.
+    /// jumped off (`d < d_c`) or for a depth that is not finite. Found by
+    /// bisection to full precision.
     pub fn contact_radius_at_depth(&self, depth: f64) -> Option<f64> {
-        if depth.is_nan() || depth < self.critical_depth() {
+        if !depth.is_finite() || depth < self.critical_depth() {
             return None;
         }
         let mut lo = self.critical_contact_radius();
