@@ -52,7 +52,7 @@ impl Config {
             punch_depth: 0.2e-3,
             sphere_depth: 0.5e-3,
             cells_across_punch: 80,
-            cells_across_sphere: 96,
+            cells_across_sphere: 128,
             steps: 20,
         }
     }
@@ -61,7 +61,7 @@ impl Config {
     pub fn fine() -> Self {
         Config {
             cells_across_punch: 160,
-            cells_across_sphere: 160,
+            cells_across_sphere: 192,
             steps: 50,
             ..Self::standard()
         }
