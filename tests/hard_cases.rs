@@ -26,6 +26,11 @@ fn coated(layer: Material, h: f64, base: Base) -> Substrate {
     }
 }
 
+/// An isolated solver with default parameters.
+fn isolated_solver(substrate: &Substrate, grid: &Grid) -> ContactSolver {
+    ContactSolver::new(substrate, grid, Boundary::Isolated, SolverParams::default()).unwrap()
+}
+
 fn bases() -> Vec<Base> {
     vec![
         Base::Rigid,
@@ -190,13 +195,7 @@ fn one_cell_contacts() {
     let m = Material::new(1e6, 0.3).unwrap();
     for substrate in [Substrate::half_space(m), coated(m, 1e-4, Base::Rigid)] {
         let grid = Grid::new(1, 1, 1e-4).unwrap();
-        let mut solver = ContactSolver::new(
-            &substrate,
-            &grid,
-            Boundary::Isolated,
-            SolverParams::default(),
-        )
-        .unwrap();
+        let mut solver = isolated_solver(&substrate, &grid);
         let k00 = solver.operator().influence().unwrap().self_coefficient();
         let (s, _) = solver
             .solve_depth(&FlatPunch::new(1.0).unwrap(), 1e-6, None, &mut ())
@@ -205,13 +204,7 @@ fn one_cell_contacts() {
         assert_eq!(s.contact_cells, 1);
 
         let grid = Grid::new(9, 9, 1e-4).unwrap();
-        let mut solver = ContactSolver::new(
-            &substrate,
-            &grid,
-            Boundary::Isolated,
-            SolverParams::default(),
-        )
-        .unwrap();
+        let mut solver = isolated_solver(&substrate, &grid);
         let k00 = solver.operator().influence().unwrap().self_coefficient();
         let depth = 1e-9; // far below the height of the next ring of cells
         let (s, _) = solver
@@ -227,13 +220,7 @@ fn one_cell_contacts() {
 fn extremely_large_depth() {
     let m = Material::new(1e6, 0.5).unwrap();
     let grid = Grid::new(12, 12, 2e-4).unwrap();
-    let mut solver = ContactSolver::new(
-        &coated(m, 1e-3, Base::Rigid),
-        &grid,
-        Boundary::Isolated,
-        SolverParams::default(),
-    )
-    .unwrap();
+    let mut solver = isolated_solver(&coated(m, 1e-3, Base::Rigid), &grid);
     let punch = FlatPunch::new(1e-3).unwrap();
     let (small, _) = solver.solve_depth(&punch, 1e-6, None, &mut ()).unwrap();
     let (huge, _) = solver.solve_depth(&punch, 1e3, None, &mut ()).unwrap();
@@ -251,13 +238,7 @@ fn extremely_large_depth() {
 fn adhesion_extremes() {
     let m = Material::new(1e6, 0.5).unwrap();
     let grid = Grid::new(24, 24, 2e-5).unwrap();
-    let mut solver = ContactSolver::new(
-        &Substrate::half_space(m),
-        &grid,
-        Boundary::Isolated,
-        SolverParams::default(),
-    )
-    .unwrap();
+    let mut solver = isolated_solver(&Substrate::half_space(m), &grid);
     let ball = Sphere::new(0.01).unwrap();
     let (dry, _) = solver.solve_depth(&ball, 2e-6, None, &mut ()).unwrap();
     for work in [0.0, 1e-12] {
@@ -451,7 +432,7 @@ proptest! {
         let substrate = spec.build().unwrap();
         let shape = shape.build(None).unwrap();
         let grid = Grid::new(n, n + 1, 10f64.powf(log_spacing)).unwrap();
-        let mut solver = ContactSolver::new(&substrate, &grid, Boundary::Isolated, SolverParams::default()).unwrap();
+        let mut solver = isolated_solver(&substrate, &grid);
         let d = 10f64.powf(log_depth);
         let first = solver.solve_depth(&shape, d, None, &mut ());
         let second = solver.solve_depth(&shape, 2.0 * d, None, &mut ());
