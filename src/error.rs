@@ -93,6 +93,38 @@ pub enum Error {
         /// Its message.
         detail: String,
     },
+    /// The contact reaches the edge of an isolated grid (or the grid leaves
+    /// too little room around it), so the result would be truncated: use a
+    /// wider grid.
+    #[error("the contact reaches the grid's edge ({cells} cells in contact): {detail}")]
+    ContactReachesEdge {
+        /// Cells in the contact (or in the largest usable set).
+        cells: usize,
+        /// What reached the edge.
+        detail: &'static str,
+    },
+    /// A computed quantity is not finite (overflow or underflow in the
+    /// input's scales); no result is returned rather than a NaN or an
+    /// infinity.
+    #[error("{what} produced a non-finite value ({value})")]
+    NonFinite {
+        /// The computation.
+        what: &'static str,
+        /// The value it produced.
+        value: f64,
+    },
+    /// Under force control, no equilibrium exists at the requested force:
+    /// an adhesive contact pulled beyond its pull-off force, or a pull on an
+    /// indenter that is not in contact.
+    #[error(
+        "no equilibrium at force {force} N: the least force the contact can hold is {least} N"
+    )]
+    NoEquilibrium {
+        /// The requested force, N.
+        force: f64,
+        /// The least (most tensile) force with an equilibrium, N.
+        least: f64,
+    },
     /// An iterative method stopped before reaching its tolerance.
     #[error("{method} did not converge after {iterations} iterations (residual {residual:e})")]
     NoConvergence {

@@ -289,7 +289,9 @@ fn adhesion_extremes() {
             residual,
             ..
         }) => {
-            assert_eq!(iterations, 41);
+            // Two loading steps, then increments that double beyond -max_depth
+            // up to -20 max_depth: a few dozen evaluations, not 20 steps.
+            assert!(iterations < 40, "{iterations} steps");
             assert!(residual < -1e-6);
         }
         other => panic!("expected NoConvergence, got {other:?}"),

@@ -2,7 +2,7 @@
 
 use layered_contact::indenter::FlatPunch;
 use layered_contact::scene::{
-    Adhesion, IndenterSpec, Outputs, Phase, Protocol, Resolution, Scene, SubstrateSpec,
+    Adhesion, AdhesionMethod, IndenterSpec, Outputs, Phase, Protocol, Resolution, Scene, SubstrateSpec,
 };
 use layered_contact::solver::{ContactSolver, Fields, SolverParams};
 use layered_contact::{Boundary, Error};
@@ -192,15 +192,33 @@ fn invalid_scenes_are_typed_errors() {
         scene.run(&mut |_| {}),
         Err(Error::InvalidParameter { name: "steps", .. })
     ));
-    let scene = Scene {
+    // Adhesive force control is the energy balance's; the mesh-dependent
+    // criterion refuses it.
+    let mut scene = Scene {
         adhesion: Adhesion::Constant {
             work_of_adhesion: 0.1,
         },
         ..film_punch(Protocol::Force { force: 1.0 })
     };
+    scene.validate().unwrap();
+    scene.solver.adhesion_method = AdhesionMethod::MeshCriterion;
     let err = scene.validate().unwrap_err();
     assert!(matches!(err, Error::Unsupported { .. }));
-    assert!(err.to_string().contains("force control with adhesion"));
+    assert!(err
+        .to_string()
+        .contains("force control with the mesh-dependent adhesion criterion"));
+    // dgamma0 > dgamma1 is refused (issue 12, finding 13).
+    let scene = Scene {
+        adhesion: Adhesion::Hysteresis {
+            loading: 0.2,
+            unloading: 0.1,
+        },
+        ..film_punch(Protocol::Depth { depth: 1e-6 })
+    };
+    assert!(matches!(
+        scene.validate(),
+        Err(Error::InvalidParameter { value, .. }) if value == 0.2
+    ));
     let scene = Scene {
         adhesion: Adhesion::Hysteresis {
             loading: -1.0,
@@ -215,11 +233,35 @@ fn invalid_scenes_are_typed_errors() {
         Err(Error::InvalidParameter { name: "depth", .. })
     ));
     scene.protocol = Protocol::Depth { depth: 1e-6 };
-    scene.resolution.cells_across = 1;
+    // Fewer than 8 cells cannot describe a contact (finding 13: 2 was
+    // accepted and gave a meaningless answer).
+    for cells in [1, 2, 7] {
+        scene.resolution.cells_across = cells;
+        assert!(matches!(
+            scene.validate(),
+            Err(Error::InvalidParameter {
+                name: "cells_across",
+                ..
+            })
+        ));
+    }
+    scene.resolution.cells_across = 8;
+    scene.validate().unwrap();
+    // A margin of 1e15 made the FFT-size search loop forever (finding 2).
+    for margin in [11.0, 1e15, 1e300] {
+        scene.resolution.margin = margin;
+        assert!(matches!(
+            scene.validate(),
+            Err(Error::InvalidParameter { name: "margin", value, .. }) if value == margin
+        ));
+    }
+    scene.resolution.margin = 0.0;
+    // Unbounded bisections looped forever and grew memory (finding 3).
+    scene.solver.pull_off_bisections = usize::MAX;
     assert!(matches!(
         scene.validate(),
         Err(Error::InvalidParameter {
-            name: "cells_across",
+            name: "pull_off_bisections",
             ..
         })
     ));

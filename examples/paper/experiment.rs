@@ -35,7 +35,8 @@ pub struct Config {
     pub sphere_depth: f64,
     /// Cells across a punch for the stiffness.
     pub cells_across_punch: usize,
-    /// Cells across the largest sphere contact.
+    /// Cells across the smallest sphere contact to resolve (the pull-off
+    /// contact, or the peak's if smaller).
     pub cells_across_sphere: usize,
     /// Loading increments of each curve.
     pub steps: usize,
@@ -52,7 +53,7 @@ impl Config {
             punch_depth: 0.2e-3,
             sphere_depth: 0.5e-3,
             cells_across_punch: 80,
-            cells_across_sphere: 128,
+            cells_across_sphere: 32,
             steps: 20,
         }
     }
@@ -61,7 +62,7 @@ impl Config {
     pub fn fine() -> Self {
         Config {
             cells_across_punch: 160,
-            cells_across_sphere: 192,
+            cells_across_sphere: 64,
             steps: 50,
             ..Self::standard()
         }

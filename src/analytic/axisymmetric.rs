@@ -466,9 +466,9 @@ impl LayeredFlatPunch {
 /// A paraboloid on the coated half-space, as functions of the contact radius.
 #[derive(Debug, Clone, Copy)]
 pub struct LayeredParaboloid<'a> {
-    body: &'a Axisymmetric,
-    sphere_radius: f64,
-    work_of_adhesion: f64,
+    pub(super) body: &'a Axisymmetric,
+    pub(super) sphere_radius: f64,
+    pub(super) work_of_adhesion: f64,
 }
 
 /// One equilibrium state of a paraboloid contact.
@@ -504,6 +504,14 @@ impl LayeredParaboloid<'_> {
         let curvature = a * a / self.sphere_radius;
         let adhesive = (2.0 * PI * a * self.work_of_adhesion / e).sqrt();
         let depth = (curvature * solution.edge(true) - adhesive) / solution.edge(false);
+        self.state_at_depth(a, depth, solution)
+    }
+
+    /// The state with contact radius `a` held fixed at `depth` (a contact
+    /// pinned by adhesion hysteresis): the force is linear in the depth.
+    fn state_at_depth(&self, a: f64, depth: f64, solution: &Nystrom) -> ContactState {
+        let e = self.body.contact_modulus;
+        let curvature = a * a / self.sphere_radius;
         let force =
             2.0 * e * a * (depth * solution.integral(false) - curvature * solution.integral(true));
         ContactState {
@@ -522,6 +530,17 @@ impl LayeredParaboloid<'_> {
     pub fn at_contact_radius(&self, contact_radius: f64) -> Result<ContactState> {
         let (a, solution) = self.solved(contact_radius)?;
         Ok(self.state(a, &solution))
+    }
+
+    /// The state of a contact of radius `a` (m) held fixed at `depth` (m),
+    /// as when adhesion hysteresis pins the edge: not an equilibrium of the
+    /// edge unless `depth` is [`at_contact_radius`](Self::at_contact_radius)'s.
+    ///
+    /// # Errors
+    /// As [`LayeredParaboloid::at_contact_radius`].
+    pub fn pinned(&self, contact_radius: f64, depth: f64) -> Result<ContactState> {
+        let (a, solution) = self.solved(contact_radius)?;
+        Ok(self.state_at_depth(a, depth, &solution))
     }
 
     /// The pressure at radius `r` in the equilibrium of contact radius `a`, Pa.

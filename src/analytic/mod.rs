@@ -9,7 +9,8 @@
 //! | [`Hertz`] | sphere (paraboloid) on a half-space | Hertz (1882); Johnson (1985) |
 //! | [`JkrSphere`] | adhesive sphere on a half-space | Johnson, Kendall & Roberts (1971) |
 //! | [`Cone`] | conical punch on a half-space | Sneddon (1965) |
-//! | [`Axisymmetric`] | exact flat punch and paraboloid (JKR) on a coated half-space | Fredholm equation, [`doc::axisymmetric`](crate::doc::axisymmetric) |
+//! | [`Axisymmetric`] | exact flat punch and paraboloid (JKR) on a coated half-space, by contact radius, depth or force | Fredholm equation, [`doc::axisymmetric`](crate::doc::axisymmetric) |
+//! | [`LayeredJkrCycle`] | exact loading and unloading of a paraboloid with adhesion hysteresis | Johnson, Kendall & Roberts (1971); Maugis (2000) |
 //!
 //! Every type here is built by a validating constructor (a typed
 //! [`Error`](crate::Error) for bad input) and then evaluated by infallible
@@ -23,6 +24,7 @@ pub mod series;
 mod cone;
 mod hertz;
 mod jkr;
+mod layered_jkr;
 mod punch;
 
 pub use axisymmetric::{Axisymmetric, ContactState, LayeredFlatPunch, LayeredParaboloid, PullOff};
@@ -30,5 +32,6 @@ pub use cone::Cone;
 pub use hertz::Hertz;
 pub use jkr::JkrSphere;
 pub use lambda::{a_m, lambda, lambda_g};
+pub use layered_jkr::LayeredJkrCycle;
 pub use punch::{FlatPunch, JkrFlatPunch};
 pub use series::{PunchStiffnessSeries, SeriesStiffness};

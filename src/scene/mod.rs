@@ -36,6 +36,9 @@
 
 mod accuracy;
 mod curve;
+mod energy;
+mod runner;
+mod sizing;
 mod spec;
 
 pub use accuracy::{richardson, Converged, Quantity};
@@ -44,8 +47,10 @@ pub use spec::{Adhesion, IndenterSpec, SubstrateSpec, Tilt};
 
 use crate::error::{positive_finite, Error, Result};
 use crate::grid::{Boundary, Grid};
-use crate::indenter::Indenter;
-use crate::solver::{ContactSolver, Fields, Solution, SolverParams, WarmStart};
+use crate::solver::{ContactSolver, Fields, SolverParams};
+
+use runner::{Outcome, Runner};
+use sizing::fft_friendly;
 
 /// How the indenter is driven.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -60,24 +65,35 @@ pub enum Protocol {
         /// Depth, m.
         depth: f64,
     },
-    /// One non-adhesive solve at total force `force` (N).
+    /// One solve at total force `force` (N, `>= 0`); with adhesion (energy
+    /// balance) the load-controlled JKR state reached by pressing in from
+    /// no contact, which at zero force is the state the contact jumps into.
     Force {
         /// Force, N.
         force: f64,
     },
     /// Displacement control: from depth 0 to `max_depth` in `steps` equal
-    /// increments, then back out with the same increment until the contact
-    /// is lost; the pull-off depth is located by bisection. A contact still
-    /// attached at `-20 max_depth` ends the run with
-    /// [`Error::NoConvergence`].
+    /// increments, then back out from the peak with the same increment
+    /// until the contact is lost (doubling the increment beyond
+    /// `-max_depth`). With the energy-balance adhesion method the pull-off
+    /// (least force) and the jump-off (least depth) are added as exact
+    /// steps of the unloading branch; with the mesh-dependent criterion the
+    /// depths where the contact first shrinks and where it is lost are
+    /// located by bisection. A contact still attached at `-20 max_depth`
+    /// ends the run with [`Error::NoConvergence`].
     Cycle {
         /// Maximum depth, m.
         max_depth: f64,
         /// Increments of the loading branch.
         steps: usize,
     },
-    /// Force control (non-adhesive): up to `max_force` in `steps`
-    /// increments and back down to zero.
+    /// Force control: up to `max_force` in `steps` increments and back down
+    /// to zero. With adhesion (energy-balance method) the contact jumps in at
+    /// zero force, follows the advancing branch up, stays pinned and then
+    /// recedes on the way down, and the unloading goes on into tension with
+    /// the same increment until the pull-off force, which is added as an
+    /// exact step (the jump-off under load control), followed by a step
+    /// without contact.
     ForceCycle {
         /// Maximum force, N.
         max_force: f64,
@@ -126,8 +142,32 @@ pub struct SolverSettings {
     pub tolerance: f64,
     /// See [`SolverParams::max_iterations`].
     pub max_iterations: usize,
-    /// Bisection steps that locate the pull-off depth of a cycle.
+    /// Bisection steps that locate the pull-off depth of a cycle (mesh-dependent
+    /// criterion), at most 60.
     pub pull_off_bisections: usize,
+    /// How adhesion is solved.
+    pub adhesion_method: AdhesionMethod,
+}
+
+/// How an adhesive scene decides where the contact edge stands.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+pub enum AdhesionMethod {
+    /// The energy (Griffith) balance over the contact edge along a family of
+    /// contact sets ([`ContactSolver::adhesive_branches`]): converges
+    /// smoothly like `1/N` (0.36 % at 64 cells across a sphere's pull-off
+    /// contact), displacement or force control, a whole cycle for the price
+    /// of one family. The edge-averaged balance: exact for axisymmetric
+    /// contacts; refuses contacts that split into patches.
+    #[default]
+    EnergyBalance,
+    /// The mesh-dependent critical stress of Pohrt & Popov (2015), cell by
+    /// cell ([`ContactSolver::solve_depth_hysteretic`]): the method of the
+    /// reference experiments' simulations, for any contact shape, but
+    /// converging slowly (about `3/N` relative error in a sphere's pull-off
+    /// force). Displacement control only.
+    MeshCriterion,
 }
 
 impl Default for SolverSettings {
@@ -136,6 +176,7 @@ impl Default for SolverSettings {
             tolerance: 1e-8,
             max_iterations: 10_000,
             pull_off_bisections: 10,
+            adhesion_method: AdhesionMethod::default(),
         }
     }
 }
@@ -193,11 +234,14 @@ impl Default for Scene {
 }
 
 /// Bounds on a scene's work, so that no input can run forever.
-const MAX_PROTOCOL_STEPS: usize = 100_000;
+pub(super) const MAX_PROTOCOL_STEPS: usize = 100_000;
 /// Unloading past zero depth stops after this many times the loading depth
 /// (a contact so sticky that it holds beyond is reported, not followed forever).
-const MAX_PULL_DEPTHS: f64 = 20.0;
+pub(super) const MAX_PULL_DEPTHS: f64 = 20.0;
 const MAX_GRID_GROWTH: usize = 4;
+const MIN_CELLS_ACROSS: usize = 8;
+const MAX_MARGIN: f64 = 10.0;
+const MAX_BISECTIONS: usize = 60;
 
 impl Scene {
     /// Checks the scene without solving it.
@@ -210,6 +254,13 @@ impl Scene {
         if let Some((loading, unloading)) = self.adhesion.works() {
             crate::error::non_negative_finite("work_of_adhesion (loading)", loading)?;
             crate::error::non_negative_finite("work_of_adhesion (unloading)", unloading)?;
+            if loading > unloading {
+                return Err(Error::InvalidParameter {
+                    name: "work_of_adhesion (loading)",
+                    value: loading,
+                    expected: "at most the unloading work of adhesion (dgamma0 <= dgamma1)",
+                });
+            }
         }
         match self.protocol {
             Protocol::Depth { depth } => {
@@ -228,115 +279,41 @@ impl Scene {
             }
         }
         if self.adhesion != Adhesion::None
+            && self.solver.adhesion_method == AdhesionMethod::MeshCriterion
             && matches!(
                 self.protocol,
                 Protocol::Force { .. } | Protocol::ForceCycle { .. }
             )
         {
             return Err(Error::Unsupported {
-                feature: "force control with adhesion",
-                reason: "adhesive scenes are displacement-controlled (depth or cycle protocols)",
+                feature: "force control with the mesh-dependent adhesion criterion",
+                reason: "use the energy-balance method (the default) for adhesive force control",
             });
         }
-        if !(self.resolution.cells_across >= 2 && self.resolution.cells_across <= 8192) {
+        if !(MIN_CELLS_ACROSS..=8192).contains(&self.resolution.cells_across) {
             return Err(Error::InvalidParameter {
                 name: "cells_across",
                 value: self.resolution.cells_across as f64,
-                expected: "between 2 and 8192",
+                expected: "between 8 and 8192 (fewer cells cannot describe a contact)",
             });
         }
-        crate::error::non_negative_finite("margin", self.resolution.margin)?;
-        positive_finite("tolerance", self.solver.tolerance)?;
-        Ok(())
-    }
-
-    /// The radius (m) of the largest contact the protocol should reach, for
-    /// sizing the grid.
-    fn contact_radius_estimate(&self) -> Result<f64> {
-        let substrate = self.substrate.build()?;
-        let softest = match &substrate {
-            crate::substrate::Substrate::HalfSpace(m) => m.contact_modulus(),
-            crate::substrate::Substrate::Coated(c) => match c.base() {
-                crate::substrate::Base::Elastic(b) => {
-                    b.contact_modulus().min(c.layer().contact_modulus())
-                }
-                crate::substrate::Base::Rigid => c.layer().contact_modulus(),
-            },
-        };
-        Ok(match (self.indenter, self.protocol) {
-            (IndenterSpec::FlatPunch { radius }, _) => radius,
-            (IndenterSpec::Sphere { radius } | IndenterSpec::Paraboloid { radius }, protocol) => {
-                let (target, by_force) = match protocol {
-                    Protocol::Depth { depth } => (depth.abs(), false),
-                    Protocol::Cycle { max_depth, .. } => (max_depth, false),
-                    Protocol::Force { force } => (force, true),
-                    Protocol::ForceCycle { max_force, .. } => (max_force, true),
-                };
-                let hertz = if by_force {
-                    (0.75 * target * radius / softest).cbrt()
-                } else {
-                    (radius * target).sqrt()
-                };
-                let estimate = match &substrate {
-                    crate::substrate::Substrate::Coated(coating) => exact_contact_radius(
-                        &substrate,
-                        coating.thickness(),
-                        radius,
-                        target,
-                        by_force,
-                        hertz,
-                    )
-                    .unwrap_or(1.5 * hertz),
-                    crate::substrate::Substrate::HalfSpace(_) => hertz,
-                };
-                estimate.min(radius).max(f64::MIN_POSITIVE)
-            }
-            (
-                IndenterSpec::Cone {
-                    half_angle,
-                    base_radius,
-                },
-                protocol,
-            ) => {
-                let depth = match protocol {
-                    Protocol::Depth { depth } => depth.abs(),
-                    Protocol::Cycle { max_depth, .. } => max_depth,
-                    Protocol::Force { force }
-                    | Protocol::ForceCycle {
-                        max_force: force, ..
-                    } => (0.5 * std::f64::consts::PI * force / (softest * half_angle.tan())).sqrt(),
-                };
-                (2.0 * depth * half_angle.tan() / std::f64::consts::PI).min(base_radius)
-            }
-        })
-    }
-
-    /// The grid the scene is solved on (before any growth).
-    ///
-    /// # Errors
-    /// As [`Scene::validate`].
-    ///
-    /// Grid sizes are rounded up to products of 2, 3, 5 and 7 (fast FFTs).
-    /// For a flat punch (untilted or not) the spacing is adjusted within 2 %
-    /// of `2a / cells_across` so that the cells whose centres lie on the
-    /// punch have the punch's area: the staircase punch then has the right
-    /// radius on average, and the stiffness converges smoothly like `1/N`
-    /// instead of oscillating with the staircase.
-    pub fn grid(&self) -> Result<Grid> {
-        self.validate()?;
-        let radius = self.contact_radius_estimate()?;
-        let n = self.resolution.cells_across;
-        match self.indenter {
-            IndenterSpec::FlatPunch { radius } => {
-                let cells = fft_friendly(n + 2);
-                Grid::new(cells, cells, equal_area_spacing(radius, n, cells))
-            }
-            _ => {
-                let cells = (n as f64 * (1.0 + 2.0 * self.resolution.margin)).ceil() as usize;
-                let cells = fft_friendly(cells);
-                Grid::new(cells, cells, 2.0 * radius / n as f64)
-            }
+        let margin = crate::error::non_negative_finite("margin", self.resolution.margin)?;
+        if margin > MAX_MARGIN {
+            return Err(Error::InvalidParameter {
+                name: "margin",
+                value: margin,
+                expected: "at most 10 contact diameters",
+            });
         }
+        positive_finite("tolerance", self.solver.tolerance)?;
+        if self.solver.pull_off_bisections > MAX_BISECTIONS {
+            return Err(Error::InvalidParameter {
+                name: "pull_off_bisections",
+                value: self.solver.pull_off_bisections as f64,
+                expected: "at most 60 (2^-60 of an increment is below f64 resolution)",
+            });
+        }
+        Ok(())
     }
 
     /// A solver for this scene's substrate on `grid`.
@@ -384,7 +361,13 @@ impl Scene {
         let mut grown: Option<ContactSolver> = None;
         for _ in 0..=MAX_GRID_GROWTH {
             let active = grown.as_mut().unwrap_or(&mut *solver);
-            match Runner::new(self, active, &indenter).run(progress)? {
+            let outcome = match (self.adhesion.works(), self.solver.adhesion_method) {
+                (Some(works), AdhesionMethod::EnergyBalance) => {
+                    energy::run(self, active, &*indenter, works, progress)?
+                }
+                _ => Runner::new(self, active, &indenter).run(progress)?,
+            };
+            match outcome {
                 Outcome::Done(curve) => return Ok(*curve),
                 Outcome::ReachedEdge => {
                     let grid = *active.grid();
@@ -401,84 +384,6 @@ impl Scene {
     }
 }
 
-/// The smallest number of cells `>= n` whose prime factors are 2, 3, 5 and 7
-/// only: FFTs of such (padded) lengths are several times faster than of
-/// lengths with a large prime factor.
-fn fft_friendly(n: usize) -> usize {
-    (n.max(1)..)
-        .find(|&m| {
-            let mut rest = m;
-            for p in [2, 3, 5, 7] {
-                while rest % p == 0 {
-                    rest /= p;
-                }
-            }
-            rest == 1
-        })
-        .unwrap_or(n)
-}
-
-/// A spacing within 2 % of `2 radius / n` for which the cells of a
-/// `cells`-square grid whose centres lie within `radius` of its centre cover
-/// the disc's area most closely.
-fn equal_area_spacing(radius: f64, n: usize, cells: usize) -> f64 {
-    let half = 0.5 * cells as f64;
-    let area_error = |spacing: f64| {
-        let inside = (0..cells * cells)
-            .filter(|c| {
-                let x = ((c / cells) as f64 + 0.5 - half) * spacing;
-                let y = ((c % cells) as f64 + 0.5 - half) * spacing;
-                x.hypot(y) <= radius
-            })
-            .count() as f64;
-        (inside * spacing * spacing / (std::f64::consts::PI * radius * radius) - 1.0).abs()
-    };
-    let nominal = 2.0 * radius / n as f64;
-    (0..=80)
-        .map(|k| nominal * (0.98 + 0.0005 * k as f64))
-        .min_by(|a, b| area_error(*a).total_cmp(&area_error(*b)))
-        .unwrap_or(nominal)
-}
-
-/// The contact radius of a paraboloid of tip radius `radius` at depth (or
-/// force) `target` on a coated substrate, from the exact axisymmetric
-/// solution (bisection on the contact radius); `None` if it cannot be found
-/// (then the caller falls back to Hertz).
-fn exact_contact_radius(
-    substrate: &crate::substrate::Substrate,
-    thickness: f64,
-    radius: f64,
-    target: f64,
-    by_force: bool,
-    hertz: f64,
-) -> Option<f64> {
-    let upper = (2.0 * hertz).min(radius);
-    let exact = crate::analytic::Axisymmetric::new(
-        substrate,
-        (upper / thickness).min(crate::analytic::Axisymmetric::MAX_RADIUS_OVER_THICKNESS),
-    )
-    .ok()?;
-    let ball = exact.paraboloid(radius, 0.0).ok()?;
-    let value = |a: f64| {
-        ball.at_contact_radius(a)
-            .ok()
-            .map(|s| if by_force { s.force } else { s.depth })
-    };
-    if value(upper)? < target {
-        return Some(upper);
-    }
-    let (mut lo, mut hi) = (0.0, upper);
-    for _ in 0..40 {
-        let mid = 0.5 * (lo + hi);
-        if value(mid)? < target {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    Some(hi)
-}
-
 fn check_steps(steps: usize) -> Result<()> {
     if (1..=MAX_PROTOCOL_STEPS).contains(&steps) {
         Ok(())
@@ -489,260 +394,4 @@ fn check_steps(steps: usize) -> Result<()> {
             expected: "between 1 and 100000",
         })
     }
-}
-
-enum Outcome {
-    Done(Box<Curve>),
-    ReachedEdge,
-}
-
-/// The state of one run of a scene.
-struct Runner<'a> {
-    scene: &'a Scene,
-    solver: &'a mut ContactSolver,
-    indenter: &'a dyn Indenter,
-    steps: Vec<Step>,
-    peak: Option<Solution>,
-    warm: Option<WarmStart>,
-    /// Whether curved-indenter contacts must stay off the grid's edge.
-    watch_edge: bool,
-}
-
-impl<'a> Runner<'a> {
-    fn new(
-        scene: &'a Scene,
-        solver: &'a mut ContactSolver,
-        indenter: &'a (dyn Indenter + Send + Sync),
-    ) -> Self {
-        Runner {
-            scene,
-            solver,
-            indenter,
-            steps: Vec::new(),
-            peak: None,
-            warm: None,
-            watch_edge: !matches!(scene.indenter, IndenterSpec::FlatPunch { .. })
-                && scene.boundary == Boundary::Isolated,
-        }
-    }
-
-    /// One solve at `depth` (or force), warm-started from the last. With
-    /// adhesion the contact edge advances against the loading and recedes
-    /// against the unloading work of adhesion, in either phase.
-    fn solve(&mut self, control: Control) -> Result<Solution> {
-        let warm = self.warm.as_ref();
-        let (solution, warm) =
-            match (control, self.scene.adhesion.works()) {
-                (Control::Depth(d), None) => {
-                    self.solver.solve_depth(self.indenter, d, warm, &mut ())?
-                }
-                (Control::Force(f), None) => {
-                    self.solver.solve_force(self.indenter, f, warm, &mut ())?
-                }
-                (Control::Depth(d), Some((loading, unloading))) => self
-                    .solver
-                    .solve_depth_hysteretic(self.indenter, d, loading, unloading, warm, &mut ())?,
-                (Control::Force(_), Some(_)) => {
-                    unreachable!("validated: adhesion needs displacement control")
-                }
-            };
-        self.warm = Some(warm);
-        Ok(solution)
-    }
-
-    fn touches_edge(&self) -> bool {
-        let Some(warm) = &self.warm else { return false };
-        let grid = self.solver.grid();
-        let (rows, columns) = (grid.rows(), grid.columns());
-        (0..rows * columns).any(|c| {
-            let (i, j) = (c / columns, c % columns);
-            (i == 0 || j == 0 || i + 1 == rows || j + 1 == columns) && warm.is_attached(c)
-        })
-    }
-
-    /// Records a step; false if the contact reached the grid's edge.
-    fn record(
-        &mut self,
-        solution: Solution,
-        phase: Phase,
-        progress: &mut dyn FnMut(&Step),
-    ) -> bool {
-        if self.watch_edge && self.touches_edge() {
-            return false;
-        }
-        let step = Step::new(phase, &solution);
-        progress(&step);
-        self.steps.push(step);
-        true
-    }
-
-    /// [`Runner::solve`] at the most loaded point: keeps the requested fields
-    /// of this very solve as the curve's peak.
-    fn solve_peak(&mut self, control: Control) -> Result<Solution> {
-        let fields = self.scene.outputs.fields;
-        if fields == Fields::default() {
-            return self.solve(control);
-        }
-        let params = *self.solver.params();
-        self.solver.set_params(SolverParams { fields, ..params });
-        let result = self.solve(control);
-        self.solver.set_params(params);
-        let solution = result?;
-        self.peak = Some(solution.clone());
-        Ok(solution)
-    }
-
-    fn run(mut self, progress: &mut dyn FnMut(&Step)) -> Result<Outcome> {
-        match self.scene.protocol {
-            Protocol::Depth { depth } => {
-                let s = self.solve_peak(Control::Depth(depth))?;
-                if !self.record(s, Phase::Loading, progress) {
-                    return Ok(Outcome::ReachedEdge);
-                }
-            }
-            Protocol::Force { force } => {
-                let s = self.solve_peak(Control::Force(force))?;
-                if !self.record(s, Phase::Loading, progress) {
-                    return Ok(Outcome::ReachedEdge);
-                }
-            }
-            Protocol::Cycle { max_depth, steps } => {
-                let increment = max_depth / steps as f64;
-                for k in 0..=steps {
-                    let control = Control::Depth(k as f64 * increment);
-                    let s = if k == steps {
-                        self.solve_peak(control)?
-                    } else {
-                        self.solve(control)?
-                    };
-                    if !self.record(s, Phase::Loading, progress) {
-                        return Ok(Outcome::ReachedEdge);
-                    }
-                }
-                if !self.unload(max_depth, increment, progress)? {
-                    return Ok(Outcome::ReachedEdge);
-                }
-            }
-            Protocol::ForceCycle { max_force, steps } => {
-                let increment = max_force / steps as f64;
-                let forces = (0..=steps).chain((0..steps).rev());
-                for (n, k) in forces.enumerate() {
-                    let phase = if n <= steps {
-                        Phase::Loading
-                    } else {
-                        Phase::Unloading
-                    };
-                    let control = Control::Force(k as f64 * increment);
-                    let s = if n == steps {
-                        self.solve_peak(control)?
-                    } else {
-                        self.solve(control)?
-                    };
-                    if !self.record(s, phase, progress) {
-                        return Ok(Outcome::ReachedEdge);
-                    }
-                }
-            }
-        }
-        Ok(Outcome::Done(Box::new(Curve {
-            steps: self.steps,
-            grid: *self.solver.grid(),
-            peak: self.peak,
-        })))
-    }
-
-    /// Retracts from `max_depth` by `increment` until the contact is lost.
-    /// The step in which the contact first shrinks and the step in which it
-    /// is lost are each refined by bisection, so that the pull-off force is
-    /// found even when the curve turns within one increment.
-    fn unload(
-        &mut self,
-        max_depth: f64,
-        increment: f64,
-        progress: &mut dyn FnMut(&Step),
-    ) -> Result<bool> {
-        let mut depth = max_depth;
-        let mut cells = self.last_contact_cells();
-        let mut shrinking_refined = false;
-        let limit = (MAX_PULL_DEPTHS * max_depth / increment).ceil() as usize + 1;
-        for _ in 0..limit {
-            let before = self.warm.clone();
-            let solution = self.solve(Control::Depth(depth - increment))?;
-            let lost = solution.contact_cells == 0;
-            let shrinks = solution.contact_cells < cells;
-            if lost || (shrinks && !shrinking_refined) {
-                // Bisect between `depth` (state `before`) and `depth - increment`.
-                let after = self.warm.take();
-                self.warm = before;
-                if !self.bisect(depth, depth - increment, cells, lost, progress)? {
-                    return Ok(false);
-                }
-                shrinking_refined = true;
-                if lost {
-                    let s = self.solve(Control::Depth(depth - increment))?;
-                    self.record(s, Phase::Unloading, progress);
-                    return Ok(true);
-                }
-                self.warm = after;
-            }
-            depth -= increment;
-            cells = solution.contact_cells;
-            if !self.record(solution, Phase::Unloading, progress) {
-                return Ok(false);
-            }
-        }
-        Err(Error::NoConvergence {
-            method:
-                "unloading to contact loss (still attached 20 loading depths above the surface)",
-            iterations: limit,
-            residual: depth,
-        })
-    }
-
-    fn last_contact_cells(&self) -> usize {
-        self.warm.as_ref().map_or(0, WarmStart::attached_cells)
-    }
-
-    /// Bisects `(lower, upper)` for the depth where the contact first holds
-    /// fewer than `cells` cells (or none, if `to_loss`), recording the states
-    /// on the near side. Leaves the warm start at the last such state.
-    fn bisect(
-        &mut self,
-        upper: f64,
-        lower: f64,
-        cells: usize,
-        to_loss: bool,
-        progress: &mut dyn FnMut(&Step),
-    ) -> Result<bool> {
-        let (mut near, mut far) = (upper, lower);
-        let mut near_state = self.warm.clone();
-        for _ in 0..self.scene.solver.pull_off_bisections {
-            let middle = 0.5 * (near + far);
-            self.warm = near_state.clone();
-            let s = self.solve(Control::Depth(middle))?;
-            let crossed = if to_loss {
-                s.contact_cells == 0
-            } else {
-                s.contact_cells < cells
-            };
-            if crossed {
-                far = middle;
-            } else {
-                near = middle;
-                near_state = self.warm.clone();
-                if !self.record(s, Phase::Unloading, progress) {
-                    return Ok(false);
-                }
-            }
-        }
-        self.warm = near_state;
-        Ok(true)
-    }
-}
-
-/// The prescribed quantity of one solve.
-#[derive(Clone, Copy)]
-enum Control {
-    Depth(f64),
-    Force(f64),
 }

@@ -204,10 +204,28 @@ impl ContactSolver {
     /// the final relative residual.
     ///
     /// [`ComplianceOperator::precondition`]: crate::kernel::ComplianceOperator::precondition
-    fn clamped_solve(
+    pub(super) fn clamped_solve(
         &mut self,
         depth: f64,
         attached: &[bool],
+        pressure: &mut [f64],
+    ) -> Result<(usize, f64)> {
+        let mut target = std::mem::take(&mut self.workspace.target);
+        for (t, f) in target.iter_mut().zip(&self.workspace.profile) {
+            *t = depth - f;
+        }
+        let result = self.clamped_cg(attached, &target, pressure);
+        self.workspace.target = target;
+        result
+    }
+
+    /// Preconditioned conjugate gradients for the pressures on the attached
+    /// cells whose displacement there is `target` (pressure 0 elsewhere),
+    /// starting from `pressure`. See [`clamped_solve`](Self::clamped_solve).
+    pub(super) fn clamped_cg(
+        &mut self,
+        attached: &[bool],
+        target: &[f64],
         pressure: &mut [f64],
     ) -> Result<(usize, f64)> {
         let n = pressure.len();
@@ -220,7 +238,7 @@ impl ContactSolver {
         let mut r_norm = 0.0;
         for c in 0..n {
             if attached[c] {
-                let b = depth - ws.profile[c];
+                let b = target[c];
                 b_norm += b * b;
                 ws.gap[c] = b - ws.displacement[c];
                 r_norm += ws.gap[c] * ws.gap[c];

@@ -30,6 +30,7 @@
 #![allow(clippy::needless_range_loop)]
 
 mod adhesive;
+mod griffith;
 mod params;
 mod polonsky_keer;
 
@@ -41,6 +42,7 @@ use crate::indenter::Indenter;
 use crate::kernel::ComplianceOperator;
 use crate::substrate::Substrate;
 
+pub use griffith::{AdhesiveBranches, BranchPoint, Reach, EDGE_SHIFT};
 pub use params::{Fields, IterationInfo, Observer, Solution, SolverParams, WarmStart};
 
 /// The constant of the mesh-dependent critical stress (Pohrt & Popov 2015).
@@ -91,6 +93,8 @@ struct Workspace {
     direction: Vec<f64>,
     response: Vec<f64>,
     previous: Vec<f64>,
+    /// Prescribed displacements of a clamped solve.
+    target: Vec<f64>,
 }
 
 impl ContactSolver {
@@ -139,6 +143,7 @@ impl ContactSolver {
                 direction: vec![0.0; n],
                 response: vec![0.0; n],
                 previous: vec![0.0; n],
+                target: vec![0.0; n],
             },
         })
     }
@@ -297,6 +302,27 @@ impl ContactSolver {
             _ => Ok(()),
         }
     }
+}
+
+/// A solution whose scalars are all finite, else [`Error::NonFinite`]: no
+/// NaN or infinity leaves a solver inside an `Ok`.
+pub(crate) fn check_solution(solution: &Solution) -> Result<()> {
+    for value in [
+        solution.depth,
+        solution.force,
+        solution.moment.0,
+        solution.moment.1,
+        solution.contact_area,
+        solution.residual,
+    ] {
+        if !value.is_finite() {
+            return Err(Error::NonFinite {
+                what: "contact solution",
+                value,
+            });
+        }
+    }
+    Ok(())
 }
 
 pub(crate) fn check_finite(name: &'static str, value: f64) -> Result<f64> {

@@ -1,0 +1,218 @@
+//! Adhesive scenes by the energy balance over the contact edge: the
+//! branches are built once per scene ([`ContactSolver::adhesive_branches`]),
+//! and every step of the protocol is then an evaluation on them.
+
+use crate::error::{Error, Result};
+use crate::indenter::Indenter;
+use crate::solver::{AdhesiveBranches, BranchPoint, ContactSolver, Reach, SolverParams};
+
+use super::runner::Outcome;
+use super::{Curve, Phase, Protocol, Scene, Step, MAX_PROTOCOL_STEPS, MAX_PULL_DEPTHS};
+
+/// Runs an adhesive `scene` with works `(advancing, receding)` on `solver`.
+pub(super) fn run(
+    scene: &Scene,
+    solver: &mut ContactSolver,
+    indenter: &(dyn Indenter + Send + Sync),
+    (advancing, receding): (f64, f64),
+    progress: &mut dyn FnMut(&Step),
+) -> Result<Outcome> {
+    let reach = match scene.protocol {
+        Protocol::Depth { depth } => Reach::Depth(depth),
+        Protocol::Cycle { max_depth, .. } => Reach::Depth(max_depth),
+        Protocol::Force { force } => Reach::Force(force),
+        Protocol::ForceCycle { max_force, .. } => Reach::Force(max_force),
+    };
+    let mut recorder = Recorder {
+        steps: Vec::new(),
+        progress,
+        iterations: 0,
+    };
+    if let Reach::Depth(depth) = reach {
+        if depth <= solver.lowest_height(indenter)? {
+            // The indenter never touches: every step is free.
+            recorder.free(Phase::Loading, depth);
+            return Ok(done(solver, recorder.steps, None));
+        }
+    }
+    let branches = match solver.adhesive_branches(indenter, reach, advancing, receding, &mut ()) {
+        Err(Error::ContactReachesEdge { .. }) => return Ok(Outcome::ReachedEdge),
+        other => other?,
+    };
+    recorder.iterations = branches.iterations();
+    let peak = match scene.protocol {
+        Protocol::Depth { depth } => {
+            recorder.record(Phase::Loading, branches.at_depth(depth, 0.0)?)
+        }
+        Protocol::Force { force } => {
+            recorder.record(Phase::Loading, branches.at_force(force, 0.0)?)
+        }
+        Protocol::Cycle { max_depth, steps } => cycle(&branches, &mut recorder, max_depth, steps)?,
+        Protocol::ForceCycle { max_force, steps } => {
+            force_cycle(&branches, &mut recorder, max_force, steps)?
+        }
+    };
+    let fields = scene.outputs.fields;
+    let peak_solution = if fields == crate::solver::Fields::default() {
+        None
+    } else {
+        let params = *solver.params();
+        solver.set_params(SolverParams { fields, ..params });
+        let solution = solver.branch_solution(indenter, &branches, &peak);
+        solver.set_params(params);
+        Some(solution?)
+    };
+    Ok(done(solver, recorder.steps, peak_solution))
+}
+
+fn done(
+    solver: &ContactSolver,
+    steps: Vec<Step>,
+    peak: Option<crate::solver::Solution>,
+) -> Outcome {
+    Outcome::Done(Box::new(Curve {
+        steps,
+        grid: *solver.grid(),
+        peak,
+    }))
+}
+
+/// Collects steps and reports each.
+struct Recorder<'p> {
+    steps: Vec<Step>,
+    progress: &'p mut dyn FnMut(&Step),
+    /// Iterations not yet attributed to a step (the branches' cost goes to
+    /// the first step).
+    iterations: usize,
+}
+
+impl Recorder<'_> {
+    fn record(&mut self, phase: Phase, point: BranchPoint) -> BranchPoint {
+        let step = Step {
+            phase,
+            depth: point.depth,
+            force: point.force,
+            contact_area: point.contact_area,
+            contact_radius: point.contact_radius,
+            iterations: std::mem::take(&mut self.iterations),
+        };
+        (self.progress)(&step);
+        self.steps.push(step);
+        point
+    }
+
+    fn free(&mut self, phase: Phase, depth: f64) {
+        self.record(
+            phase,
+            BranchPoint {
+                depth,
+                force: 0.0,
+                contact_area: 0.0,
+                contact_radius: 0.0,
+            },
+        );
+    }
+}
+
+/// Displacement-controlled loading and unloading; returns the peak.
+fn cycle(
+    branches: &AdhesiveBranches,
+    recorder: &mut Recorder,
+    max_depth: f64,
+    steps: usize,
+) -> Result<BranchPoint> {
+    let increment = max_depth / steps as f64;
+    let mut area = 0.0;
+    let mut peak = None;
+    for k in 0..=steps {
+        let point = branches.at_depth(k as f64 * increment, area)?;
+        area = point.contact_area;
+        peak = Some(recorder.record(Phase::Loading, point));
+    }
+    let peak = peak.ok_or(Error::Internal {
+        what: "adhesive cycle",
+        detail: "no loading step".into(),
+    })?;
+    // Unloading starts at the peak itself, so that the loop closes.
+    recorder.record(Phase::Unloading, peak);
+    // Exact points of the receding branch: the least force if it lies on the
+    // path (above the jump-off), and the jump-off.
+    let mut exact = Vec::new();
+    if area > 0.0 {
+        let jump = branches.jump_off(area)?;
+        let pull = branches.pull_off(area)?;
+        if pull.contact_area > jump.contact_area && pull.depth > jump.depth {
+            exact.push(pull);
+        }
+        exact.push(jump);
+    }
+    let mut exact = exact.into_iter().peekable();
+    let mut depth = max_depth;
+    let mut step = increment;
+    for _ in 0..MAX_PROTOCOL_STEPS {
+        if depth < -max_depth {
+            step *= 2.0;
+        }
+        depth -= step;
+        let point = branches.at_depth(depth, area)?;
+        while let Some(e) = exact.next_if(|e| e.depth > point.depth && e.contact_area <= area) {
+            recorder.record(Phase::Unloading, e);
+        }
+        area = point.contact_area;
+        recorder.record(Phase::Unloading, point);
+        if area == 0.0 {
+            return Ok(peak);
+        }
+        if depth < -MAX_PULL_DEPTHS * max_depth {
+            break;
+        }
+    }
+    Err(Error::NoConvergence {
+        method: "unloading to contact loss (still attached 20 loading depths above the surface)",
+        iterations: recorder.steps.len(),
+        residual: depth,
+    })
+}
+
+/// Load-controlled loading and unloading to the pull-off; returns the peak.
+fn force_cycle(
+    branches: &AdhesiveBranches,
+    recorder: &mut Recorder,
+    max_force: f64,
+    steps: usize,
+) -> Result<BranchPoint> {
+    let increment = max_force / steps as f64;
+    let mut area = 0.0;
+    let mut peak = None;
+    for k in 0..=steps {
+        // At zero force the contact jumps in.
+        let point = branches.at_force(k as f64 * increment, area)?;
+        area = point.contact_area;
+        peak = Some(recorder.record(Phase::Loading, point));
+    }
+    let peak = peak.ok_or(Error::Internal {
+        what: "adhesive force cycle",
+        detail: "no loading step".into(),
+    })?;
+    recorder.record(Phase::Unloading, peak);
+    for k in 1..=MAX_PROTOCOL_STEPS {
+        let force = max_force - k as f64 * increment;
+        match branches.at_force(force, area) {
+            Ok(point) => {
+                area = point.contact_area;
+                recorder.record(Phase::Unloading, point);
+            }
+            Err(Error::NoEquilibrium { .. }) => {
+                let pull = recorder.record(Phase::Unloading, branches.pull_off(area)?);
+                recorder.free(Phase::Unloading, pull.depth);
+                return Ok(peak);
+            }
+            Err(e) => return Err(e),
+        }
+    }
+    Err(Error::NoConvergence {
+        method: "load-controlled unloading to the pull-off",
+        iterations: MAX_PROTOCOL_STEPS,
+        residual: area,
+    })
+}

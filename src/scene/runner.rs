@@ -1,0 +1,282 @@
+//! The step-by-step runner: non-adhesive protocols and adhesive ones with
+//! the mesh-dependent criterion, one warm-started solve per step.
+
+use crate::error::{Error, Result};
+use crate::grid::Boundary;
+use crate::indenter::Indenter;
+use crate::solver::{ContactSolver, Fields, Solution, SolverParams, WarmStart};
+
+use super::{Curve, IndenterSpec, Phase, Protocol, Scene, Step, MAX_PULL_DEPTHS};
+
+pub(super) enum Outcome {
+    Done(Box<Curve>),
+    ReachedEdge,
+}
+
+/// The state of one run of a scene.
+pub(super) struct Runner<'a> {
+    scene: &'a Scene,
+    solver: &'a mut ContactSolver,
+    indenter: &'a dyn Indenter,
+    steps: Vec<Step>,
+    peak: Option<Solution>,
+    warm: Option<WarmStart>,
+    /// Whether curved-indenter contacts must stay off the grid's edge.
+    watch_edge: bool,
+}
+
+impl<'a> Runner<'a> {
+    pub(super) fn new(
+        scene: &'a Scene,
+        solver: &'a mut ContactSolver,
+        indenter: &'a (dyn Indenter + Send + Sync),
+    ) -> Self {
+        Runner {
+            scene,
+            solver,
+            indenter,
+            steps: Vec::new(),
+            peak: None,
+            warm: None,
+            watch_edge: !matches!(scene.indenter, IndenterSpec::FlatPunch { .. })
+                && scene.boundary == Boundary::Isolated,
+        }
+    }
+
+    /// One solve at `depth` (or force), warm-started from the last. With
+    /// adhesion the contact edge advances against the loading and recedes
+    /// against the unloading work of adhesion, in either phase.
+    fn solve(&mut self, control: Control) -> Result<Solution> {
+        let warm = self.warm.as_ref();
+        let (solution, warm) =
+            match (control, self.scene.adhesion.works()) {
+                (Control::Depth(d), None) => {
+                    self.solver.solve_depth(self.indenter, d, warm, &mut ())?
+                }
+                (Control::Force(f), None) => {
+                    self.solver.solve_force(self.indenter, f, warm, &mut ())?
+                }
+                (Control::Depth(d), Some((loading, unloading))) => self
+                    .solver
+                    .solve_depth_hysteretic(self.indenter, d, loading, unloading, warm, &mut ())?,
+                (Control::Force(_), Some(_)) => {
+                    return Err(Error::Unsupported {
+                        feature: "force control with the mesh-dependent adhesion criterion",
+                        reason: "use the energy-balance method (the default)",
+                    })
+                }
+            };
+        self.warm = Some(warm);
+        Ok(solution)
+    }
+
+    fn touches_edge(&self) -> bool {
+        let Some(warm) = &self.warm else { return false };
+        let grid = self.solver.grid();
+        let (rows, columns) = (grid.rows(), grid.columns());
+        (0..rows * columns).any(|c| {
+            let (i, j) = (c / columns, c % columns);
+            (i == 0 || j == 0 || i + 1 == rows || j + 1 == columns) && warm.is_attached(c)
+        })
+    }
+
+    /// Records a step; false if the contact reached the grid's edge.
+    fn record(
+        &mut self,
+        solution: Solution,
+        phase: Phase,
+        progress: &mut dyn FnMut(&Step),
+    ) -> bool {
+        if self.watch_edge && self.touches_edge() {
+            return false;
+        }
+        let step = Step::new(phase, &solution);
+        progress(&step);
+        self.steps.push(step);
+        true
+    }
+
+    /// [`Runner::solve`] at the most loaded point: keeps the requested fields
+    /// of this very solve as the curve's peak.
+    fn solve_peak(&mut self, control: Control) -> Result<Solution> {
+        let fields = self.scene.outputs.fields;
+        if fields == Fields::default() {
+            return self.solve(control);
+        }
+        let params = *self.solver.params();
+        self.solver.set_params(SolverParams { fields, ..params });
+        let result = self.solve(control);
+        self.solver.set_params(params);
+        let solution = result?;
+        self.peak = Some(solution.clone());
+        Ok(solution)
+    }
+
+    pub(super) fn run(mut self, progress: &mut dyn FnMut(&Step)) -> Result<Outcome> {
+        match self.scene.protocol {
+            Protocol::Depth { depth } => {
+                let s = self.solve_peak(Control::Depth(depth))?;
+                if !self.record(s, Phase::Loading, progress) {
+                    return Ok(Outcome::ReachedEdge);
+                }
+            }
+            Protocol::Force { force } => {
+                let s = self.solve_peak(Control::Force(force))?;
+                if !self.record(s, Phase::Loading, progress) {
+                    return Ok(Outcome::ReachedEdge);
+                }
+            }
+            Protocol::Cycle { max_depth, steps } => {
+                let increment = max_depth / steps as f64;
+                for k in 0..=steps {
+                    let control = Control::Depth(k as f64 * increment);
+                    let s = if k == steps {
+                        self.solve_peak(control)?
+                    } else {
+                        self.solve(control)?
+                    };
+                    if !self.record(s, Phase::Loading, progress) {
+                        return Ok(Outcome::ReachedEdge);
+                    }
+                }
+                if !self.unload(max_depth, increment, progress)? {
+                    return Ok(Outcome::ReachedEdge);
+                }
+            }
+            Protocol::ForceCycle { max_force, steps } => {
+                let increment = max_force / steps as f64;
+                let forces = (0..=steps).chain((0..steps).rev());
+                for (n, k) in forces.enumerate() {
+                    let phase = if n <= steps {
+                        Phase::Loading
+                    } else {
+                        Phase::Unloading
+                    };
+                    let control = Control::Force(k as f64 * increment);
+                    let s = if n == steps {
+                        self.solve_peak(control)?
+                    } else {
+                        self.solve(control)?
+                    };
+                    if !self.record(s, phase, progress) {
+                        return Ok(Outcome::ReachedEdge);
+                    }
+                }
+            }
+        }
+        Ok(Outcome::Done(Box::new(Curve {
+            steps: self.steps,
+            grid: *self.solver.grid(),
+            peak: self.peak,
+        })))
+    }
+
+    /// Retracts from `max_depth` by `increment` until the contact is lost.
+    /// The step in which the contact first shrinks and the step in which it
+    /// is lost are each refined by bisection, so that the pull-off force is
+    /// found even when the curve turns within one increment. Beyond
+    /// `-max_depth` the increment doubles at each step, so that a contact
+    /// that holds to `-20 max_depth` costs a few dozen solves, not `20 steps`.
+    fn unload(
+        &mut self,
+        max_depth: f64,
+        increment: f64,
+        progress: &mut dyn FnMut(&Step),
+    ) -> Result<bool> {
+        let mut depth = max_depth;
+        let mut cells = self.last_contact_cells();
+        let mut shrinking_refined = false;
+        let mut increment = increment;
+        let limit = (2.0 * max_depth / increment).ceil() as usize
+            + (MAX_PULL_DEPTHS * max_depth / increment)
+                .log2()
+                .ceil()
+                .max(0.0) as usize
+            + 2;
+        for _ in 0..limit {
+            if depth < -max_depth {
+                increment *= 2.0;
+            }
+            if depth < -MAX_PULL_DEPTHS * max_depth {
+                break;
+            }
+            let before = self.warm.clone();
+            let solution = self.solve(Control::Depth(depth - increment))?;
+            let lost = solution.contact_cells == 0;
+            let shrinks = solution.contact_cells < cells;
+            if lost || (shrinks && !shrinking_refined) {
+                // Bisect between `depth` (state `before`) and `depth - increment`.
+                let after = self.warm.take();
+                self.warm = before;
+                if !self.bisect(depth, depth - increment, cells, lost, progress)? {
+                    return Ok(false);
+                }
+                shrinking_refined = true;
+                if lost {
+                    let s = self.solve(Control::Depth(depth - increment))?;
+                    self.record(s, Phase::Unloading, progress);
+                    return Ok(true);
+                }
+                self.warm = after;
+            }
+            depth -= increment;
+            cells = solution.contact_cells;
+            if !self.record(solution, Phase::Unloading, progress) {
+                return Ok(false);
+            }
+        }
+        Err(Error::NoConvergence {
+            method:
+                "unloading to contact loss (still attached 20 loading depths above the surface)",
+            iterations: limit,
+            residual: depth,
+        })
+    }
+
+    fn last_contact_cells(&self) -> usize {
+        self.warm.as_ref().map_or(0, WarmStart::attached_cells)
+    }
+
+    /// Bisects `(lower, upper)` for the depth where the contact first holds
+    /// fewer than `cells` cells (or none, if `to_loss`), recording the states
+    /// on the near side. Leaves the warm start at the last such state.
+    fn bisect(
+        &mut self,
+        upper: f64,
+        lower: f64,
+        cells: usize,
+        to_loss: bool,
+        progress: &mut dyn FnMut(&Step),
+    ) -> Result<bool> {
+        let (mut near, mut far) = (upper, lower);
+        let mut near_state = self.warm.clone();
+        for _ in 0..self.scene.solver.pull_off_bisections {
+            let middle = 0.5 * (near + far);
+            self.warm = near_state.clone();
+            let s = self.solve(Control::Depth(middle))?;
+            let crossed = if to_loss {
+                s.contact_cells == 0
+            } else {
+                s.contact_cells < cells
+            };
+            if crossed {
+                far = middle;
+            } else {
+                near = middle;
+                near_state = self.warm.clone();
+                if !self.record(s, Phase::Unloading, progress) {
+                    return Ok(false);
+                }
+            }
+        }
+        self.warm = near_state;
+        Ok(true)
+    }
+}
+
+/// The prescribed quantity of one solve.
+#[derive(Clone, Copy)]
+enum Control {
+    Depth(f64),
+    Force(f64),
+}

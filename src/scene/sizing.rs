@@ -1,0 +1,260 @@
+//! Grid sizing: how fine and how wide a scene's grid is, from the contacts
+//! it must hold and resolve.
+
+use crate::error::{Error, Result};
+use crate::grid::Grid;
+
+use super::{Adhesion, AdhesionMethod, IndenterSpec, Protocol, Scene};
+
+/// The widest grid a scene builds, in cells.
+const MAX_GRID_CELLS: usize = 16384;
+
+impl Scene {
+    /// The radius (m) of the largest contact the protocol should reach, for
+    /// sizing the grid.
+    fn contact_radius_estimate(&self) -> Result<f64> {
+        let substrate = self.substrate.build()?;
+        let softest = match &substrate {
+            crate::substrate::Substrate::HalfSpace(m) => m.contact_modulus(),
+            crate::substrate::Substrate::Coated(c) => match c.base() {
+                crate::substrate::Base::Elastic(b) => {
+                    b.contact_modulus().min(c.layer().contact_modulus())
+                }
+                crate::substrate::Base::Rigid => c.layer().contact_modulus(),
+            },
+        };
+        Ok(match (self.indenter, self.protocol) {
+            (IndenterSpec::FlatPunch { radius }, _) => radius,
+            (IndenterSpec::Sphere { radius } | IndenterSpec::Paraboloid { radius }, protocol) => {
+                let (target, by_force) = match protocol {
+                    Protocol::Depth { depth } => (depth.abs(), false),
+                    Protocol::Cycle { max_depth, .. } => (max_depth, false),
+                    Protocol::Force { force } => (force, true),
+                    Protocol::ForceCycle { max_force, .. } => (max_force, true),
+                };
+                let hertz = if by_force {
+                    (0.75 * target * radius / softest).cbrt()
+                } else {
+                    (radius * target).sqrt()
+                };
+                let estimate = match &substrate {
+                    crate::substrate::Substrate::Coated(coating) => exact_contact_radius(
+                        &substrate,
+                        coating.thickness(),
+                        radius,
+                        target,
+                        by_force,
+                        hertz,
+                    )
+                    .unwrap_or(1.5 * hertz),
+                    crate::substrate::Substrate::HalfSpace(_) => hertz,
+                };
+                estimate.min(radius).max(f64::MIN_POSITIVE)
+            }
+            (
+                IndenterSpec::Cone {
+                    half_angle,
+                    base_radius,
+                },
+                protocol,
+            ) => {
+                let depth = match protocol {
+                    Protocol::Depth { depth } => depth.abs(),
+                    Protocol::Cycle { max_depth, .. } => max_depth,
+                    Protocol::Force { force }
+                    | Protocol::ForceCycle {
+                        max_force: force, ..
+                    } => (0.5 * std::f64::consts::PI * force / (softest * half_angle.tan())).sqrt(),
+                };
+                (2.0 * depth * half_angle.tan() / std::f64::consts::PI).min(base_radius)
+            }
+        })
+    }
+
+    /// For an adhesive scene with a paraboloid or sphere: the radii (m) of the
+    /// loading peak's contact and of the pull-off contact, from the exact
+    /// (layered) JKR solution. `None` where there is none, or it fails.
+    fn adhesive_radii(&self) -> Option<(f64, f64)> {
+        let (advancing, receding) = self.adhesion.works()?;
+        let (IndenterSpec::Sphere { radius } | IndenterSpec::Paraboloid { radius }) = self.indenter
+        else {
+            return None;
+        };
+        if receding == 0.0 {
+            return None;
+        }
+        let substrate = self.substrate.build().ok()?;
+        let surface = substrate.surface_material().contact_modulus();
+        let scale =
+            (9.0 * std::f64::consts::PI * receding * radius * radius / (8.0 * surface)).cbrt();
+        let eps = match &substrate {
+            crate::substrate::Substrate::Coated(c) => (10.0 * scale / c.thickness())
+                .min(crate::analytic::Axisymmetric::MAX_RADIUS_OVER_THICKNESS),
+            crate::substrate::Substrate::HalfSpace(_) => 1.0,
+        };
+        let exact = crate::analytic::Axisymmetric::new(&substrate, eps).ok()?;
+        let ball = exact.paraboloid(radius, receding).ok()?;
+        let pull_off = ball.pull_off().ok()?.load_control.contact_radius;
+        let loading = exact.paraboloid(radius, advancing).ok()?;
+        let peak = match self.protocol {
+            Protocol::Cycle { max_depth, .. } | Protocol::Depth { depth: max_depth } => {
+                loading.at_depth(max_depth).ok()??
+            }
+            Protocol::ForceCycle { max_force, .. } | Protocol::Force { force: max_force } => {
+                loading.at_force(max_force).ok()??
+            }
+        };
+        Some((peak.contact_radius, pull_off))
+    }
+
+    /// The grid the scene is solved on (before any growth).
+    ///
+    /// # Errors
+    /// As [`Scene::validate`].
+    ///
+    /// `cells_across` spans the diameter of the smallest contact the
+    /// protocol must resolve: the punch, or for curved indenters the peak
+    /// contact and, in an adhesive scene with a sphere or paraboloid, the
+    /// pull-off contact (from the exact layered JKR solution) if that is
+    /// smaller. The grid holds the peak contact with `margin` on each side.
+    /// Grid sizes are rounded up to products of 2, 3, 5 and 7 (fast FFTs).
+    /// For a flat punch (untilted or not) the spacing is adjusted within 2 %
+    /// of `2a / cells_across` so that the cells whose centres lie on the
+    /// punch have the punch's area: the staircase punch then has the right
+    /// radius on average, and the stiffness converges smoothly like `1/N`
+    /// instead of oscillating with the staircase.
+    pub fn grid(&self) -> Result<Grid> {
+        self.validate()?;
+        let n = self.resolution.cells_across;
+        if let IndenterSpec::FlatPunch { radius } = self.indenter {
+            let cells = fft_friendly(n + 2);
+            // The mesh-dependent criterion is kept as published: on the
+            // equal-area staircase.
+            let shift = match (self.adhesion, self.solver.adhesion_method) {
+                (Adhesion::None, _) | (_, AdhesionMethod::EnergyBalance) => {
+                    crate::solver::EDGE_SHIFT
+                }
+                (_, AdhesionMethod::MeshCriterion) => 0.0,
+            };
+            return Grid::new(cells, cells, equal_area_spacing(radius, n, cells, shift));
+        }
+        let (peak, resolved) = match self.adhesive_radii() {
+            Some((peak, pull_off)) => (peak, peak.min(pull_off)),
+            None => {
+                let peak = self.contact_radius_estimate()?;
+                (peak, peak)
+            }
+        };
+        let spacing = 2.0 * resolved / n as f64;
+        let across = 2.0 * peak * (1.0 + 2.0 * self.resolution.margin) / spacing;
+        // Room for the energy balance's sets beyond the peak contact.
+        let headroom = if self.adhesion.works().is_some() {
+            8.0
+        } else {
+            0.0
+        };
+        let cells = (across + headroom).ceil();
+        if !(cells <= MAX_GRID_CELLS as f64) {
+            return Err(Error::InvalidParameter {
+                name: "resolution.cells_across",
+                value: n as f64,
+                expected: "a grid of at most 16384 cells across the peak contact \
+                           (the pull-off contact is much smaller than the peak's)",
+            });
+        }
+        let cells = fft_friendly(cells as usize);
+        Grid::new(cells, cells, spacing)
+    }
+}
+
+/// The smallest number of cells `>= n` whose prime factors are 2, 3, 5 and 7
+/// only: FFTs of such (padded) lengths are several times faster than of
+/// lengths with a large prime factor.
+pub(super) fn fft_friendly(n: usize) -> usize {
+    // A power of two lies in [n, 2n]: the search is bounded.
+    let n = n.max(1);
+    (n..=2 * n)
+        .find(|&m| {
+            let mut rest = m;
+            for p in [2, 3, 5, 7] {
+                while rest % p == 0 {
+                    rest /= p;
+                }
+            }
+            rest == 1
+        })
+        .unwrap_or(n)
+}
+
+/// A spacing within 2 % of `2 radius / n` for which the cells of a
+/// `cells`-square grid whose centres lie within `radius` of its centre form
+/// a staircase disc whose effective radius, `sqrt(A / pi) - shift` cells
+/// (see [`EDGE_SHIFT`](crate::solver::EDGE_SHIFT)), is the punch's.
+fn equal_area_spacing(radius: f64, n: usize, cells: usize, shift: f64) -> f64 {
+    let half = 0.5 * cells as f64;
+    // Cells of each row whose centres lie on the disc, counted in O(1) per
+    // row: `|j + 0.5 - half| <= sqrt(r^2 - x^2) / spacing`.
+    let area_error = |spacing: f64| {
+        let r = radius / spacing;
+        let inside: f64 = (0..cells)
+            .map(|i| {
+                let x = i as f64 + 0.5 - half;
+                let reach = r * r - x * x;
+                if reach < 0.0 {
+                    return 0.0;
+                }
+                let w = reach.sqrt();
+                // j + 0.5 - half in [-w, w]  <=>  j in [half - 0.5 - w, half - 0.5 + w]
+                let lo = (half - 0.5 - w).ceil().max(0.0);
+                let hi = (half - 0.5 + w).floor().min(cells as f64 - 1.0);
+                (hi - lo + 1.0).max(0.0)
+            })
+            .sum();
+        let effective = radius + shift * spacing;
+        (inside * spacing * spacing / (std::f64::consts::PI * effective * effective) - 1.0).abs()
+    };
+    let nominal = 2.0 * radius / n as f64;
+    (0..=80)
+        .map(|k| nominal * (0.98 + 0.0005 * k as f64))
+        .min_by(|a, b| area_error(*a).total_cmp(&area_error(*b)))
+        .unwrap_or(nominal)
+}
+
+/// The contact radius of a paraboloid of tip radius `radius` at depth (or
+/// force) `target` on a coated substrate, from the exact axisymmetric
+/// solution (bisection on the contact radius); `None` if it cannot be found
+/// (then the caller falls back to Hertz).
+fn exact_contact_radius(
+    substrate: &crate::substrate::Substrate,
+    thickness: f64,
+    radius: f64,
+    target: f64,
+    by_force: bool,
+    hertz: f64,
+) -> Option<f64> {
+    let upper = (2.0 * hertz).min(radius);
+    let exact = crate::analytic::Axisymmetric::new(
+        substrate,
+        (upper / thickness).min(crate::analytic::Axisymmetric::MAX_RADIUS_OVER_THICKNESS),
+    )
+    .ok()?;
+    let ball = exact.paraboloid(radius, 0.0).ok()?;
+    let value = |a: f64| {
+        ball.at_contact_radius(a)
+            .ok()
+            .map(|s| if by_force { s.force } else { s.depth })
+    };
+    if value(upper)? < target {
+        return Some(upper);
+    }
+    let (mut lo, mut hi) = (0.0, upper);
+    for _ in 0..40 {
+        let mid = 0.5 * (lo + hi);
+        if value(mid)? < target {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Some(hi)
+}
