@@ -2,7 +2,8 @@
 
 use layered_contact::indenter::FlatPunch;
 use layered_contact::scene::{
-    Adhesion, AdhesionMethod, IndenterSpec, Outputs, Phase, Protocol, Resolution, Scene, SubstrateSpec,
+    Adhesion, AdhesionMethod, IndenterSpec, Outputs, Phase, Protocol, Resolution, Scene,
+    SubstrateSpec,
 };
 use layered_contact::solver::{ContactSolver, Fields, SolverParams};
 use layered_contact::{Boundary, Error};
