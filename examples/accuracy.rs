@@ -7,8 +7,12 @@
 //! round trip of the padded grid.
 //!
 //! ```text
-//! cargo run --release --example accuracy -- [--out DIR] [--max-cells N] [--floor-only]
+//! cargo run --release --example accuracy -- [--out DIR] [--max-cells N] [--budget SECONDS]
+//!                                            [--only CASE_PREFIX] [--floor-only]
 //! ```
+//!
+//! A case stops refining where the next run would take longer than the
+//! budget (default 60 s; a doubling costs about eight times as much).
 //!
 //! Writes `accuracy.csv` (`case,cells_across,n_grid,rel_error,seconds,iterations,grid_bytes`),
 //! `accuracy.svg` (error against time, log-log) and `BENCHMARKS.md` to `DIR`
@@ -22,7 +26,8 @@ use std::time::Instant;
 use layered_contact::analytic::{Axisymmetric, Hertz, JkrSphere};
 use layered_contact::indenter::FlatPunch;
 use layered_contact::scene::{
-    richardson, Adhesion, IndenterSpec, Protocol, Quantity, Resolution, Scene, SubstrateSpec,
+    richardson, Adhesion, AdhesionMethod, IndenterSpec, Protocol, Quantity, Resolution, Scene,
+    SolverSettings, SubstrateSpec,
 };
 use layered_contact::solver::{ContactSolver, SolverParams};
 use layered_contact::{Boundary, Grid, Material, Substrate};
@@ -38,6 +43,8 @@ struct Case {
     reference: f64,
     /// Seconds for the exact (analytic / axisymmetric) value and its error.
     exact: (f64, f64),
+    /// Resolutions: the first, and the largest.
+    cells: (usize, usize),
 }
 
 struct Row {
@@ -96,6 +103,7 @@ fn cases() -> Result<Vec<Case>> {
         quantity: Quantity::PeakForce,
         reference: 2.0 * a * soft.contact_modulus() * d,
         exact: (0.0, 0.0),
+        cells: (8, 512),
     });
     for eps in [0.5, 2.0] {
         let (a, h) = (2.5e-3, 2.5e-3 / eps);
@@ -123,6 +131,7 @@ fn cases() -> Result<Vec<Case>> {
             quantity: Quantity::PeakForce,
             reference: punch * 1e-5,
             exact: (seconds, exact_error),
+            cells: (8, 512),
         });
     }
     let (r, d) = (0.01, 1e-4);
@@ -137,26 +146,7 @@ fn cases() -> Result<Vec<Case>> {
         quantity: Quantity::PeakForce,
         reference: Hertz::new(&soft, r)?.force(d),
         exact: (0.0, 0.0),
-    });
-    let dgamma = 0.05;
-    let jkr = JkrSphere::new(&soft, r, dgamma)?;
-    let a_max = 1.3 * jkr.pull_off_contact_radius();
-    cases.push(Case {
-        name: "jkr_sphere_pull_off",
-        scene: base(
-            half_space,
-            IndenterSpec::Paraboloid { radius: r },
-            Adhesion::Constant {
-                work_of_adhesion: dgamma,
-            },
-            Protocol::Cycle {
-                max_depth: a_max * a_max / r,
-                steps: 30,
-            },
-        ),
-        quantity: Quantity::PullOffForce,
-        reference: jkr.pull_off_force(),
-        exact: (0.0, 0.0),
+        cells: (8, 512),
     });
     let (a, h) = (2.5e-3, 5e-3);
     let ((pull_off, exact_error), seconds) = timed(|| {
@@ -184,7 +174,114 @@ fn cases() -> Result<Vec<Case>> {
         quantity: Quantity::PullOffForce,
         reference: pull_off,
         exact: (seconds, exact_error),
+        cells: (8, 512),
     });
+    cases.extend(sphere_pull_off_cases()?);
+    Ok(cases)
+}
+
+/// The JKR pull-off of a sphere (R = 10 mm, dgamma = 0.05 J/m^2) on a rubber
+/// (E = 1 MPa, nu = 0.48) half-space and on layers of it whose pull-off
+/// contact is about 1 and 3 thicknesses wide, on a rigid base and on an
+/// elastic one ten times stiffer: both adhesion methods, from 16 cells
+/// across the pull-off contact, pressed until the contact is 1.5 pull-off
+/// radii wide. The reference is the exact (layered) JKR pull-off force.
+fn sphere_pull_off_cases() -> Result<Vec<Case>> {
+    let (e, nu, r, dgamma) = (1e6, 0.48, 0.01, 0.05);
+    let a = JkrSphere::new(&Material::new(e, nu)?, r, dgamma)?.pull_off_contact_radius();
+    let mut cases = Vec::new();
+    let substrates = [
+        (
+            "half_space",
+            SubstrateSpec::HalfSpace {
+                youngs_modulus: e,
+                poisson_ratio: nu,
+            },
+        ),
+        (
+            "rigid_base_a/h=1",
+            SubstrateSpec::LayerOnRigidBase {
+                youngs_modulus: e,
+                poisson_ratio: nu,
+                thickness: a,
+            },
+        ),
+        (
+            "rigid_base_a/h=3",
+            SubstrateSpec::LayerOnRigidBase {
+                youngs_modulus: e,
+                poisson_ratio: nu,
+                thickness: a / 2.2,
+            },
+        ),
+        (
+            "E2/E1=10_a/h=1",
+            SubstrateSpec::LayerOnElasticBase {
+                youngs_modulus: e,
+                poisson_ratio: nu,
+                thickness: a,
+                base_youngs_modulus: 10.0 * e,
+                base_poisson_ratio: nu,
+            },
+        ),
+        (
+            "E2/E1=10_a/h=3",
+            SubstrateSpec::LayerOnElasticBase {
+                youngs_modulus: e,
+                poisson_ratio: nu,
+                thickness: a / 2.5,
+                base_youngs_modulus: 10.0 * e,
+                base_poisson_ratio: nu,
+            },
+        ),
+    ];
+    for (label, substrate) in substrates {
+        let (exact, seconds) = timed(|| -> Result<_> {
+            let exact = Axisymmetric::new(&substrate.build()?, 20.0)?;
+            let ball = exact.paraboloid(r, dgamma)?;
+            let pull_off = ball.pull_off()?.load_control;
+            let depth = ball.at_contact_radius(1.5 * pull_off.contact_radius)?.depth;
+            let error = exact
+                .flat_punch(pull_off.contact_radius)
+                .map_or(0.0, |p| p.convergence());
+            Ok((pull_off.force, depth, error))
+        });
+        let (pull_off, depth, error) = exact?;
+        for method in [AdhesionMethod::EnergyBalance, AdhesionMethod::MeshCriterion] {
+            let name = match method {
+                AdhesionMethod::EnergyBalance => "energy",
+                _ => "mesh",
+            };
+            let scene = Scene {
+                substrate,
+                indenter: IndenterSpec::Paraboloid { radius: r },
+                adhesion: Adhesion::Constant {
+                    work_of_adhesion: dgamma,
+                },
+                protocol: Protocol::Cycle {
+                    max_depth: depth,
+                    steps: 10,
+                },
+                resolution: Resolution {
+                    cells_across: 16,
+                    margin: 0.05,
+                },
+                solver: SolverSettings {
+                    adhesion_method: method,
+                    ..SolverSettings::default()
+                },
+                ..Scene::default()
+            };
+            cases.push(Case {
+                name: Box::leak(format!("jkr_sphere_pull_off/{label}/{name}").into_boxed_str()),
+                scene,
+                quantity: Quantity::PullOffForce,
+                reference: pull_off,
+                exact: (seconds, error),
+                cells: (16, 256),
+            });
+        }
+    }
     Ok(cases)
 }
 
@@ -199,6 +296,8 @@ fn grid_bytes(grid: &Grid) -> usize {
 fn main() -> Result<()> {
     let mut out = PathBuf::from("target/accuracy");
     let mut max_cells = 512;
+    let mut budget = 60.0;
+    let mut only: Option<String> = None;
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
         match arg.as_str() {
@@ -206,6 +305,8 @@ fn main() -> Result<()> {
             "--max-cells" => {
                 max_cells = args.next().ok_or("--max-cells needs a number")?.parse()?
             }
+            "--budget" => budget = args.next().ok_or("--budget needs seconds")?.parse()?,
+            "--only" => only = Some(args.next().ok_or("--only needs a case prefix")?),
             "--floor-only" => {
                 println!("{}", fft_floor()?);
                 return Ok(());
@@ -215,7 +316,10 @@ fn main() -> Result<()> {
     }
     std::fs::create_dir_all(&out)?;
     let mut rows = Vec::new();
-    for case in cases()? {
+    for case in cases()?
+        .into_iter()
+        .filter(|c| only.as_ref().is_none_or(|o| c.name.starts_with(o.as_str())))
+    {
         let mut previous: Option<(usize, f64, f64)> = None;
         rows.push(Row {
             case: format!("{}/exact", case.name),
@@ -226,8 +330,8 @@ fn main() -> Result<()> {
             iterations: 0,
             grid_bytes: 0,
         });
-        let mut cells = 8;
-        while cells <= max_cells {
+        let mut cells = case.cells.0;
+        while cells <= max_cells.min(case.cells.1) {
             let scene = Scene {
                 resolution: Resolution {
                     cells_across: cells,
@@ -266,8 +370,8 @@ fn main() -> Result<()> {
             );
             previous = Some((cells, value, seconds));
             // A doubling costs 4 to 20 times as much (more cells, more
-            // iterations): stop where the next run would pass a minute.
-            if seconds * 20.0 > 60.0 {
+            // iterations): stop where the next run would pass the budget.
+            if seconds * 8.0 > budget {
                 break;
             }
             cells *= 2;

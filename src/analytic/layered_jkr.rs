@@ -4,48 +4,34 @@
 use super::axisymmetric::{ContactState, LayeredParaboloid};
 use crate::error::{Error, Result};
 
-/// Bisection steps on the contact radius: the bracket shrinks by `2^-60`.
-const BISECTIONS: usize = 60;
+/// Bisection steps on the contact radius: the bracket shrinks by `2^-50`.
+const BISECTIONS: usize = 50;
 /// Doublings of the upper bracket before giving up (a contact `2^40` times
 /// the pull-off radius lies far outside any tabulated range).
 const MAX_DOUBLINGS: usize = 40;
 
 impl LayeredParaboloid<'_> {
-    /// The smallest contact radius of the branch that is stable under the
-    /// given control: the radius of least depth (displacement control) or
-    /// of least force (load control); a tiny radius without adhesion.
-    fn stable_from(&self, by_force: bool) -> Result<f64> {
-        if self.work_of_adhesion == 0.0 {
-            return Ok(1e-9 * self.sphere_radius.min(self.body.max_contact_radius()));
-        }
-        let pull_off = self.pull_off()?;
-        Ok(if by_force {
-            pull_off.load_control.contact_radius
-        } else {
-            pull_off.displacement_control.contact_radius
-        })
-    }
-
     /// The stable equilibrium at `target` depth or force: the root of
-    /// `key(a) = target` on the branch where `key` grows with `a`; `None`
-    /// below the branch's least value (no adhesive equilibrium: the contact
-    /// has come off).
+    /// `key(a) = target` of largest radius, on the branch where `key` grows
+    /// with `a`; `None` below the branch's least value (no adhesive
+    /// equilibrium: the contact has come off). Walks down from a radius
+    /// where `key >= target` in steps of 10 % until `key < target`, then
+    /// bisects; if the walk passes the branch's minimum first, the minimum
+    /// (golden section) decides.
     fn stable_root(&self, target: f64, by_force: bool) -> Result<Option<ContactState>> {
-        let key = |s: &ContactState| if by_force { s.force } else { s.depth };
-        let lo = self.stable_from(by_force)?;
-        let least = self.at_contact_radius(lo)?;
-        if target < key(&least) {
-            return Ok(None);
-        }
+        let key = |a: f64| -> Result<f64> {
+            let s = self.at_contact_radius(a)?;
+            Ok(if by_force { s.force } else { s.depth })
+        };
         let limit = self.body.max_contact_radius();
-        let mut hi = lo;
+        let scale = (self.sphere_radius * target.abs().max(f64::MIN_POSITIVE))
+            .sqrt()
+            .min(limit);
+        let (lo_range, _) = self.pull_off_range();
+        // An upper bracket: key(hi) >= target.
+        let mut hi = scale.max(lo_range);
         let mut doublings = 0;
-        loop {
-            hi = (2.0 * hi).min(limit);
-            if key(&self.at_contact_radius(hi)?) >= target {
-                break;
-            }
-            doublings += 1;
+        while key(hi)? < target {
             if hi >= limit || doublings == MAX_DOUBLINGS {
                 return Err(Error::InvalidParameter {
                     name: if by_force { "force" } else { "depth" },
@@ -54,11 +40,51 @@ impl LayeredParaboloid<'_> {
                                (build Axisymmetric with a larger max_radius_over_thickness)",
                 });
             }
+            hi = (2.0 * hi).min(limit);
+            doublings += 1;
         }
-        let mut lo = lo;
+        // Walk down to a lower bracket.
+        let floor = lo_range.min(hi) * 1e-3;
+        let (mut previous, mut lo) = (key(hi)?, hi);
+        loop {
+            let next = 0.9 * lo;
+            let value = key(next)?;
+            if value < target {
+                hi = lo;
+                lo = next;
+                break;
+            }
+            if value > previous || next < floor {
+                // Passed the minimum (or ran out of branch) above the target.
+                if self.work_of_adhesion == 0.0 {
+                    return Ok(None);
+                }
+                let least = if by_force {
+                    self.load_controlled_pull_off()?.force
+                } else {
+                    self.pull_off()?.displacement_control.depth
+                };
+                if target < least {
+                    return Ok(None);
+                }
+                // The minimum dips below the target between samples: bracket
+                // between it and the last sample above.
+                let pull_off = self.pull_off()?;
+                let at = if by_force {
+                    pull_off.load_control
+                } else {
+                    pull_off.displacement_control
+                };
+                hi = lo;
+                lo = at.contact_radius;
+                break;
+            }
+            previous = value;
+            lo = next;
+        }
         for _ in 0..BISECTIONS {
             let mid = 0.5 * (lo + hi);
-            if key(&self.at_contact_radius(mid)?) < target {
+            if key(mid)? < target {
                 lo = mid;
             } else {
                 hi = mid;

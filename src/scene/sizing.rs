@@ -94,7 +94,7 @@ impl Scene {
         };
         let exact = crate::analytic::Axisymmetric::new(&substrate, eps).ok()?;
         let ball = exact.paraboloid(radius, receding).ok()?;
-        let pull_off = ball.pull_off().ok()?.load_control.contact_radius;
+        let pull_off = ball.load_controlled_pull_off().ok()?.contact_radius;
         let loading = exact.paraboloid(radius, advancing).ok()?;
         let peak = match self.protocol {
             Protocol::Cycle { max_depth, .. } | Protocol::Depth { depth: max_depth } => {
