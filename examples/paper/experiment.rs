@@ -3,9 +3,10 @@
 
 #![allow(dead_code)]
 
-use layered_contact::analytic::{Axisymmetric, PunchStiffnessSeries};
+use layered_contact::analytic::{Axisymmetric, LayeredJkrCycle, PunchStiffnessSeries};
 use layered_contact::scene::{
-    Adhesion, Curve, IndenterSpec, Protocol, Resolution, Scene, SolverSettings, SubstrateSpec,
+    Adhesion, Curve, IndenterSpec, Phase, Protocol, Resolution, Scene, SolverSettings,
+    SubstrateSpec,
 };
 use layered_contact::{Error, Material, Substrate};
 
@@ -203,7 +204,10 @@ pub fn punch_scene(h_mm: f64, d_mm: f64, depth: f64, steps: usize) -> Scene {
     }
 }
 
-/// The scene of a sphere of radius `r_mm` on layer `h_mm`.
+/// The scene of a sphere of radius `r_mm` on layer `h_mm`, modelled as the
+/// paraboloid `f = r^2 / (2R)` of JKR theory and of the exact layered
+/// solution it is compared with (at the deepest point, `a/R` up to 0.17, a
+/// spherical cap would carry up to 0.7 % more force).
 pub fn sphere_scene(
     r_mm: f64,
     h_mm: f64,
@@ -218,7 +222,7 @@ pub fn sphere_scene(
             poisson_ratio: POISSON_RATIO,
             thickness: h_mm * 1e-3,
         },
-        indenter: IndenterSpec::Sphere {
+        indenter: IndenterSpec::Paraboloid {
             radius: r_mm * 1e-3,
         },
         adhesion: Adhesion::Hysteresis {
@@ -239,20 +243,69 @@ pub fn sphere_scene(
 
 /// Exact pull-off force of a flat punch (diameter `d_mm`, layer `h_mm`).
 pub fn exact_punch_pull_off(h_mm: f64, d_mm: f64, dgamma: f64) -> Result<f64, Error> {
+    Ok(exact_punch_pull_off_point(h_mm, d_mm, dgamma)?.1)
+}
+
+/// Exact pull-off `(depth m, force N)` of a flat punch: it detaches at once
+/// when the edge's energy release rate reaches `dgamma`.
+pub fn exact_punch_pull_off_point(h_mm: f64, d_mm: f64, dgamma: f64) -> Result<(f64, f64), Error> {
     let radius = 0.5e-3 * d_mm;
     let exact = Axisymmetric::new(&film(h_mm)?, radius / (h_mm * 1e-3) * 1.01)?;
-    Ok(exact.flat_punch(radius)?.pull_off_force(dgamma))
+    let punch = exact.flat_punch(radius)?;
+    Ok((punch.critical_depth(dgamma), punch.pull_off_force(dgamma)))
+}
+
+/// The largest deviation of a punch curve's loading branch from the exact
+/// `F = K d`, relative to the exact force at the deepest point.
+pub fn punch_loading_error(h_mm: f64, d_mm: f64, curve: &Curve) -> Result<f64, Error> {
+    let radius = 0.5e-3 * d_mm;
+    let exact = Axisymmetric::new(&film(h_mm)?, radius / (h_mm * 1e-3) * 1.01)?;
+    let stiffness = exact.flat_punch(radius)?.stiffness();
+    let peak = curve.steps.iter().map(|s| s.depth).fold(0.0, f64::max) * stiffness;
+    Ok(curve
+        .phase(Phase::Loading)
+        .filter(|s| s.depth > 0.0)
+        .map(|s| ((s.force - stiffness * s.depth) / peak).abs())
+        .fold(0.0, f64::max))
+}
+
+/// The largest deviation of a sphere curve's loading branch from the exact
+/// layered JKR loading curve (advancing work of adhesion), relative to the
+/// exact force at the deepest point.
+pub fn sphere_loading_error(
+    r_mm: f64,
+    h_mm: f64,
+    dgamma1: f64,
+    max_depth: f64,
+    curve: &Curve,
+) -> Result<f64, Error> {
+    let exact = Axisymmetric::new(&film(h_mm)?, 4.0)?;
+    let cycle = LayeredJkrCycle::new(&exact, r_mm * 1e-3, DGAMMA_LOADING, dgamma1, max_depth)?;
+    let peak = cycle.peak().force;
+    let mut worst: f64 = 0.0;
+    for step in curve.phase(Phase::Loading).filter(|s| s.depth > 0.0) {
+        if let Some(state) = cycle.loading(step.depth)? {
+            worst = worst.max(((step.force - state.force) / peak).abs());
+        }
+    }
+    Ok(worst)
 }
 
 /// Exact pull-off force (load control) of a paraboloid of radius `r_mm` on
 /// layer `h_mm`.
 pub fn exact_sphere_pull_off(r_mm: f64, h_mm: f64, dgamma: f64) -> Result<f64, Error> {
+    Ok(exact_sphere_pull_off_point(r_mm, h_mm, dgamma)?.1)
+}
+
+/// Exact pull-off `(depth m, force N)` (load control, the least force) of a
+/// paraboloid of radius `r_mm` on layer `h_mm`.
+pub fn exact_sphere_pull_off_point(r_mm: f64, h_mm: f64, dgamma: f64) -> Result<(f64, f64), Error> {
     let exact = Axisymmetric::new(&film(h_mm)?, 4.0)?;
-    Ok(exact
+    let state = exact
         .paraboloid(r_mm * 1e-3, dgamma)?
         .pull_off()?
-        .load_control
-        .force)
+        .load_control;
+    Ok((state.depth, state.force))
 }
 
 /// The minimum force of a curve (its pull-off force), or 0.

@@ -177,82 +177,215 @@ pub fn stiffness(path: &Path, rows: &[StiffnessRow], config: &Config) -> Result<
     Ok(())
 }
 
-/// Force against depth, one panel per punch diameter, one line per layer.
-pub fn punch_curves(path: &Path, curves: &[(f64, f64, Curve)], config: &Config) -> Result<()> {
-    register()?;
-    let root = SVGBackend::new(path, (1200, 900)).into_drawing_area();
-    root.fill(&WHITE)?;
-    let panels = root.split_evenly((2, config.punch_diameters_mm.len().div_ceil(2)));
-    for (panel, &d) in panels.iter().zip(&config.punch_diameters_mm) {
-        let mine: Vec<&(f64, f64, Curve)> = curves.iter().filter(|c| c.1 == d).collect();
-        let (x0, x1) = range(
-            mine.iter()
-                .flat_map(|c| c.2.steps.iter().map(|s| s.depth * 1e3)),
-        );
-        let (y0, y1) = range(mine.iter().flat_map(|c| c.2.steps.iter().map(|s| s.force)));
-        let mut chart =
-            force_depth_chart(panel, format!("flat punch D = {d} mm"), (x0, x1), (y0, y1))?;
-        for (i, (h, _, curve)) in mine.iter().enumerate() {
-            let color = palette(i);
-            for phase in [Phase::Loading, Phase::Unloading] {
-                let mut points: Vec<(f64, f64)> = curve
-                    .phase(phase)
-                    .map(|s| (s.depth * 1e3, s.force))
-                    .collect();
-                points.sort_by(|a, b| a.0.total_cmp(&b.0));
-                let series = chart.draw_series(LineSeries::new(points, color.stroke_width(2)))?;
-                if phase == Phase::Loading {
-                    series.label(format!("h = {h} mm")).legend(move |(x, y)| {
-                        PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(2))
-                    });
-                }
+/// One force-depth curve with its exact pull-off `(depth m, force N)`.
+pub struct Run<'a> {
+    /// Line label.
+    pub label: String,
+    /// Which panel (punch diameter or sphere radius, mm).
+    pub panel: f64,
+    /// Colour.
+    pub color: RGBColor,
+    /// Whether to draw the loading branch (the extra works of adhesion of
+    /// the spheres share the standard one's).
+    pub loading: bool,
+    pub curve: &'a Curve,
+    pub exact: (f64, f64),
+}
+
+/// The colour of layer `index`, or grey / black for the extra works of
+/// adhesion below / above the standard one.
+pub fn run_color(index: usize, dgamma: f64) -> RGBColor {
+    let standard = (dgamma - crate::experiment::DGAMMA_PUNCH).abs() < 1e-12;
+    if standard {
+        palette(index)
+    } else if dgamma < crate::experiment::DGAMMA_PUNCH {
+        RGBColor(150, 150, 150)
+    } else {
+        RGBColor(40, 40, 40)
+    }
+}
+
+/// The last state in contact on the unloading branch: where the contact
+/// comes off.
+fn detachment(curve: &Curve) -> Option<(f64, f64)> {
+    curve
+        .phase(Phase::Unloading)
+        .filter(|s| s.contact_area > 0.0)
+        .last()
+        .map(|s| (s.depth * 1e3, s.force))
+}
+
+/// Draws one run: loading solid, unloading dashed in the order computed
+/// (starting at the peak, so the loop closes), a triangle where unloading
+/// starts, the jump off the surface as a dotted vertical line down to zero
+/// force, the BEM pull-off (least force) as a circle and the exact one as a
+/// cross.
+fn draw_run<'a, DB: DrawingBackend + 'a>(
+    chart: &mut ChartContext<
+        'a,
+        DB,
+        Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+    >,
+    run: &Run,
+    window: ((f64, f64), (f64, f64)),
+) -> Result<()>
+where
+    DB::ErrorType: 'static,
+{
+    let ((x0, x1), (y0, y1)) = window;
+    let inside = |&(x, y): &(f64, f64)| x >= x0 && x <= x1 && y >= y0 && y <= y1;
+    let color = run.color;
+    let points = |phase: Phase| -> Vec<(f64, f64)> {
+        run.curve
+            .phase(phase)
+            .filter(|s| phase == Phase::Loading || s.contact_area > 0.0)
+            .map(|s| (s.depth * 1e3, s.force))
+            .filter(inside)
+            .collect()
+    };
+    if run.loading {
+        chart.draw_series(LineSeries::new(
+            points(Phase::Loading),
+            color.stroke_width(2),
+        ))?;
+    }
+    chart.draw_series(DashedLineSeries::new(
+        points(Phase::Unloading),
+        6,
+        4,
+        color.stroke_width(2),
+    ))?;
+    if run.loading {
+        if let Some(peak) = run.curve.phase(Phase::Unloading).next() {
+            let p = (peak.depth * 1e3, peak.force);
+            if inside(&p) {
+                chart.draw_series(std::iter::once(TriangleMarker::new(p, 7, color.filled())))?;
             }
         }
-        legend(&mut chart, 13, SeriesLabelPosition::UpperLeft)?;
     }
+    if let Some((d, f)) = detachment(run.curve) {
+        let jump = [(d, f.max(y0)), (d, 0.0f64.min(y1))];
+        chart.draw_series(DashedLineSeries::new(jump, 2, 3, color.stroke_width(1)))?;
+    }
+    if let Some(p) = run.curve.pull_off() {
+        let p = (p.depth * 1e3, p.force);
+        if inside(&p) {
+            chart.draw_series(std::iter::once(Circle::new(p, 5, color.filled())))?;
+        }
+    }
+    let exact = (run.exact.0 * 1e3, run.exact.1);
+    if inside(&exact) {
+        chart.draw_series(std::iter::once(Cross::new(exact, 7, BLACK.stroke_width(2))))?;
+    }
+    Ok(())
+}
+
+/// A legend strip: coloured lines for the runs, then the symbols.
+fn legend_strip<DB: DrawingBackend>(
+    area: &DrawingArea<DB, plotters::coord::Shift>,
+    entries: &[(String, RGBColor)],
+) -> Result<()>
+where
+    DB::ErrorType: 'static,
+{
+    let font = (FONT, 15).into_font();
+    let (width, _) = area.dim_in_pixel();
+    let per_row = 4usize;
+    let column = (width as i32 - 40) / per_row as i32;
+    for (k, (text, color)) in entries.iter().enumerate() {
+        let x = 20 + (k % per_row) as i32 * column;
+        let y = 14 + (k / per_row) as i32 * 22;
+        area.draw(&PathElement::new(
+            vec![(x, y), (x + 26, y)],
+            color.stroke_width(3),
+        ))
+        .map_err(|e| e.to_string())?;
+        area.draw(&Text::new(text.clone(), (x + 34, y - 8), font.clone()))
+            .map_err(|e| e.to_string())?;
+    }
+    let y = 14 + entries.len().div_ceil(per_row) as i32 * 22;
+    let symbols = "solid: loading (dgamma0 = 0.0175 J/m^2)  |  dashed: unloading (dgamma1)  |  \
+                   triangle: unloading starts  |  dotted vertical: jump off the surface  |  \
+                   circle: BEM pull-off (least force)  |  x: exact pull-off";
+    area.draw(&Text::new(symbols, (20, y - 6), font))
+        .map_err(|e| e.to_string())?;
+    Ok(())
+}
+
+/// Force against depth, one panel per punch diameter, one line per layer.
+pub fn punch_curves(path: &Path, runs: &[Run], config: &Config) -> Result<()> {
+    register()?;
+    let root = SVGBackend::new(path, (1300, 1000)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let (top, bottom) = root.split_vertically(900);
+    let panels = top.split_evenly((2, config.punch_diameters_mm.len().div_ceil(2)));
+    for (panel, &d) in panels.iter().zip(&config.punch_diameters_mm) {
+        let mine: Vec<&Run> = runs.iter().filter(|r| r.panel == d).collect();
+        let x = range(mine.iter().flat_map(|r| {
+            r.curve
+                .steps
+                .iter()
+                .map(|s| s.depth * 1e3)
+                .chain([r.exact.0 * 1e3])
+        }));
+        let y = range(
+            mine.iter()
+                .flat_map(|r| r.curve.steps.iter().map(|s| s.force).chain([r.exact.1])),
+        );
+        let mut chart = force_depth_chart(panel, format!("flat punch D = {d} mm"), x, y)?;
+        for run in &mine {
+            draw_run(&mut chart, run, (x, y))?;
+        }
+    }
+    let mut entries: Vec<(String, RGBColor)> = Vec::new();
+    for run in runs {
+        if !entries.iter().any(|(l, _)| *l == run.label) {
+            entries.push((run.label.clone(), run.color));
+        }
+    }
+    legend_strip(&bottom, &entries)?;
     root.present()?;
     Ok(())
 }
 
 /// Force against depth loops, one column per sphere radius: the whole
-/// loop above, the adhesive part (pull-off) enlarged below. Loading solid,
-/// unloading dashed; the extra works of adhesion of the thinnest layer in
-/// grey (their loading branch is the same as the standard one's).
-pub fn sphere_curves(
-    path: &Path,
-    curves: &[(f64, f64, f64, Curve)],
-    config: &Config,
-) -> Result<()> {
+/// loop above, the adhesive part (pull-off) enlarged below; the extra works
+/// of adhesion of the thinnest layer in grey and black (their loading branch
+/// is the standard one's). The legend sits below the panels, clear of the
+/// curves.
+pub fn sphere_curves(path: &Path, runs: &[Run], config: &Config) -> Result<()> {
     register()?;
-    let root = SVGBackend::new(path, (1500, 1000)).into_drawing_area();
+    let root = SVGBackend::new(path, (1500, 1100)).into_drawing_area();
     root.fill(&WHITE)?;
-    let panels = root.split_evenly((2, config.sphere_radii_mm.len()));
+    let (top, bottom) = root.split_vertically(980);
+    let panels = top.split_evenly((2, config.sphere_radii_mm.len()));
     let columns = config.sphere_radii_mm.len();
     for (column, &r) in config.sphere_radii_mm.iter().enumerate() {
-        let mine: Vec<&(f64, f64, f64, Curve)> = curves.iter().filter(|c| c.0 == r).collect();
-        let lowest = mine
-            .iter()
-            .flat_map(|c| c.3.steps.iter().map(|s| s.force))
-            .fold(0.0, f64::min);
-        let (x0, x1) = range(
+        let mine: Vec<&Run> = runs.iter().filter(|run| run.panel == r).collect();
+        let forces = || {
             mine.iter()
-                .flat_map(|c| c.3.steps.iter().map(|s| s.depth * 1e3)),
+                .flat_map(|run| run.curve.steps.iter().map(|s| s.force).chain([run.exact.1]))
+        };
+        let lowest = forces().fold(0.0, f64::min);
+        let x = range(
+            mine.iter()
+                .flat_map(|run| run.curve.steps.iter().map(|s| s.depth * 1e3)),
         );
-        let (y0, y1) = range(mine.iter().flat_map(|c| c.3.steps.iter().map(|s| s.force)));
+        let y = range(forces());
         let zoom_depth = mine
             .iter()
-            .flat_map(|c| {
-                c.3.steps
+            .flat_map(|run| {
+                run.curve
+                    .steps
                     .iter()
-                    .filter(|s| s.force < -lowest)
+                    .filter(|s| s.force < -0.3 * lowest)
                     .map(|s| s.depth * 1e3)
             })
-            .fold(x0, f64::max);
-        for (row, (x_range, y_range, caption)) in [
-            ((x0, x1), (y0, y1), format!("sphere R = {r} mm")),
+            .fold(x.0, f64::max);
+        for (row, (window, caption)) in [
+            ((x, y), format!("sphere R = {r} mm")),
             (
-                (x0, zoom_depth),
-                (1.15 * lowest, -lowest),
+                ((x.0, zoom_depth), (1.1 * lowest, -0.3 * lowest)),
                 format!("sphere R = {r} mm: pull-off"),
             ),
         ]
@@ -260,59 +393,19 @@ pub fn sphere_curves(
         .enumerate()
         {
             let panel = &panels[row * columns + column];
-            let mut chart = force_depth_chart(panel, caption, x_range, y_range)?;
-            let mut index = 0;
-            for (_, h, dgamma, curve) in &mine {
-                let standard = (*dgamma - crate::experiment::DGAMMA_PUNCH).abs() < 1e-12;
-                let color = if standard {
-                    index += 1;
-                    palette(index - 1)
-                } else if *dgamma < crate::experiment::DGAMMA_PUNCH {
-                    RGBColor(160, 160, 160)
-                } else {
-                    RGBColor(40, 40, 40)
-                };
-                let inside = |(x, y): &(f64, f64)| {
-                    *x >= x_range.0 && *x <= x_range.1 && *y >= y_range.0 && *y <= y_range.1
-                };
-                let loading: Vec<(f64, f64)> = curve
-                    .phase(Phase::Loading)
-                    .map(|s| (s.depth * 1e3, s.force))
-                    .filter(inside)
-                    .collect();
-                let mut unloading: Vec<(f64, f64)> = curve
-                    .phase(Phase::Unloading)
-                    .map(|s| (s.depth * 1e3, s.force))
-                    .filter(inside)
-                    .collect();
-                unloading.sort_by(|a, b| b.0.total_cmp(&a.0));
-                let label = format!("h = {h} mm, dgamma1 = {dgamma} J/m^2");
-                if standard {
-                    chart.draw_series(LineSeries::new(loading, color.stroke_width(2)))?;
-                }
-                chart
-                    .draw_series(DashedLineSeries::new(
-                        unloading,
-                        5,
-                        3,
-                        color.stroke_width(2),
-                    ))?
-                    .label(label)
-                    .legend(move |(x, y)| {
-                        PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(2))
-                    });
+            let mut chart = force_depth_chart(panel, caption, window.0, window.1)?;
+            for run in &mine {
+                draw_run(&mut chart, run, window)?;
             }
-            legend(
-                &mut chart,
-                12,
-                if row == 0 {
-                    SeriesLabelPosition::UpperLeft
-                } else {
-                    SeriesLabelPosition::LowerRight
-                },
-            )?;
         }
     }
+    let mut entries: Vec<(String, RGBColor)> = Vec::new();
+    for run in runs {
+        if !entries.iter().any(|(l, _)| *l == run.label) {
+            entries.push((run.label.clone(), run.color));
+        }
+    }
+    legend_strip(&bottom, &entries)?;
     root.present()?;
     Ok(())
 }

@@ -65,20 +65,28 @@ fn main() -> Result<()> {
     let stiffness = experiment::stiffness_rows(&config, &tick)?;
 
     bar.set_message("flat punches");
-    let punch_curves: Vec<(f64, f64, Curve)> = punch_jobs
+    let punch_curves: Vec<PunchRun> = punch_jobs
         .par_iter()
-        .map(|&(h, d)| {
+        .map(|&(h, d)| -> Result<PunchRun> {
             let curve =
-                experiment::punch_scene(h, d, config.punch_depth, config.steps).run(&mut |_| {});
+                experiment::punch_scene(h, d, config.punch_depth, config.steps).run(&mut |_| {})?;
+            let exact = experiment::exact_punch_pull_off_point(h, d, experiment::DGAMMA_PUNCH)?;
+            let loading_error = experiment::punch_loading_error(h, d, &curve)?;
             bar.inc(1);
-            curve.map(|c| (h, d, c))
+            Ok(PunchRun {
+                h,
+                d,
+                curve,
+                exact,
+                loading_error,
+            })
         })
-        .collect::<std::result::Result<_, _>>()?;
+        .collect::<Result<_>>()?;
 
     bar.set_message("spheres");
-    let sphere_curves: Vec<(f64, f64, f64, Curve)> = sphere_jobs
+    let sphere_curves: Vec<SphereRun> = sphere_jobs
         .par_iter()
-        .map(|&(r, h, dgamma)| {
+        .map(|&(r, h, dgamma)| -> Result<SphereRun> {
             let scene = experiment::sphere_scene(
                 r,
                 h,
@@ -87,27 +95,83 @@ fn main() -> Result<()> {
                 config.steps,
                 config.cells_across_sphere,
             );
-            let curve = scene.run(&mut |_| {});
+            let curve = scene.run(&mut |_| {})?;
+            let exact = experiment::exact_sphere_pull_off_point(r, h, dgamma)?;
+            let loading_error =
+                experiment::sphere_loading_error(r, h, dgamma, config.sphere_depth, &curve)?;
             bar.inc(1);
-            curve.map(|c| (r, h, dgamma, c))
+            Ok(SphereRun {
+                r,
+                h,
+                dgamma,
+                curve,
+                exact,
+                loading_error,
+            })
         })
-        .collect::<std::result::Result<_, _>>()?;
+        .collect::<Result<_>>()?;
     bar.finish_with_message("done");
 
     write_stiffness(&out, &stiffness)?;
     write_punch_curves(&out, &punch_curves)?;
     write_sphere_curves(&out, &sphere_curves)?;
     figures::stiffness(&out.join("stiffness.svg"), &stiffness, &config)?;
-    figures::punch_curves(&out.join("flat_punch_curves.svg"), &punch_curves, &config)?;
-    figures::sphere_curves(&out.join("sphere_curves.svg"), &sphere_curves, &config)?;
+    let index = |values: &[f64], v: f64| values.iter().position(|x| *x == v).unwrap_or(0);
+    let punch_runs: Vec<figures::Run> = punch_curves
+        .iter()
+        .map(|p| figures::Run {
+            label: format!("h = {} mm", p.h),
+            panel: p.d,
+            color: figures::run_color(index(&config.thicknesses_mm, p.h), experiment::DGAMMA_PUNCH),
+            loading: true,
+            curve: &p.curve,
+            exact: p.exact,
+        })
+        .collect();
+    figures::punch_curves(&out.join("flat_punch_curves.svg"), &punch_runs, &config)?;
+    let sphere_runs: Vec<figures::Run> = sphere_curves
+        .iter()
+        .map(|s| {
+            let standard = (s.dgamma - experiment::DGAMMA_PUNCH).abs() < 1e-12;
+            figures::Run {
+                label: format!("h = {} mm, dgamma1 = {} J/m^2", s.h, s.dgamma),
+                panel: s.r,
+                color: figures::run_color(index(&config.thicknesses_mm, s.h), s.dgamma),
+                loading: standard,
+                curve: &s.curve,
+                exact: s.exact,
+            }
+        })
+        .collect();
+    figures::sphere_curves(&out.join("sphere_curves.svg"), &sphere_runs, &config)?;
 
     summary(&stiffness, &punch_curves, &sphere_curves)?;
     println!(
-        "\nwrote {} in {:.1} s",
+        "\nwrote {} in {:.1} s (wall time of the whole run)",
         out.display(),
         started.elapsed().as_secs_f64()
     );
     Ok(())
+}
+
+/// A flat-punch curve with its exact pull-off `(depth, force)` and the
+/// largest deviation of its loading branch from the exact one.
+struct PunchRun {
+    h: f64,
+    d: f64,
+    curve: Curve,
+    exact: (f64, f64),
+    loading_error: f64,
+}
+
+/// A sphere curve, likewise.
+struct SphereRun {
+    r: f64,
+    h: f64,
+    dgamma: f64,
+    curve: Curve,
+    exact: (f64, f64),
+    loading_error: f64,
 }
 
 fn write_stiffness(out: &std::path::Path, rows: &[StiffnessRow]) -> Result<()> {
@@ -128,7 +192,7 @@ fn write_stiffness(out: &std::path::Path, rows: &[StiffnessRow]) -> Result<()> {
     Ok(())
 }
 
-fn write_punch_curves(out: &std::path::Path, curves: &[(f64, f64, Curve)]) -> Result<()> {
+fn write_punch_curves(out: &std::path::Path, curves: &[PunchRun]) -> Result<()> {
     let mut w = csv::Writer::from_path(out.join("flat_punch_curves.csv"))?;
     w.write_record([
         "h_mm",
@@ -138,7 +202,7 @@ fn write_punch_curves(out: &std::path::Path, curves: &[(f64, f64, Curve)]) -> Re
         "force_N",
         "contact_area_m2",
     ])?;
-    for (h, d, curve) in curves {
+    for PunchRun { h, d, curve, .. } in curves {
         for s in &curve.steps {
             w.write_record([
                 format!("{h}"),
@@ -154,7 +218,7 @@ fn write_punch_curves(out: &std::path::Path, curves: &[(f64, f64, Curve)]) -> Re
     Ok(())
 }
 
-fn write_sphere_curves(out: &std::path::Path, curves: &[(f64, f64, f64, Curve)]) -> Result<()> {
+fn write_sphere_curves(out: &std::path::Path, curves: &[SphereRun]) -> Result<()> {
     let mut w = csv::Writer::from_path(out.join("sphere_curves.csv"))?;
     w.write_record([
         "R_mm",
@@ -165,7 +229,14 @@ fn write_sphere_curves(out: &std::path::Path, curves: &[(f64, f64, f64, Curve)])
         "force_N",
         "contact_radius_m",
     ])?;
-    for (r, h, dgamma, curve) in curves {
+    for SphereRun {
+        r,
+        h,
+        dgamma,
+        curve,
+        ..
+    } in curves
+    {
         for s in &curve.steps {
             w.write_record([
                 format!("{r}"),
@@ -182,11 +253,7 @@ fn write_sphere_curves(out: &std::path::Path, curves: &[(f64, f64, f64, Curve)])
     Ok(())
 }
 
-fn summary(
-    stiffness: &[StiffnessRow],
-    punches: &[(f64, f64, Curve)],
-    spheres: &[(f64, f64, f64, Curve)],
-) -> Result<()> {
+fn summary(stiffness: &[StiffnessRow], punches: &[PunchRun], spheres: &[SphereRun]) -> Result<()> {
     let series = PunchStiffnessSeries::new(experiment::rubber(), 5e-3)?;
     let (mut lo, mut hi) = (1e-6, 5e-3);
     for _ in 0..100 {
@@ -219,25 +286,46 @@ fn summary(
         );
     }
     println!(
-        "\nflat punch pull-off [mN], BEM / exact (dgamma1 = {}):",
+        "\nflat punch pull-off [mN], BEM / exact (dgamma1 = {}), error; loading branch error:",
         experiment::DGAMMA_PUNCH
     );
-    for (h, d, curve) in punches {
-        let exact = experiment::exact_punch_pull_off(*h, *d, experiment::DGAMMA_PUNCH)?;
+    let (mut worst_pull, mut worst_loading) = (0.0f64, 0.0f64);
+    for p in punches {
+        let bem = experiment::pull_off(&p.curve);
+        let error = bem / p.exact.1 - 1.0;
+        worst_pull = worst_pull.max(error.abs());
+        worst_loading = worst_loading.max(p.loading_error);
         println!(
-            "  h = {h:>4} mm, D = {d:>4} mm: {:9.2} / {:9.2}",
-            experiment::pull_off(curve) * 1e3,
-            exact * 1e3
+            "  h = {:>4} mm, D = {:>4} mm: {:9.2} / {:9.2}  {:+.2} %; loading {:.2} %",
+            p.h,
+            p.d,
+            bem * 1e3,
+            p.exact.1 * 1e3,
+            100.0 * error,
+            100.0 * p.loading_error
         );
     }
-    println!("\nsphere pull-off [mN], BEM / exact JKR on the layer (load control):");
-    for (r, h, dgamma, curve) in spheres {
-        let exact = experiment::exact_sphere_pull_off(*r, *h, *dgamma)?;
+    println!("\nsphere pull-off [mN], BEM / exact JKR on the layer (load control), error; loading branch error:");
+    for s in spheres {
+        let bem = experiment::pull_off(&s.curve);
+        let error = bem / s.exact.1 - 1.0;
+        worst_pull = worst_pull.max(error.abs());
+        worst_loading = worst_loading.max(s.loading_error);
         println!(
-            "  R = {r:>5} mm, h = {h:>4} mm, dgamma1 = {dgamma:5.3}: {:9.2} / {:9.2}",
-            experiment::pull_off(curve) * 1e3,
-            exact * 1e3
+            "  R = {:>5} mm, h = {:>4} mm, dgamma1 = {:5.3}: {:9.2} / {:9.2}  {:+.2} %; loading {:.2} %",
+            s.r,
+            s.h,
+            s.dgamma,
+            bem * 1e3,
+            s.exact.1 * 1e3,
+            100.0 * error,
+            100.0 * s.loading_error
         );
     }
+    println!(
+        "\nworst pull-off error {:.2} %, worst loading-branch error {:.2} % (of the peak force)",
+        100.0 * worst_pull,
+        100.0 * worst_loading
+    );
     Ok(())
 }
