@@ -1,12 +1,17 @@
 //! Full solves: a non-adhesive sphere on a film (N = 128 .. 1024 cells
-//! across the grid) and an adhesive load-unload curve of a sphere
-//! (N = 64 .. 256; finer curves are timed by the `accuracy` example).
+//! across the grid) and one adhesive loading and unloading cycle of a sphere
+//! on a film with hysteresis, 64 and 128 cells across the pull-off contact,
+//! by the energy balance (and, at 64, the mesh-dependent criterion for
+//! comparison; finer curves are timed by the `accuracy` example).
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::hint::black_box;
 
 use layered_contact::indenter::Sphere;
-use layered_contact::scene::{Adhesion, IndenterSpec, Protocol, Resolution, Scene, SubstrateSpec};
+use layered_contact::scene::{
+    Adhesion, AdhesionMethod, IndenterSpec, Protocol, Resolution, Scene, SolverSettings,
+    SubstrateSpec,
+};
 use layered_contact::solver::{ContactSolver, SolverParams};
 use layered_contact::{Boundary, Grid, Material, Substrate};
 
@@ -32,16 +37,21 @@ fn bench_solver(c: &mut Criterion) {
     }
     group.finish();
 
-    let mut group = c.benchmark_group("adhesive curve (sphere, 10 + unloading steps)");
+    let mut group =
+        c.benchmark_group("adhesive cycle (sphere R = 30 mm on a 5 mm film, d = 0.1 mm)");
     group.sample_size(10);
-    for n in [64usize, 128, 256] {
+    for (n, method) in [
+        (64usize, AdhesionMethod::EnergyBalance),
+        (128, AdhesionMethod::EnergyBalance),
+        (64, AdhesionMethod::MeshCriterion),
+    ] {
         let scene = Scene {
             substrate: SubstrateSpec::LayerOnRigidBase {
                 youngs_modulus: 0.324e6,
                 poisson_ratio: 0.48,
                 thickness: 5e-3,
             },
-            indenter: IndenterSpec::Sphere { radius: 0.03 },
+            indenter: IndenterSpec::Paraboloid { radius: 0.03 },
             adhesion: Adhesion::Hysteresis {
                 loading: 0.0175,
                 unloading: 0.326,
@@ -52,12 +62,20 @@ fn bench_solver(c: &mut Criterion) {
             },
             resolution: Resolution {
                 cells_across: n,
-                margin: 0.15,
+                margin: 0.05,
+            },
+            solver: SolverSettings {
+                adhesion_method: method,
+                ..SolverSettings::default()
             },
             ..Scene::default()
         };
         let mut solver = scene.solver().unwrap();
-        group.bench_function(BenchmarkId::from_parameter(n), |b| {
+        let name = match method {
+            AdhesionMethod::EnergyBalance => "energy balance",
+            _ => "mesh criterion",
+        };
+        group.bench_function(BenchmarkId::new(name, n), |b| {
             b.iter(|| scene.run_on(&mut solver, &mut |_| {}).unwrap().steps.len())
         });
     }

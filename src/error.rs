@@ -11,11 +11,8 @@
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum Error {
-    /// Young's modulus is not a positive finite number, or is so large that
-    /// the contact modulus `E / (1 - nu^2)` overflows.
-    #[error(
-        "Young's modulus must be positive and finite (and E/(1 - nu^2) finite), got {value} Pa"
-    )]
+    /// Young's modulus is NaN or outside `[1e-150, 1e150]` Pa.
+    #[error("Young's modulus must lie in [1e-150, 1e150] Pa, got {value} Pa")]
     InvalidYoungsModulus {
         /// The rejected value, in Pa.
         value: f64,

@@ -2,10 +2,15 @@
 
 use crate::error::{poisson_ratio, Error, Result};
 
+/// The smallest Young's modulus accepted, Pa.
+pub const MIN_MODULUS: f64 = 1e-150;
+/// The largest Young's modulus accepted, Pa.
+pub const MAX_MODULUS: f64 = 1e150;
+
 /// An isotropic linear-elastic material, given by Young's modulus `E` (Pa)
 /// and Poisson's ratio `nu`.
 ///
-/// Both are validated at construction: `E` positive and finite, `nu` in
+/// Both are validated at construction: `E` in `[1e-150, 1e150]` Pa, `nu` in
 /// `[0, 0.5]` (`nu = 0.5`, an incompressible rubber, is an ordinary case).
 /// The plane-strain contact modulus `E* = E / (1 - nu^2)` is derived, never
 /// passed in, so the two cannot be confused.
@@ -29,16 +34,18 @@ impl Material {
     /// ratio `poisson_ratio`.
     ///
     /// # Errors
-    /// [`Error::InvalidYoungsModulus`] if `E <= 0`, NaN, infinite, or so large
-    /// that `E*` overflows; [`Error::InvalidPoissonRatio`] if `nu` is outside
-    /// `[0, 0.5]` or NaN.
+    /// [`Error::InvalidYoungsModulus`] if `E` is NaN or outside
+    /// `[1e-150, 1e150]` Pa (far beyond any material, and the range in which
+    /// compliances `1/(pi E*)` and modulus ratios stay normal `f64` numbers:
+    /// `E = 1.2e308` would make every influence coefficient underflow to 0);
+    /// [`Error::InvalidPoissonRatio`] if `nu` is outside `[0, 0.5]` or NaN.
     pub fn new(youngs_modulus: f64, poisson_ratio: f64) -> Result<Self> {
         let nu = self::poisson_ratio(poisson_ratio)?;
         let material = Material {
             youngs_modulus,
             poisson_ratio: nu,
         };
-        if youngs_modulus > 0.0 && material.contact_modulus().is_finite() {
+        if (MIN_MODULUS..=MAX_MODULUS).contains(&youngs_modulus) {
             Ok(material)
         } else {
             Err(Error::InvalidYoungsModulus {

@@ -122,6 +122,9 @@ pub enum Substrate {
     Coated(Coating),
 }
 
+/// The largest layer-to-base shear modulus ratio `mu1/mu2` accepted.
+pub const MAX_SHEAR_RATIO: f64 = 1e7;
+
 impl Substrate {
     /// A homogeneous half-space of `material`.
     pub fn half_space(material: Material) -> Self {
@@ -151,12 +154,24 @@ impl Substrate {
     /// `layer == base` the layer's half-space.
     ///
     /// # Errors
-    /// [`Error::InvalidThickness`] if `thickness` is NaN or negative.
+    /// [`Error::InvalidThickness`] if `thickness` is NaN or negative;
+    /// [`Error::InvalidParameter`] if the base is more than `1e7` times
+    /// softer in shear than the layer (`mu1/mu2 > 1e7`): the base then
+    /// carries nothing the kernel can resolve (and at `mu1/mu2` beyond the
+    /// `f64` range the kernel's integrals would not end).
     pub fn layer_on_elastic_base(layer: Material, thickness: f64, base: Material) -> Result<Self> {
         if thickness.is_nan() || thickness < 0.0 {
             return Err(Error::InvalidThickness {
                 value: thickness,
                 expected: "non-negative (or +inf for a half-space)",
+            });
+        }
+        let shear_ratio = layer.shear_modulus() / base.shear_modulus();
+        if thickness > 0.0 && thickness < f64::INFINITY && !(shear_ratio <= MAX_SHEAR_RATIO) {
+            return Err(Error::InvalidParameter {
+                name: "shear modulus ratio mu1/mu2 (layer over base)",
+                value: shear_ratio,
+                expected: "at most 1e7 (a base 1e7 times softer than its layer carries nothing)",
             });
         }
         if thickness == 0.0 {

@@ -44,7 +44,16 @@ fn material_values_and_errors() {
         assert!(matches!(err, Error::InvalidPoissonRatio { .. }));
         assert!(err.to_string().contains(&format!("{bad}")));
     }
-    assert!(Material::new(1e-300, 0.0).is_ok());
+    // The accepted range is [1e-150, 1e150] Pa: 1.2e308 made every influence
+    // coefficient underflow to 0 and a subnormal E made them infinite (issue
+    // 12, finding 5); both ends are accepted, just beyond them refused.
+    for bad in [1e-300, 5e-324, 0.9999e-150, 1.0001e150, 1.2e308] {
+        assert!(matches!(
+            Material::new(bad, 0.0),
+            Err(Error::InvalidYoungsModulus { value }) if value == bad
+        ));
+    }
+    assert!(Material::new(1e-150, 0.0).is_ok() && Material::new(1e150, 0.5).is_ok());
 }
 
 #[test]

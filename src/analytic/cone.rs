@@ -1,5 +1,6 @@
 //! Rigid conical punch on a half-space.
 
+use super::non_negative;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 use crate::error::{Error, Result};
@@ -53,12 +54,12 @@ impl Cone {
 
     /// The contact radius `a = 2 d tan(theta) / pi` at `depth` (0 for `d <= 0`), m.
     pub fn contact_radius(&self, depth: f64) -> f64 {
-        2.0 * depth.max(0.0) / (PI * self.slope)
+        2.0 * non_negative(depth) / (PI * self.slope)
     }
 
     /// The force `2 E* d^2 tan(theta) / pi` at `depth` (0 for `d <= 0`), N.
     pub fn force(&self, depth: f64) -> f64 {
-        let d = depth.max(0.0);
+        let d = non_negative(depth);
         2.0 * self.contact_modulus * d * d / (PI * self.slope)
     }
 

@@ -1,5 +1,6 @@
 //! Hertz contact of a rigid sphere (paraboloid) with a half-space.
 
+use super::non_negative;
 use std::f64::consts::PI;
 
 use crate::error::{positive_finite, Result};
@@ -48,18 +49,18 @@ impl Hertz {
 
     /// The contact radius `a = sqrt(R d)` at `depth` (0 for `d <= 0`), m.
     pub fn contact_radius(&self, depth: f64) -> f64 {
-        (self.radius * depth.max(0.0)).sqrt()
+        (self.radius * non_negative(depth)).sqrt()
     }
 
     /// The force `(4/3) E* sqrt(R) d^(3/2)` at `depth` (0 for `d <= 0`), N.
     pub fn force(&self, depth: f64) -> f64 {
-        let d = depth.max(0.0);
+        let d = non_negative(depth);
         4.0 / 3.0 * self.contact_modulus * self.radius.sqrt() * d * d.sqrt()
     }
 
     /// The depth at which the force is `force` (0 for `F <= 0`), m.
     pub fn depth_at_force(&self, force: f64) -> f64 {
-        (0.75 * force.max(0.0) / (self.contact_modulus * self.radius.sqrt())).powf(2.0 / 3.0)
+        (0.75 * non_negative(force) / (self.contact_modulus * self.radius.sqrt())).powf(2.0 / 3.0)
     }
 
     /// The contact stiffness `dF/dd = 2 a E*` at `depth`, N/m.

@@ -1,5 +1,6 @@
 //! JKR adhesive contact of a rigid sphere (paraboloid) with a half-space.
 
+use super::non_negative;
 use std::f64::consts::PI;
 
 use crate::error::{non_negative_finite, positive_finite, Result};
@@ -64,7 +65,7 @@ impl JkrSphere {
 
     /// The force `F(a)` at contact radius `a` (m), N.
     pub fn force(&self, contact_radius: f64) -> f64 {
-        let a = contact_radius.max(0.0);
+        let a = non_negative(contact_radius);
         let e = self.contact_modulus;
         4.0 * e * a.powi(3) / (3.0 * self.radius)
             - (8.0 * PI * self.work_of_adhesion * e * a.powi(3)).sqrt()
@@ -72,7 +73,7 @@ impl JkrSphere {
 
     /// The depth `d(a)` at contact radius `a` (m), m.
     pub fn depth(&self, contact_radius: f64) -> f64 {
-        let a = contact_radius.max(0.0);
+        let a = non_negative(contact_radius);
         a * a / self.radius - (2.0 * self.adhesion_length() * a).sqrt()
     }
 

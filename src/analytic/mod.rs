@@ -35,3 +35,13 @@ pub use lambda::{a_m, lambda, lambda_g};
 pub use layered_jkr::LayeredJkrCycle;
 pub use punch::{FlatPunch, JkrFlatPunch};
 pub use series::{PunchStiffnessSeries, SeriesStiffness};
+
+/// `x` clamped at zero from below, with NaN kept NaN (`f64::max` would turn
+/// a NaN argument into 0, a silent wrong answer).
+fn non_negative(x: f64) -> f64 {
+    if x.is_nan() {
+        x
+    } else {
+        x.max(0.0)
+    }
+}

@@ -1,6 +1,7 @@
 //! Flat cylindrical punch on a homogeneous half-space, with and without
 //! adhesion.
 
+use super::non_negative;
 use std::f64::consts::PI;
 
 use crate::error::{non_negative_finite, positive_finite, Result};
@@ -47,7 +48,7 @@ impl FlatPunch {
 
     /// The force at `depth` without adhesion: `2 a E* d` for `d > 0`, else 0.
     pub fn force(&self, depth: f64) -> f64 {
-        self.stiffness() * depth.max(0.0)
+        self.stiffness() * non_negative(depth)
     }
 
     /// The contact pressure at radius `r` under total force `force`:

@@ -3,9 +3,11 @@
 //! * [`conventions`]: units, signs, names.
 //! * [`theory`]: the coating factor, the Green's function and the influence coefficients.
 //! * [`axisymmetric`]: the exact axisymmetric solutions and their Fredholm equation.
+//! * [`adhesion`]: the two JKR adhesion methods, energy balance and mesh criterion.
 //! * [`accuracy`]: what each part achieves, and what it costs.
 
 pub mod accuracy;
+pub mod adhesion;
 pub mod axisymmetric;
 pub mod conventions;
 pub mod theory;

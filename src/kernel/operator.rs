@@ -59,6 +59,8 @@ pub struct ComplianceOperator {
     influence: Option<InfluenceCoefficients>,
     /// Whether the kernel is that of a coated body (else a half-space's).
     layered: bool,
+    /// Whether the body is a layer on a rigid base.
+    rigid_base: bool,
     /// FFT sizes: rows and columns of the (padded) grid.
     size: (usize, usize),
     /// The kernel's spectrum, transposed (`columns/2 + 1` rows of `rows`
@@ -148,13 +150,75 @@ impl std::fmt::Debug for ComplianceOperator {
     }
 }
 
+/// Cell compliances `Delta / E*` outside this range make influence
+/// coefficients or pressures leave the normal `f64` range.
+const MIN_CELL_COMPLIANCE: f64 = 1e-280;
+const MAX_CELL_COMPLIANCE: f64 = 1e280;
+/// The thinnest layer on a rigid base, in cells (`h / Delta`).
+pub const MIN_THICKNESS_OVER_SPACING: f64 = 1e-3;
+/// The smallest uniaxial-strain compliance of a film thinner than a cell,
+/// relative to the cell's half-space compliance, that the influence
+/// coefficients resolve.
+const MIN_FILM_COMPLIANCE: f64 = 1e-3;
+
+/// Checks that a layer on a rigid base is thick enough, relative to the
+/// cells, for its influence coefficients to mean something: `h / Delta`
+/// at least `1e-3`, and, for a film thinner than a cell, its uniaxial-strain
+/// compliance `h / M` at least `1e-3` of the cell's half-space compliance
+/// `Delta / E*`. A nearly incompressible film thinner than a cell
+/// (`nu -> 0.5`, `M -> inf`) is refused: its true compliance, of order
+/// `(h/Delta)^3` of the cell's (lubrication), falls below the coefficients'
+/// accuracy, and they would be rounding noise that is not positive
+/// definite. Use a finer grid (`Delta < h`) there.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] naming `h / Delta` and the range.
+pub fn check_film(substrate: &Substrate, grid: &Grid) -> Result<()> {
+    let Substrate::Coated(coating) = substrate else {
+        return Ok(());
+    };
+    if !matches!(coating.base(), crate::substrate::Base::Rigid) {
+        return Ok(());
+    }
+    let ratio = coating.thickness() / grid.spacing();
+    if !(ratio >= MIN_THICKNESS_OVER_SPACING) {
+        return Err(Error::InvalidParameter {
+            name: "h / Delta (layer thickness over cell size)",
+            value: ratio,
+            expected: "at least 1e-3 on a rigid base",
+        });
+    }
+    let layer = coating.layer();
+    let film = ratio * layer.contact_modulus() / layer.uniaxial_strain_modulus();
+    if ratio < 1.0 && !(film >= MIN_FILM_COMPLIANCE) {
+        return Err(Error::InvalidParameter {
+            name: "h / Delta (layer thickness over cell size)",
+            value: ratio,
+            expected: "at least 1 for a nearly incompressible film on a rigid base \
+                       (its compliance is below the kernel's accuracy; refine the grid)",
+        });
+    }
+    Ok(())
+}
+
 impl ComplianceOperator {
     /// The operator of `substrate` on `grid` with `boundary`.
     ///
     /// # Errors
-    /// None at present for valid `Substrate` and `Grid` values; the `Result`
-    /// is kept for resource limits.
+    /// [`Error::InvalidParameter`] for a layer on a rigid base thinner than
+    /// the grid can resolve (see [`check_film`]), or a cell whose compliance
+    /// `Delta / E*` is not a normal `f64` number (cell size and modulus out of
+    /// range together).
     pub fn new(substrate: &Substrate, grid: &Grid, boundary: Boundary) -> Result<Self> {
+        check_film(substrate, grid)?;
+        let cell_compliance = grid.spacing() / substrate.surface_material().contact_modulus();
+        if !(MIN_CELL_COMPLIANCE..=MAX_CELL_COMPLIANCE).contains(&cell_compliance) {
+            return Err(Error::InvalidParameter {
+                name: "cell compliance Delta / E* (m/Pa)",
+                value: cell_compliance,
+                expected: "within [1e-280, 1e280]: rescale lengths or moduli",
+            });
+        }
         let (rows, columns) = (grid.rows(), grid.columns());
         let size = match boundary {
             Boundary::Isolated => (2 * rows, 2 * columns),
@@ -190,6 +254,7 @@ impl ComplianceOperator {
             boundary,
             influence: None,
             layered: matches!(substrate, Substrate::Coated(_)),
+            rigid_base: matches!(substrate, Substrate::Coated(c) if matches!(c.base(), crate::substrate::Base::Rigid)),
             size,
             spectrum: Vec::new(),
             inverse_spectrum: Vec::new(),
@@ -210,6 +275,14 @@ impl ComplianceOperator {
             Boundary::Periodic => operator.periodic_spectrum(&FourierCompliance::new(substrate)),
         };
         Ok(operator)
+    }
+
+    /// Whether the uniform pressure mode has a finite compliance: on an
+    /// isolated grid always; on a periodic grid only for a layer on a rigid
+    /// base (elsewhere a uniform pressure on an infinite body sinks without
+    /// bound, and the mean displacement is undetermined).
+    pub fn uniform_mode_bounded(&self) -> bool {
+        self.boundary == Boundary::Isolated || self.rigid_base
     }
 
     /// The grid the operator acts on.

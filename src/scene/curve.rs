@@ -38,7 +38,9 @@ pub struct Step {
     pub contact_area: f64,
     /// Radius of the circle of equal area, m.
     pub contact_radius: f64,
-    /// Solver iterations of this step.
+    /// Solver iterations of this step. With the energy-balance adhesion
+    /// method the whole cost (building the branches) is counted on the
+    /// first step and the others cost none.
     pub iterations: usize,
 }
 

@@ -107,11 +107,15 @@ pub enum Protocol {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(default, deny_unknown_fields))]
 pub struct Resolution {
-    /// Cells across the largest contact diameter the protocol reaches (the
-    /// punch diameter, or the Hertz estimate for curved indenters).
+    /// Cells across the smallest contact diameter the protocol must
+    /// resolve, 8 to 8192: the punch's diameter; for curved indenters the
+    /// largest contact the protocol reaches (Hertz or exact layered
+    /// estimate) or, in an adhesive scene with a sphere or paraboloid, the
+    /// pull-off contact (exact layered JKR) if that is smaller.
     pub cells_across: usize,
-    /// Extra width around that contact, as a fraction of its diameter
-    /// (curved indenters only; the grid grows if the contact reaches its edge).
+    /// Extra width around the largest contact, as a fraction of its
+    /// diameter on each side, at most 10 (curved indenters only; the grid
+    /// grows if the contact reaches its edge).
     pub margin: f64,
 }
 

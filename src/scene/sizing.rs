@@ -49,7 +49,7 @@ impl Scene {
                     .unwrap_or(1.5 * hertz),
                     crate::substrate::Substrate::HalfSpace(_) => hertz,
                 };
-                estimate.min(radius).max(f64::MIN_POSITIVE)
+                estimate.min(radius)
             }
             (
                 IndenterSpec::Cone {
@@ -142,6 +142,20 @@ impl Scene {
             Some((peak, pull_off)) => (peak, peak.min(pull_off)),
             None => {
                 let peak = self.contact_radius_estimate()?;
+                if !(peak.is_normal() && peak > 0.0) {
+                    let (name, value) = match self.protocol {
+                        Protocol::Depth { depth } => ("depth", depth),
+                        Protocol::Cycle { max_depth, .. } => ("max_depth", max_depth),
+                        Protocol::Force { force } => ("force", force),
+                        Protocol::ForceCycle { max_force, .. } => ("max_force", max_force),
+                    };
+                    return Err(Error::InvalidParameter {
+                        name,
+                        value,
+                        expected: "a load that makes contact (the grid of a curved \
+                                   indenter is sized from its contact)",
+                    });
+                }
                 (peak, peak)
             }
         };

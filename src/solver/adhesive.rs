@@ -186,6 +186,7 @@ impl ContactSolver {
                     residual,
                     Some(&attached),
                 );
+                super::check_solution(&solution)?;
                 return Ok((solution, WarmStart { pressure, attached }));
             }
         }
@@ -245,6 +246,12 @@ impl ContactSolver {
             } else {
                 ws.gap[c] = 0.0;
             }
+        }
+        if !(b_norm.is_finite() && r_norm.is_finite()) {
+            return Err(Error::NonFinite {
+                what: "clamped solve (prescribed displacements or their norm overflow)",
+                value: b_norm + r_norm,
+            });
         }
         let b_norm = b_norm.sqrt().max(f64::MIN_POSITIVE);
         let mut rz = precondition(&mut self.operator, attached, &ws.gap, &mut ws.previous)?;

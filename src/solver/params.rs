@@ -98,6 +98,11 @@ pub struct Solution {
     pub contact_radius: f64,
     /// Number of cells in contact.
     pub contact_cells: usize,
+    /// Whether the contact touches the outer ring of cells of an isolated
+    /// grid: unless the indenter itself ends there (a punch as wide as the
+    /// grid), the contact was truncated by the grid and the result is wrong;
+    /// solve again on a wider grid. Always `false` on a periodic grid.
+    pub edge_contact: bool,
     /// Iterations used (operator applications per solve, roughly).
     pub iterations: usize,
     /// Final residual.

@@ -254,6 +254,21 @@ impl ContactSolver {
                     depth = sum / count.max(1) as f64;
                 }
                 let solution = self.solution(&pressure, depth, iteration, residual, None);
+                super::check_solution(&solution)?;
+                if matches!(control, Control::Depth(_))
+                    && solution.contact_cells == n
+                    && !self.operator.uniform_mode_bounded()
+                {
+                    // Periodic grid in full contact: the mean pressure is
+                    // undetermined by the depth (infinite compliance of the
+                    // uniform mode).
+                    return Err(Error::Unsupported {
+                        feature: "full contact under depth control on a periodic grid \
+                                  without a rigid base",
+                        reason: "the mean pressure is undetermined (the uniform mode's \
+                                 compliance is infinite); prescribe the force (solve_force)",
+                    });
+                }
                 let attached = pressure.iter().map(|p| *p > 0.0).collect();
                 return Ok((solution, WarmStart { pressure, attached }));
             }

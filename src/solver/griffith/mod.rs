@@ -1,33 +1,12 @@
 //! Adhesive contact in the JKR limit by an energy (Griffith) balance over the
-//! contact edge.
-//!
-//! For a fixed contact set `S` the clamped problem is linear in the depth:
-//! the pressure is `p = d p1 - pf`, with `p1` the flat-punch solution of `S`
-//! (unit displacement) and `pf` the one that gives the indenter's profile
-//! `f`. The stored elastic energy at depth `d` is therefore a quadratic,
-//!
-//! ```text
-//! U(d, S) = (k d^2 - 2 f1 d + f2) / 2,   k = sum p1 Delta^2,
-//!           f1 = sum pf Delta^2,  f2 = sum pf f Delta^2,
-//! ```
-//!
-//! and the force `F = k d - f1`. Along a nested family of contact sets of
-//! growing area `A`, the energy release rate of the edge under displacement
-//! control is `G = dU/dA = (k' d^2 - 2 f1' d + f2') / 2` (primes: `d/dA`),
-//! and the Griffith balance `G = dgamma` is a quadratic in `d` whose root
-//! with a tensile edge is the adhesive equilibrium (Johnson, Kendall &
-//! Roberts 1971; in this compliance form Shull 2002, Mater. Sci. Eng. R 36,
-//! 1, eq. 31; Maugis 2000, Contact, Adhesion and Rupture of Elastic Solids,
-//! ch. 5). For a paraboloid it gives the JKR curve exactly in the limit of
-//! fine grids, on any substrate, because `k`, `f1` and `f2` are integral
-//! quantities that converge with the grid, and the contact area is a
-//! continuous parameter rather than a staircase of whole cells.
-//!
-//! The family is the sequence of level sets of the indenter's profile (ties,
-//! such as a flat punch's face, broken by the distance from the axis), so the
-//! balance is the edge-averaged one: exact for axisymmetric contacts, whose
-//! energy release rate is the same all along the edge, and an average for
-//! others. A family whose sets split into separate patches is refused.
+//! contact edge, along a nested family of contact sets: for each set two
+//! clamped solves give the stiffness `k` and the shape terms `f1`, `f2` of
+//! the stored energy `U(d) = (k d^2 - 2 f1 d + f2) / 2`, and
+//! `G = dU/dA = dgamma` fixes the depth of each contact area (Johnson,
+//! Kendall & Roberts 1971; in this compliance form Shull 2002, Mater. Sci.
+//! Eng. R 36, 1). The derivation, the fits and the edge shift are in
+//! [`doc::adhesion`](crate::doc::adhesion); the evaluation of the branches is
+//! in `branches.rs`.
 
 use crate::error::{Error, Result};
 use crate::indenter::Indenter;
@@ -60,7 +39,7 @@ const MAX_WIDENINGS: usize = 4;
 /// The piecewise-constant pressures miss part of the square-root edge
 /// singularity, which a slightly smaller contact reproduces: the BEM
 /// stiffness of a digital disc on a half-space is `2 E* (r - 0.117 Delta)`
-/// to 1e-3 from 10 to 40 cells of radius (tested), and since the missing
+/// to about 1e-3 from 10 to 40 cells of radius (tested), and since the missing
 /// energy is a property of the edge alone, the same shift corrects the
 /// stiffness, the shape terms and their area derivatives together.
 pub const EDGE_SHIFT: f64 = 0.117;

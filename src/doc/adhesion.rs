@@ -1,0 +1,106 @@
+//! # Adhesion in the JKR limit: two methods
+//!
+//! In the JKR limit (Johnson, Kendall & Roberts 1971, Proc. R. Soc. A 324,
+//! 301) the adhesive contact is a crack between the indenter and the body:
+//! the contact edge stands where the energy release rate `G` equals the work
+//! of adhesion `dgamma`. With adhesion hysteresis the edge advances only
+//! while `G <= dgamma0` and recedes only while `G >= dgamma1 >= dgamma0`.
+//! The crate offers two ways to put that on a grid of square cells.
+//!
+//! ## The energy balance (default)
+//!
+//! [`ContactSolver::adhesive_branches`](crate::solver::ContactSolver::adhesive_branches),
+//! [`AdhesionMethod::EnergyBalance`](crate::scene::AdhesionMethod::EnergyBalance).
+//!
+//! For a fixed contact set `S` the problem is linear in the depth: with
+//! `p1` the pressure of the flat punch `S` pressed by a unit depth and `pf`
+//! the pressure that gives the indenter's profile `f` on `S`, the pressure
+//! at depth `d` is `p = d p1 - pf`. Summing over the cells,
+//!
+//! ```text
+//! k  = sum p1 Delta^2        (flat-punch stiffness of S)
+//! f1 = sum pf Delta^2 = sum p1 f Delta^2   (reciprocity)
+//! f2 = sum pf f Delta^2
+//! F(d)  = k d - f1
+//! U(d)  = (k d^2 - 2 f1 d + f2) / 2        (stored elastic energy)
+//! ```
+//!
+//! Along a nested family of contact sets of growing area `A`, the energy
+//! released per unit area of crack at fixed depth is
+//!
+//! ```text
+//! G(d, A) = dU/dA = (k' d^2 - 2 f1' d + f2') / 2,     ' = d/dA,
+//! ```
+//!
+//! and `G = dgamma` is a quadratic in `d` whose root with a tensile edge,
+//! `d = f1'/k' - sqrt(f1'^2 - k' f2' + 2 dgamma k') / k'`, is the adhesive
+//! equilibrium of that contact; the force follows as `F = k d - f1`. This is
+//! JKR's superposition of a non-adhesive contact and a flat punch, in the
+//! compliance form of Shull (2002, Mater. Sci. Eng. R 36, 1): for a
+//! paraboloid on a half-space it reproduces `F(a) = 4 E* a^3/(3R) -
+//! sqrt(8 pi dgamma E* a^3)` exactly, and on a layer it is the same balance
+//! the exact solutions of [`Axisymmetric`](crate::analytic::Axisymmetric)
+//! solve.
+//!
+//! On the grid:
+//!
+//! * the family is the level sets of the indenter's profile (ties, such as a
+//!   flat punch's face, broken by the distance from the axis): discs of
+//!   growing radius for axisymmetric indenters, one set every cell of radius
+//!   or every 10 % of it, whichever is more;
+//! * each set costs two clamped conjugate-gradient solves, warm-started from
+//!   the previous set (about 8 iterations each);
+//! * `k`, `f1`, `f2` are fitted against the contact radius by local
+//!   least-squares quadratics in `(ln r, ln y)` over a window of about seven
+//!   sets (the terms grow like powers of the radius, which such fits follow
+//!   exactly), and the fits give the derivatives and every value between
+//!   the sets: the contact area is a continuous variable, not a staircase of
+//!   whole cells;
+//! * each set's radius is its equal-area radius less
+//!   [`EDGE_SHIFT`](crate::solver::EDGE_SHIFT)` = 0.117` cells. Piecewise
+//!   constant pressures miss part of the square-root singularity at the
+//!   edge; the energy they miss is a property of the edge alone, so a
+//!   digital disc behaves like a slightly smaller smooth disc. The shift is
+//!   calibrated on the BEM stiffness of digital discs on a half-space
+//!   (`2 E* (r - 0.117 Delta)` to about `1e-3` from 10 to 40 cells of
+//!   radius, tested) and removes the leading `1/N` error of every term
+//!   together.
+//!
+//! Once the branches are built, any depth or force, loading or unloading,
+//! costs no solve: [`AdhesiveBranches::at_depth`](crate::solver::AdhesiveBranches::at_depth)
+//! and [`at_force`](crate::solver::AdhesiveBranches::at_force) walk the edge
+//! from the previous contact area (the history), and
+//! [`pull_off`](crate::solver::AdhesiveBranches::pull_off) and
+//! [`jump_off`](crate::solver::AdhesiveBranches::jump_off) locate the minima
+//! of force and depth exactly. Force control (load-controlled JKR tests,
+//! AFM) comes for free, with the jump into contact at first touch and a
+//! typed [`Error::NoEquilibrium`](crate::Error::NoEquilibrium) beyond the
+//! pull-off force.
+//!
+//! Limits: the balance is the edge-averaged one, exact when `G` is the same
+//! all along the edge (axisymmetric contacts) and an average otherwise (a
+//! tilted or elliptic indenter); a family whose sets split into separate
+//! patches (a rough surface) is refused with
+//! [`Error::Unsupported`](crate::Error::Unsupported). The shift is
+//! calibrated where the layer is many cells thick (`h/Delta` above about
+//! 10); on films thinner than a few cells its correction is approximate.
+//!
+//! ## The mesh-dependent criterion (reference)
+//!
+//! [`ContactSolver::solve_depth_hysteretic`](crate::solver::ContactSolver::solve_depth_hysteretic),
+//! [`AdhesionMethod::MeshCriterion`](crate::scene::AdhesionMethod::MeshCriterion).
+//!
+//! Pohrt & Popov (2015, Facta Univ. Mech. Eng. 13, 3): a cell in contact may
+//! carry tension down to `-sigma_c = -sqrt(E1* dgamma / (0.473201 Delta))`;
+//! an edge cell whose tension exceeds it detaches. This is the criterion of
+//! the simulations of the reference experiments (Lyashenko, Popov &
+//! Borysiuk 2023), kept so that they can be reproduced, and it works cell by
+//! cell for any contact shape, rough surfaces included. But the staircase
+//! edge traps the contact (it recedes late), and the pull-off force of a
+//! sphere comes out too strong by about `3/N` (`N` cells across the pull-off
+//! contact: 16 % at 16, 6 % at 32, 3 % at 64), at tens of times the cost of
+//! the energy balance; flat punches, whose edge does not move, fare better
+//! (0.2-0.5 % at 64 cells).
+//!
+//! The numbers, for both methods on a half-space and on layers, are in
+//! [`accuracy`](super::accuracy).
