@@ -122,6 +122,14 @@ pub enum Error {
         /// The least (most tensile) force with an equilibrium, N.
         least: f64,
     },
+    /// The memory a computation needs could not be had.
+    #[error("{what} need about {bytes} bytes, which could not be allocated")]
+    OutOfMemory {
+        /// The estimate, in bytes.
+        bytes: usize,
+        /// What needed it.
+        what: &'static str,
+    },
     /// An iterative method stopped before reaching its tolerance.
     #[error("{method} did not converge after {iterations} iterations (residual {residual:e})")]
     NoConvergence {

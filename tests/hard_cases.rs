@@ -434,7 +434,12 @@ proptest! {
         let substrate = spec.build().unwrap();
         let shape = shape.build(None).unwrap();
         let grid = Grid::new(n, n + 1, 10f64.powf(log_spacing)).unwrap();
-        let mut solver = isolated_solver(&substrate, &grid);
+        // A nearly incompressible film thinner than half a cell is refused
+        // with a typed error naming h/Delta (issue 12, finding 6).
+        let mut solver = match ContactSolver::new(&substrate, &grid, Boundary::Isolated, SolverParams::default()) {
+            Err(Error::InvalidParameter { name, .. }) if name.starts_with("h / Delta") => return Ok(()),
+            other => other.unwrap(),
+        };
         let d = 10f64.powf(log_depth);
         let first = solver.solve_depth(&shape, d, None, &mut ());
         let second = solver.solve_depth(&shape, 2.0 * d, None, &mut ());

@@ -366,7 +366,12 @@ proptest! {
         let n = grid.len();
         let p1 = &seed[..n];
         let p2 = &seed[36..36 + n];
-        let mut operator = ComplianceOperator::new(&substrate, &grid, Boundary::Isolated).unwrap();
+        // Nearly incompressible films thinner than half a cell are refused
+        // with a typed error naming h/Delta (their coefficients were noise).
+        let mut operator = match ComplianceOperator::new(&substrate, &grid, Boundary::Isolated) {
+            Err(Error::InvalidParameter { name, .. }) if name.starts_with("h / Delta") => return Ok(()),
+            other => other.unwrap(),
+        };
         let (mut u1, mut u2) = (vec![0.0; n], vec![0.0; n]);
         operator.apply(p1, &mut u1).unwrap();
         operator.apply(p2, &mut u2).unwrap();

@@ -39,6 +39,9 @@ const MIN_ORDER: usize = 16;
 const MAX_ORDER: usize = 4096;
 /// Relative change between two orders that counts as converged.
 const CONVERGED: f64 = 1e-11;
+/// Also accepted as converged: a change that stalls (rounding floor) below
+/// this.
+const ROUNDING_FLOOR: f64 = 1e-8;
 
 /// The cosine transform `k(y)` of `Lambda_g`, and its derivative, tabulated.
 #[derive(Debug)]
@@ -152,6 +155,7 @@ impl Nystrom {
     fn converged(kernel: &Arc<CosineKernel>, eps: f64) -> Result<Self> {
         let mut order = MIN_ORDER.max((4.0 * eps).ceil() as usize);
         let mut previous = Self::solve(kernel, eps, order)?;
+        let mut last_change = f64::INFINITY;
         loop {
             order *= 2;
             if order > MAX_ORDER {
@@ -172,9 +176,14 @@ impl Nystrom {
             .map(|(a, b)| ((a - b) / a.abs().max(f64::MIN_POSITIVE)).abs())
             .fold(0.0, f64::max);
             next.change = change;
-            if change < CONVERGED {
+            // Converged, or at the rounding floor: the change no longer
+            // falls (the Nystrom error falls exponentially with the order
+            // until rounding, which grows with `a/h` for incompressible
+            // layers, takes over) and is already small.
+            if change < CONVERGED || (change < ROUNDING_FLOOR && change > 0.25 * last_change) {
                 return Ok(next);
             }
+            last_change = change;
             previous = next;
         }
     }
@@ -387,6 +396,15 @@ fn pressure_profile(
 
 /// A flat punch on the coated half-space: stiffness, edge stress intensity,
 /// JKR (Kendall) pull-off.
+///
+/// It solves the *bonded* problem: the whole face is held at the punch's
+/// displacement, so the pressure may be tensile inside the face (a stiff
+/// layer on a much softer base bends, and its middle pulls on the punch).
+/// Such a solution holds without adhesion only if the pressure is
+/// compressive everywhere: [`minimum_pressure_ratio`](Self::minimum_pressure_ratio)
+/// and [`holds_without_adhesion`](Self::holds_without_adhesion) say whether
+/// it does; where it does not, a non-adhesive punch lifts off inside and
+/// the BEM (which solves that unilateral problem) is rightly softer.
 #[derive(Debug, Clone)]
 pub struct LayeredFlatPunch {
     contact_modulus: f64,
@@ -398,6 +416,26 @@ impl LayeredFlatPunch {
     /// `eps = a/h` (0 on a half-space).
     pub fn eps(&self) -> f64 {
         self.solution.eps
+    }
+
+    /// The least pressure over the face divided by the mean pressure
+    /// `F / (pi a^2)` (independent of the depth): negative where the bonded
+    /// solution pulls on the punch. Sampled at 400 radii over `[0, 0.999 a]`
+    /// (near the edge the pressure grows like `1/sqrt(a - r)`, so the
+    /// minimum lies inside).
+    pub fn minimum_pressure_ratio(&self) -> f64 {
+        let depth = 1.0;
+        let mean = self.stiffness() * depth / (PI * self.radius * self.radius);
+        (0..400)
+            .map(|k| self.pressure(depth, 0.999 * self.radius * k as f64 / 399.0))
+            .fold(f64::INFINITY, f64::min)
+            / mean
+    }
+
+    /// Whether the bonded solution is compressive over the whole face, so
+    /// that it is also the solution without adhesion.
+    pub fn holds_without_adhesion(&self) -> bool {
+        self.minimum_pressure_ratio() >= 0.0
     }
 
     /// The stiffness `K = 2 a E1* Integral_0^1 psi`, N/m.

@@ -108,11 +108,22 @@ impl PunchStiffnessSeries {
     ///
     /// # Errors
     /// [`Error::InvalidParameter`](crate::Error::InvalidParameter) if `radius`
-    /// is not positive and finite.
+    /// is not positive and finite, or so large against the thickness that
+    /// the truncated series has lost its meaning (a ratio below 1: a layer on
+    /// a rigid base is always stiffer than its half-space; use
+    /// [`Axisymmetric`](crate::analytic::Axisymmetric) there).
     pub fn evaluate(&self, radius: f64) -> Result<SeriesStiffness> {
         let radius = positive_finite("radius", radius)?;
         let eps = radius / self.thickness;
         let ratio = self.ratio_at(eps);
+        if !(ratio >= 1.0 && ratio.is_finite()) {
+            return Err(crate::Error::InvalidParameter {
+                name: "radius / thickness (eps)",
+                value: eps,
+                expected: "small enough for the series to hold (it gives a stiffness ratio \
+                           below 1 here); use the exact Axisymmetric solution",
+            });
+        }
         Ok(SeriesStiffness {
             eps,
             ratio,

@@ -130,8 +130,16 @@ impl Cone {
                 expected: "in (0, pi/2) radians",
             });
         }
+        let slope = 1.0 / half_angle.tan();
+        if !slope.is_finite() {
+            return Err(Error::InvalidParameter {
+                name: "half_angle",
+                value: half_angle,
+                expected: "large enough that the face's slope 1/tan(angle) is finite",
+            });
+        }
         Ok(Cone {
-            slope: 1.0 / half_angle.tan(),
+            slope,
             base_radius: positive_finite("base_radius", base_radius)?,
         })
     }
@@ -140,7 +148,9 @@ impl Cone {
 impl Indenter for Cone {
     fn height(&self, x: f64, y: f64) -> f64 {
         let r = x.hypot(y);
-        if r <= self.base_radius {
+        if r == 0.0 {
+            0.0
+        } else if r <= self.base_radius {
             r * self.slope
         } else {
             f64::INFINITY

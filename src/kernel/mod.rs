@@ -18,4 +18,4 @@ mod radial;
 
 pub use fourier::FourierCompliance;
 pub use influence::InfluenceCoefficients;
-pub use operator::ComplianceOperator;
+pub use operator::{check_film, memory_estimate, ComplianceOperator, MIN_THICKNESS_OVER_SPACING};

@@ -133,6 +133,13 @@ impl ContactSolver {
                 self.operator.apply(&pressure, &mut ws.displacement)?;
                 continue;
             }
+            if !(g_norm.is_finite() && gap_sum.is_finite()) {
+                return Err(Error::NonFinite {
+                    what: "constrained conjugate gradients (the depth, heights or force \
+                           overflow f64 at these moduli and cell sizes)",
+                    value: g_norm,
+                });
+            }
             if let Control::Force(_) = control {
                 // Gaps relative to the mean over the contact (the depth);
                 // the norm is recomputed, not corrected, to avoid cancellation.
@@ -147,9 +154,16 @@ impl ContactSolver {
                     }
                 }
             }
+            // Conjugation; a zero previous norm (every gap closed exactly)
+            // restarts from steepest descent instead of making 0/0 = NaN.
+            let beta = if g_old > 0.0 {
+                delta * (g_norm / g_old)
+            } else {
+                0.0
+            };
             for c in 0..n {
                 ws.direction[c] = if pressure[c] > 0.0 {
-                    ws.gap[c] + delta * (g_norm / g_old) * ws.direction[c]
+                    ws.gap[c] + beta * ws.direction[c]
                 } else {
                     0.0
                 };
