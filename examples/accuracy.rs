@@ -211,7 +211,7 @@ fn sphere_pull_off_cases() -> Result<Vec<Case>> {
             SubstrateSpec::LayerOnRigidBase {
                 youngs_modulus: e,
                 poisson_ratio: nu,
-                thickness: a / 2.2,
+                thickness: a / 4.0,
             },
         ),
         (
@@ -229,7 +229,7 @@ fn sphere_pull_off_cases() -> Result<Vec<Case>> {
             SubstrateSpec::LayerOnElasticBase {
                 youngs_modulus: e,
                 poisson_ratio: nu,
-                thickness: a / 2.5,
+                thickness: a / 4.0,
                 base_youngs_modulus: 10.0 * e,
                 base_poisson_ratio: nu,
             },

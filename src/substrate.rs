@@ -167,7 +167,10 @@ impl Substrate {
             });
         }
         let shear_ratio = layer.shear_modulus() / base.shear_modulus();
-        if thickness > 0.0 && thickness < f64::INFINITY && !(shear_ratio <= MAX_SHEAR_RATIO) {
+        if thickness > 0.0
+            && thickness < f64::INFINITY
+            && (shear_ratio.is_nan() || shear_ratio > MAX_SHEAR_RATIO)
+        {
             return Err(Error::InvalidParameter {
                 name: "shear modulus ratio mu1/mu2 (layer over base)",
                 value: shear_ratio,

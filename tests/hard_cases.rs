@@ -12,6 +12,9 @@ use layered_contact::substrate::CoatingFunctions;
 use layered_contact::{Base, Boundary, Error, Grid, Material, Substrate};
 use proptest::prelude::*;
 
+mod common;
+use common::bounded;
+
 fn cases(default: u32) -> u32 {
     std::env::var("LAYERED_CONTACT_PROPTEST_CASES")
         .ok()
@@ -431,29 +434,34 @@ proptest! {
         log_spacing in -5.0f64..-3.0,
         log_depth in -8.0f64..-4.0,
     ) {
-        let substrate = spec.build().unwrap();
-        let shape = shape.build(None).unwrap();
-        let grid = Grid::new(n, n + 1, 10f64.powf(log_spacing)).unwrap();
-        // A nearly incompressible film thinner than half a cell is refused
-        // with a typed error naming h/Delta (issue 12, finding 6).
-        let mut solver = match ContactSolver::new(&substrate, &grid, Boundary::Isolated, SolverParams::default()) {
-            Err(Error::InvalidParameter { name, .. }) if name.starts_with("h / Delta") => return Ok(()),
-            other => other.unwrap(),
-        };
-        let d = 10f64.powf(log_depth);
-        let first = solver.solve_depth(&shape, d, None, &mut ());
-        let second = solver.solve_depth(&shape, 2.0 * d, None, &mut ());
-        match (first, second) {
-            (Ok((a, _)), Ok((b, _))) => {
-                for s in [&a, &b] {
-                    prop_assert!(s.force.is_finite() && s.force >= 0.0);
-                    prop_assert!(s.contact_area.is_finite() && s.moment.0.is_finite() && s.moment.1.is_finite());
+        // Each case within a time bound: a hang fails, it does not stall CI.
+        let verdict: std::result::Result<(), TestCaseError> = bounded(move || {
+            let substrate = spec.build().unwrap();
+            let shape = shape.build(None).unwrap();
+            let grid = Grid::new(n, n + 1, 10f64.powf(log_spacing)).unwrap();
+            // A nearly incompressible film thinner than half a cell is refused
+            // with a typed error naming h/Delta (issue 12, finding 6).
+            let mut solver = match ContactSolver::new(&substrate, &grid, Boundary::Isolated, SolverParams::default()) {
+                Err(Error::InvalidParameter { name, .. }) if name.starts_with("h / Delta") => return Ok(()),
+                other => other.unwrap(),
+            };
+            let d = 10f64.powf(log_depth);
+            let first = solver.solve_depth(&shape, d, None, &mut ());
+            let second = solver.solve_depth(&shape, 2.0 * d, None, &mut ());
+            match (first, second) {
+                (Ok((a, _)), Ok((b, _))) => {
+                    for s in [&a, &b] {
+                        prop_assert!(s.force.is_finite() && s.force >= 0.0);
+                        prop_assert!(s.contact_area.is_finite() && s.moment.0.is_finite() && s.moment.1.is_finite());
+                    }
+                    prop_assert!(b.force >= a.force * (1.0 - 1e-9));
                 }
-                prop_assert!(b.force >= a.force * (1.0 - 1e-9));
+                (Err(Error::IndenterOutsideGrid { .. }), Err(Error::IndenterOutsideGrid { .. })) => {}
+                (a, b) => prop_assert!(false, "unexpected {:?} / {:?}", a.err(), b.err()),
             }
-            (Err(Error::IndenterOutsideGrid { .. }), Err(Error::IndenterOutsideGrid { .. })) => {}
-            (a, b) => prop_assert!(false, "unexpected {:?} / {:?}", a.err(), b.err()),
-        }
+            Ok(())
+        });
+        verdict?;
     }
 
     /// Exact stiffness: thinning a layer on a rigid base stiffens the punch;
@@ -476,9 +484,11 @@ proptest! {
     #[cfg(feature = "serde")]
     #[test]
     fn scene_from_bytes_never_panics(bytes in proptest::collection::vec(any::<u8>(), 0..256)) {
-        if let Ok(scene) = serde_json::from_slice::<Scene>(&bytes) {
-            let _ = scene.validate();
-        }
+        bounded(move || {
+            if let Ok(scene) = serde_json::from_slice::<Scene>(&bytes) {
+                let _ = scene.validate();
+            }
+        });
     }
 
     /// Building scenes from structurally valid JSON with wild numbers.
@@ -496,9 +506,11 @@ proptest! {
             values[0], values[1], values[2], values[3], values[4], values[5], values[6], values[7], steps
         );
         let scene: Scene = serde_json::from_str(&json).unwrap();
-        if scene.validate().is_ok() {
-            // A valid scene also sizes its grid (or says why it cannot).
-            let _ = scene.grid();
-        }
+        bounded(move || {
+            if scene.validate().is_ok() {
+                // A valid scene also sizes its grid (or says why it cannot).
+                let _ = scene.grid();
+            }
+        });
     }
 }

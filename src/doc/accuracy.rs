@@ -23,23 +23,62 @@
 //!
 //! ## The BEM
 //!
-//! The discretisation error falls like `1/N` with `N` cells across the
-//! contact:
+//! With `N` cells across the contact, measured by the `accuracy` example
+//! (`BENCHMARKS.md`):
 //!
-//! | quantity | error at `N = 64` | order |
+//! | quantity | error at `N = 64` | convergence |
 //! |---|---|---|
-//! | flat-punch stiffness, half-space or layer (equal-area grid) | 0.35-0.8 % (from below) | `1/N` |
+//! | flat-punch stiffness, half-space or layer (effective-radius grid) | 0.07-0.17 % | staircase noise of about 0.1 %, falling slowly |
 //! | Hertz force | `7e-5` | about `1/N^2` |
 //! | Hertz contact radius | 0.5 % | staircase, `1/N` |
-//! | Kendall pull-off (flat punch) | 0.3 % | about `1/N` |
-//! | JKR sphere pull-off | 3 % (6-11 % at 10-20 cells per pull-off radius) | slow, edge criterion |
+//! | JKR sphere pull-off, energy balance (default) | 0.004-0.1 % (0.2 % at 16 cells) | staircase noise, 0.1-0.3 % below 64 cells |
+//! | JKR sphere pull-off, mesh-dependent criterion | 1.2-4.2 % | about `3/N`, irregular |
+//! | Kendall pull-off (flat punch, energy balance) | 0.02 % | staircase noise below 0.15 % |
+//!
+//! Flat-punch grids choose their spacing (within 2 % of nominal) so that the
+//! staircase disc's *effective* radius, its equal-area radius less
+//! [`EDGE_SHIFT`](crate::solver::EDGE_SHIFT) cells, is the punch's: the
+//! piecewise-constant pressures miss part of the edge singularity, which a
+//! disc 0.117 cells smaller reproduces. That removes the `1/N` error that the
+//! equal-area grid left (0.35-0.8 % at 64 cells, from below) and leaves a
+//! staircase noise of about `1e-3`.
+//!
+//! ### Adhesion
+//!
+//! The JKR sphere pull-off (`R = 10 mm`, `dgamma = 0.05 J/m^2`, rubber
+//! `E = 1 MPa`, `nu = 0.48`) against the exact (layered) JKR value, `N` cells
+//! across the pull-off contact, pressed until the contact is 1.5 pull-off
+//! radii wide, on a half-space and on layers whose pull-off contact is about
+//! one and three thicknesses wide, on a rigid base and on a base ten times
+//! stiffer:
+//!
+//! | body | method | 16 | 32 | 64 | 128 |
+//! |---|---|---|---|---|---|
+//! | half-space | energy balance | 0.17 % | 0.19 % | 0.004 % | 0.007 % |
+//! | half-space | mesh criterion | 16 % | 5.9 % | 3.2 % | 1.3 % |
+//! | rigid base, `a/h = 1` | energy balance | 0.27 % | 0.09 % | 0.10 % | 0.08 % |
+//! | rigid base, `a/h = 1` | mesh criterion | 13 % | 4.7 % | 4.2 % | 0.8 % |
+//! | base `E2/E1 = 10`, `a/h = 1` | energy balance | 0.18 % | 0.18 % | 0.03 % | 0.02 % |
+//! | base `E2/E1 = 10`, `a/h = 1` | mesh criterion | 15 % | 7.9 % | 2.5 % | 1.6 % |
+//!
+//! (all cases, times and iterations in `BENCHMARKS.md`). The energy balance's
+//! residual error is staircase noise, not a power of `1/N`, so Richardson
+//! extrapolation does not improve it (it is already below 0.3 % at 16 cells
+//! and at or below 0.1 % from 64 cells up); the mesh criterion converges like
+//! `3/N` but irregularly, and extrapolation helps it only sometimes. A whole
+//! adhesive loading-unloading cycle by the energy balance costs 300-500 CG
+//! iterations at 32-64 cells across the pull-off contact, the iterations of
+//! five to eight non-adhesive solves on the same grid, each about twice as
+//! expensive (it applies the operator and its preconditioner): ten to fifteen
+//! non-adhesive solves in time. The mesh criterion takes 3000-6000. See [`adhesion`](super::adhesion) for the methods.
 //!
 //! For the `1/N` quantities Richardson extrapolation of two resolutions
 //! ([`richardson`](crate::scene::richardson)) gains one to two orders of
 //! magnitude at the cost of the coarser run; [`Scene::converge`] doubles the
 //! resolution until a requested accuracy is reached. It does not help the
-//! Hertz force (already second order) nor the adhesive pull-off forces, whose
-//! convergence is irregular.
+//! Hertz force (already second order) nor the quantities whose error is
+//! staircase noise (punch stiffness and both pull-offs with the energy
+//! balance).
 //!
 //! [`Scene::converge`]: crate::scene::Scene::converge
 //!
@@ -49,4 +88,6 @@
 //! plus complex-to-real FFT of the padded `2N x 2N` grid (one operator
 //! application per iteration); at `N = 1024` that is about 35-40 ms on this
 //! 2-core machine. A non-adhesive solve takes 40 to 140 iterations; an
-//! adhesive step, a few rounds of a preconditioned CG on the attached cells.
+//! adhesive cycle by the energy balance, two warm-started clamped solves of
+//! about eight preconditioned iterations per set of the family, with one set
+//! per cell of radius (or per 10 % of it).

@@ -5,9 +5,11 @@
 //! * [`axisymmetric`]: the exact axisymmetric solutions and their Fredholm equation.
 //! * [`adhesion`]: the two JKR adhesion methods, energy balance and mesh criterion.
 //! * [`accuracy`]: what each part achieves, and what it costs.
+//! * [`reliability`]: the promise (no panic, hang, NaN or silent wrong answer), the guaranteed ranges, and how they are tested.
 
 pub mod accuracy;
 pub mod adhesion;
 pub mod axisymmetric;
 pub mod conventions;
+pub mod reliability;
 pub mod theory;

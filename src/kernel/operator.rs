@@ -214,8 +214,9 @@ pub fn check_film(substrate: &Substrate, grid: &Grid) -> Result<()> {
     if !matches!(coating.base(), crate::substrate::Base::Rigid) {
         return Ok(());
     }
-    let ratio = coating.thickness() / grid.spacing();
-    if !(ratio >= MIN_THICKNESS_OVER_SPACING) {
+    // The limits hold to rounding: h = 1e-7 on Delta = 1e-4 is 1e-3.
+    let ratio = coating.thickness() / grid.spacing() * (1.0 + 1e-12);
+    if ratio.is_nan() || ratio < MIN_THICKNESS_OVER_SPACING {
         return Err(Error::InvalidParameter {
             name: "h / Delta (layer thickness over cell size)",
             value: ratio,

@@ -87,8 +87,12 @@ impl Scene {
         let surface = substrate.surface_material().contact_modulus();
         let scale =
             (9.0 * std::f64::consts::PI * receding * radius * radius / (8.0 * surface)).cbrt();
+        // The exact solution is tabulated over the contact radii it may need:
+        // the pull-off's (a few JKR scales) and the peak's (about twice the
+        // non-adhesive estimate); its cost grows with the range.
+        let reach = (3.0 * scale).max(2.0 * self.contact_radius_estimate().ok()?);
         let eps = match &substrate {
-            crate::substrate::Substrate::Coated(c) => (10.0 * scale / c.thickness())
+            crate::substrate::Substrate::Coated(c) => (reach / c.thickness())
                 .min(crate::analytic::Axisymmetric::MAX_RADIUS_OVER_THICKNESS),
             crate::substrate::Substrate::HalfSpace(_) => 1.0,
         };
@@ -168,7 +172,7 @@ impl Scene {
             0.0
         };
         let cells = (across + headroom).ceil();
-        if !(cells <= MAX_GRID_CELLS as f64) {
+        if cells.is_nan() || cells > MAX_GRID_CELLS as f64 {
             return Err(Error::InvalidParameter {
                 name: "resolution.cells_across",
                 value: n as f64,

@@ -104,7 +104,7 @@ impl Local {
     /// on the root with a tensile edge; NaN where `k' <= 0` (no balance).
     fn balance(&self, work: f64) -> (f64, f64) {
         let [dk, df1, df2] = self.slopes;
-        if !(dk > 0.0) {
+        if dk.is_nan() || dk <= 0.0 {
             return (f64::NAN, f64::NAN);
         }
         let spread = (df1 * df1 - dk * df2 + 2.0 * work * dk).max(0.0).sqrt() / dk;
@@ -209,7 +209,7 @@ impl AdhesiveBranches {
                 .iter()
                 .filter(|o| (o.radius - r.radius).abs() <= half_width)
                 .collect();
-            if window.len() < 4 || !(r.radius > 0.0) {
+            if window.len() < 4 || r.radius.is_nan() || r.radius <= 0.0 {
                 continue;
             }
             nodes.push(Node {

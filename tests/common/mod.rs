@@ -1,0 +1,38 @@
+//! Shared test helpers.
+
+use std::sync::mpsc;
+use std::time::Duration;
+
+/// Seconds any one property-test or fuzz case may take before it counts as
+/// a hang (`LAYERED_CONTACT_CASE_SECONDS`, default 60: the slowest case of
+/// the heavy runs takes a few seconds on 2 cores).
+pub fn case_seconds() -> u64 {
+    std::env::var("LAYERED_CONTACT_CASE_SECONDS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(60)
+}
+
+/// Runs `f` on its own thread and returns its value, or panics with "hang"
+/// if it takes longer than [`case_seconds`] (the thread is left behind; the
+/// test has failed). A panic inside `f` is passed on.
+pub fn bounded<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
+    let (tx, rx) = mpsc::channel();
+    let handle = std::thread::spawn(move || {
+        let value = f();
+        let _ = tx.send(());
+        value
+    });
+    match rx.recv_timeout(Duration::from_secs(case_seconds())) {
+        Ok(()) => handle
+            .join()
+            .unwrap_or_else(|e| std::panic::resume_unwind(e)),
+        Err(mpsc::RecvTimeoutError::Disconnected) => match handle.join() {
+            Ok(value) => value,
+            Err(e) => std::panic::resume_unwind(e),
+        },
+        Err(mpsc::RecvTimeoutError::Timeout) => {
+            panic!("hang: a case ran for more than {} s", case_seconds())
+        }
+    }
+}
