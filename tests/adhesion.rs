@@ -59,6 +59,17 @@ fn sphere_cycle(substrate: SubstrateSpec, exact: &Axisymmetric, cells: usize) ->
     (scene, pull_off.force)
 }
 
+/// A solver on the rubber half-space with default parameters.
+fn half_space_solver(grid: &Grid) -> ContactSolver {
+    ContactSolver::new(
+        &Substrate::half_space(rubber()),
+        grid,
+        Boundary::Isolated,
+        SolverParams::default(),
+    )
+    .unwrap()
+}
+
 fn pull_off(curve: &Curve) -> f64 {
     curve.pull_off().unwrap().force
 }
@@ -245,13 +256,7 @@ fn force_controlled_pull_off() {
     // The same branches answer force and depth requests; beyond the pull-off
     // force there is no equilibrium.
     let grid = scene.grid().unwrap();
-    let mut solver = ContactSolver::new(
-        &Substrate::half_space(rubber()),
-        &grid,
-        Boundary::Isolated,
-        SolverParams::default(),
-    )
-    .unwrap();
+    let mut solver = half_space_solver(&grid);
     let ball = Paraboloid::new(RADIUS).unwrap();
     let push = -0.5 * jkr.pull_off_force();
     let branches = solver
@@ -374,13 +379,7 @@ fn hysteresis_and_invalid_works() {
     let jkr = JkrSphere::new(&rubber(), RADIUS, WORK).unwrap();
     let a = jkr.pull_off_contact_radius();
     let grid = Grid::square(96, 6.0 * a).unwrap();
-    let mut solver = ContactSolver::new(
-        &Substrate::half_space(rubber()),
-        &grid,
-        Boundary::Isolated,
-        SolverParams::default(),
-    )
-    .unwrap();
+    let mut solver = half_space_solver(&grid);
     let ball = Paraboloid::new(RADIUS).unwrap();
     let depth = (1.2 * a).powi(2) / RADIUS;
     assert!(matches!(
@@ -414,13 +413,7 @@ fn split_contact_is_refused() {
         })
         .collect();
     let bumps = HeightMap::new(grid, heights).unwrap();
-    let mut solver = ContactSolver::new(
-        &Substrate::half_space(rubber()),
-        &grid,
-        Boundary::Isolated,
-        SolverParams::default(),
-    )
-    .unwrap();
+    let mut solver = half_space_solver(&grid);
     match solver.adhesive_branches(&bumps, Reach::Depth(2e-5), WORK, WORK, &mut ()) {
         Err(Error::Unsupported { reason, .. }) => assert!(reason.contains("mesh-dependent")),
         other => panic!("expected Unsupported, got {other:?}"),

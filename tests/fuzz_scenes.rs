@@ -12,7 +12,7 @@
 
 mod common;
 
-use common::bounded;
+use common::bounded_case;
 use layered_contact::scene::Scene;
 use proptest::prelude::*;
 
@@ -220,7 +220,8 @@ proptest! {
         for (choice, a, b) in mutations {
             text = mutate(&text, choice, a, b);
         }
-        bounded(move || exercise(toml_text, text));
+        let label = text.clone();
+        bounded_case(&label, move || exercise(toml_text, text));
     }
 }
 

@@ -114,6 +114,22 @@ impl Recorder<'_> {
     }
 }
 
+/// The loading branch, steps `0..=steps` of `at(k, history)`, and the peak
+/// recorded again as the first unloading step (so that the loop closes).
+fn load(
+    recorder: &mut Recorder,
+    steps: usize,
+    at: impl Fn(usize, f64) -> Result<BranchPoint>,
+) -> Result<BranchPoint> {
+    let mut peak = at(0, 0.0)?;
+    recorder.record(Phase::Loading, peak);
+    for k in 1..=steps {
+        peak = recorder.record(Phase::Loading, at(k, peak.contact_area)?);
+    }
+    recorder.record(Phase::Unloading, peak);
+    Ok(peak)
+}
+
 /// Displacement-controlled loading and unloading; returns the peak.
 fn cycle(
     branches: &AdhesiveBranches,
@@ -122,19 +138,10 @@ fn cycle(
     steps: usize,
 ) -> Result<BranchPoint> {
     let increment = max_depth / steps as f64;
-    let mut area = 0.0;
-    let mut peak = None;
-    for k in 0..=steps {
-        let point = branches.at_depth(k as f64 * increment, area)?;
-        area = point.contact_area;
-        peak = Some(recorder.record(Phase::Loading, point));
-    }
-    let peak = peak.ok_or(Error::Internal {
-        what: "adhesive cycle",
-        detail: "no loading step".into(),
+    let peak = load(recorder, steps, |k, area| {
+        branches.at_depth(k as f64 * increment, area)
     })?;
-    // Unloading starts at the peak itself, so that the loop closes.
-    recorder.record(Phase::Unloading, peak);
+    let mut area = peak.contact_area;
     // Exact points of the receding branch: the least force if it lies on the
     // path (above the jump-off), and the jump-off.
     let mut exact = Vec::new();
@@ -182,19 +189,11 @@ fn force_cycle(
     steps: usize,
 ) -> Result<BranchPoint> {
     let increment = max_force / steps as f64;
-    let mut area = 0.0;
-    let mut peak = None;
-    for k in 0..=steps {
-        // At zero force the contact jumps in.
-        let point = branches.at_force(k as f64 * increment, area)?;
-        area = point.contact_area;
-        peak = Some(recorder.record(Phase::Loading, point));
-    }
-    let peak = peak.ok_or(Error::Internal {
-        what: "adhesive force cycle",
-        detail: "no loading step".into(),
+    // At zero force the contact jumps in.
+    let peak = load(recorder, steps, |k, area| {
+        branches.at_force(k as f64 * increment, area)
     })?;
-    recorder.record(Phase::Unloading, peak);
+    let mut area = peak.contact_area;
     for k in 1..=MAX_PROTOCOL_STEPS {
         let force = max_force - k as f64 * increment;
         match branches.at_force(force, area) {

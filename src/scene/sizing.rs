@@ -6,6 +6,11 @@ use crate::grid::Grid;
 
 use super::{Adhesion, AdhesionMethod, IndenterSpec, Protocol, Scene};
 
+/// Grid sizing consults the exact solution only up to this `a/h` (a few
+/// milliseconds a solve; beyond, it would take seconds, and the estimates
+/// it falls back to suffice for sizing).
+const SIZING_MAX_EPS: f64 = 20.0;
+
 /// The widest grid a scene builds, in cells.
 const MAX_GRID_CELLS: usize = 16384;
 
@@ -92,8 +97,13 @@ impl Scene {
         // non-adhesive estimate); its cost grows with the range.
         let reach = (3.0 * scale).max(2.0 * self.contact_radius_estimate().ok()?);
         let eps = match &substrate {
-            crate::substrate::Substrate::Coated(c) => (reach / c.thickness())
-                .min(crate::analytic::Axisymmetric::MAX_RADIUS_OVER_THICKNESS),
+            crate::substrate::Substrate::Coated(c) => {
+                let eps = reach / c.thickness();
+                if eps > SIZING_MAX_EPS {
+                    return None;
+                }
+                eps
+            }
             crate::substrate::Substrate::HalfSpace(_) => 1.0,
         };
         let exact = crate::analytic::Axisymmetric::new(&substrate, eps).ok()?;
@@ -251,11 +261,11 @@ fn exact_contact_radius(
     hertz: f64,
 ) -> Option<f64> {
     let upper = (2.0 * hertz).min(radius);
-    let exact = crate::analytic::Axisymmetric::new(
-        substrate,
-        (upper / thickness).min(crate::analytic::Axisymmetric::MAX_RADIUS_OVER_THICKNESS),
-    )
-    .ok()?;
+    let eps = upper / thickness;
+    if eps > SIZING_MAX_EPS {
+        return None;
+    }
+    let exact = crate::analytic::Axisymmetric::new(substrate, eps).ok()?;
     let ball = exact.paraboloid(radius, 0.0).ok()?;
     let value = |a: f64| {
         ball.at_contact_radius(a)
@@ -266,7 +276,8 @@ fn exact_contact_radius(
         return Some(upper);
     }
     let (mut lo, mut hi) = (0.0, upper);
-    for _ in 0..40 {
+    // 2^-30 of the bracket: far finer than a cell.
+    for _ in 0..30 {
         let mid = 0.5 * (lo + hi);
         if value(mid)? < target {
             lo = mid;

@@ -362,15 +362,10 @@ fn edge_connected(
     let mut found = Vec::new();
     while let Some(c) = stack.pop() {
         found.push(c);
-        let (i, j) = (c / columns, c % columns);
-        let rows = n / columns;
-        let neighbours = [
-            (i > 0).then(|| c - columns),
-            (i + 1 < rows).then(|| c + columns),
-            (j > 0).then(|| c - 1),
-            (j + 1 < columns).then(|| c + 1),
-        ];
-        for m in neighbours.into_iter().flatten() {
+        for m in super::neighbours(c, n / columns, columns)
+            .into_iter()
+            .flatten()
+        {
             if attached[m] && !marked[m] && violates(m) {
                 marked[m] = true;
                 stack.push(m);

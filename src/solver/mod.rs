@@ -341,6 +341,17 @@ pub(crate) fn check_solution(solution: &Solution) -> Result<()> {
     Ok(())
 }
 
+/// The 4-neighbours of cell `c` on a row-major grid of `rows x columns`.
+pub(super) fn neighbours(c: usize, rows: usize, columns: usize) -> [Option<usize>; 4] {
+    let (i, j) = (c / columns, c % columns);
+    [
+        (i > 0).then(|| c - columns),
+        (i + 1 < rows).then(|| c + columns),
+        (j > 0).then(|| c - 1),
+        (j + 1 < columns).then(|| c + 1),
+    ]
+}
+
 pub(crate) fn check_finite(name: &'static str, value: f64) -> Result<f64> {
     if value.is_finite() {
         Ok(value)

@@ -16,7 +16,17 @@ pub fn case_seconds() -> u64 {
 /// Runs `f` on its own thread and returns its value, or panics with "hang"
 /// if it takes longer than [`case_seconds`] (the thread is left behind; the
 /// test has failed). A panic inside `f` is passed on.
+#[allow(dead_code)]
 pub fn bounded<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
+    bounded_case("", f)
+}
+
+/// [`bounded`], naming the case (`label`) if it hangs.
+#[allow(dead_code)]
+pub fn bounded_case<T: Send + 'static>(
+    label: &str,
+    f: impl FnOnce() -> T + Send + 'static,
+) -> T {
     let (tx, rx) = mpsc::channel();
     let handle = std::thread::spawn(move || {
         let value = f();
@@ -32,7 +42,7 @@ pub fn bounded<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
             Err(e) => std::panic::resume_unwind(e),
         },
         Err(mpsc::RecvTimeoutError::Timeout) => {
-            panic!("hang: a case ran for more than {} s", case_seconds())
+            panic!("hang: a case ran for more than {} s: {label}", case_seconds())
         }
     }
 }

@@ -389,14 +389,7 @@ fn connected(attached: &[bool], columns: usize, start: usize, m: usize) -> bool 
     let mut count = 0usize;
     while let Some(c) = stack.pop() {
         count += 1;
-        let (i, j) = (c / columns, c % columns);
-        let neighbours = [
-            (i > 0).then(|| c - columns),
-            (i + 1 < rows).then(|| c + columns),
-            (j > 0).then(|| c - 1),
-            (j + 1 < columns).then(|| c + 1),
-        ];
-        for m in neighbours.into_iter().flatten() {
+        for m in super::neighbours(c, rows, columns).into_iter().flatten() {
             if attached[m] && !seen[m] {
                 seen[m] = true;
                 stack.push(m);
