@@ -23,10 +23,7 @@ pub fn bounded<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
 
 /// [`bounded`], naming the case (`label`) if it hangs.
 #[allow(dead_code)]
-pub fn bounded_case<T: Send + 'static>(
-    label: &str,
-    f: impl FnOnce() -> T + Send + 'static,
-) -> T {
+pub fn bounded_case<T: Send + 'static>(label: &str, f: impl FnOnce() -> T + Send + 'static) -> T {
     let (tx, rx) = mpsc::channel();
     let handle = std::thread::spawn(move || {
         let value = f();
@@ -42,7 +39,10 @@ pub fn bounded_case<T: Send + 'static>(
             Err(e) => std::panic::resume_unwind(e),
         },
         Err(mpsc::RecvTimeoutError::Timeout) => {
-            panic!("hang: a case ran for more than {} s: {label}", case_seconds())
+            panic!(
+                "hang: a case ran for more than {} s: {label}",
+                case_seconds()
+            )
         }
     }
 }
