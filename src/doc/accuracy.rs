@@ -31,8 +31,8 @@
 //! | flat-punch stiffness, half-space or layer (effective-radius grid) | 0.07-0.17 % | staircase noise of about 0.1 %, falling slowly |
 //! | Hertz force | `7e-5` | about `1/N^2` |
 //! | Hertz contact radius | 0.5 % | staircase, `1/N` |
-//! | JKR sphere pull-off, energy balance (default) | 0.004-0.1 % (0.2 % at 16 cells) | staircase noise, 0.1-0.3 % below 64 cells |
-//! | JKR sphere pull-off, mesh-dependent criterion | 1.2-4.2 % | about `3/N`, irregular |
+//! | JKR sphere pull-off, energy balance (default) | 0.0005-0.07 % (0.3 % or less at 16 cells) | staircase noise, up to 0.25 % below 64 cells |
+//! | JKR sphere pull-off, mesh-dependent criterion | 0.02-4.2 % | about `3/N` on a half-space, irregular on layers |
 //! | Kendall pull-off (flat punch, energy balance) | 0.02 % | staircase noise below 0.15 % |
 //!
 //! Flat-punch grids choose their spacing (within 2 % of nominal) so that the
@@ -55,16 +55,20 @@
 //! | body | method | 16 | 32 | 64 | 128 |
 //! |---|---|---|---|---|---|
 //! | half-space | energy balance | 0.17 % | 0.19 % | 0.004 % | 0.007 % |
-//! | half-space | mesh criterion | 16 % | 5.9 % | 3.2 % | 1.3 % |
-//! | rigid base, `a/h = 1` | energy balance | 0.27 % | 0.09 % | 0.10 % | 0.08 % |
+//! | half-space | mesh criterion | 16 % | 5.9 % | 3.2 % | 1.3 % (97 s) |
+//! | rigid base, `a/h = 1` | energy balance | 0.15 % | 0.06 % | 0.07 % | 0.09 % |
 //! | rigid base, `a/h = 1` | mesh criterion | 13 % | 4.7 % | 4.2 % | 0.8 % |
-//! | base `E2/E1 = 10`, `a/h = 1` | energy balance | 0.18 % | 0.18 % | 0.03 % | 0.02 % |
+//! | rigid base, `a/h = 3` | energy balance | 0.24 % | 0.21 % | 0.05 % | 0.06 % |
+//! | rigid base, `a/h = 3` | mesh criterion | 0.9 % | 1.6 % | 0.8 % | 0.6 % |
+//! | base `E2/E1 = 10`, `a/h = 1` | energy balance | 0.003 % | 0.18 % | 0.0005 % | 0.02 % |
 //! | base `E2/E1 = 10`, `a/h = 1` | mesh criterion | 15 % | 7.9 % | 2.5 % | 1.6 % |
+//! | base `E2/E1 = 10`, `a/h = 3` | energy balance | 0.07 % | 0.15 % | 0.01 % | 0.005 % |
+//! | base `E2/E1 = 10`, `a/h = 3` | mesh criterion | 3.5 % | 2.9 % | 0.02 % | 1.0 % |
 //!
 //! (all cases, times and iterations in `BENCHMARKS.md`). The energy balance's
 //! residual error is staircase noise, not a power of `1/N`, so Richardson
 //! extrapolation does not improve it (it is already below 0.3 % at 16 cells
-//! and at or below 0.1 % from 64 cells up); the mesh criterion converges like
+//! and below 0.1 % from 64 cells up, where a whole cycle takes 0.35-0.8 s); the mesh criterion converges like
 //! `3/N` but irregularly, and extrapolation helps it only sometimes. A whole
 //! adhesive loading-unloading cycle by the energy balance costs 300-500 CG
 //! iterations at 32-64 cells across the pull-off contact, the iterations of
