@@ -335,6 +335,15 @@ fn f13_lesser_findings() {
         s.solve_depth(&punch, 1e140, None, &mut ()),
         Err(Error::NonFinite { .. })
     ));
+    // The kernel's tail-error estimate at h = f64::MAX is 0, not NaN, and
+    // the coefficients are the half-space's.
+    let thickest = Substrate::layer_on_rigid_base(m, f64::MAX).unwrap();
+    let small = Grid::new(8, 8, 1e-4).unwrap();
+    let k = layered_contact::kernel::InfluenceCoefficients::isolated(&thickest, &small);
+    let half =
+        layered_contact::kernel::InfluenceCoefficients::isolated(&Substrate::half_space(m), &small);
+    assert_eq!(k.tail_error_estimate(), 0.0);
+    assert_eq!(k.self_coefficient(), half.self_coefficient());
     // A curved-indenter scene without contact names the depth, not the
     // spacing.
     let scene = Scene {

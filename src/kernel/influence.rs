@@ -112,8 +112,14 @@ impl InfluenceCoefficients {
                 remainder,
                 ..
             } => {
-                2.0 * PI * thickness * remainder.tail_mismatch()
-                    / (4.0 * love(0.5 * delta, 0.5 * delta))
+                // No mismatch, no error, whatever the thickness (at
+                // h = f64::MAX the product would be inf * 0 = NaN).
+                let mismatch = remainder.tail_mismatch();
+                if mismatch == 0.0 {
+                    0.0
+                } else {
+                    2.0 * PI * thickness * mismatch / (4.0 * love(0.5 * delta, 0.5 * delta))
+                }
             }
         };
         // Corner values F((k + 1/2) Delta, (l + 1/2) Delta); F is symmetric in
