@@ -112,7 +112,9 @@ impl ContactSolver {
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for a tolerance that is not positive and
-    /// finite or a zero iteration limit.
+    /// finite or a zero iteration limit; the errors of
+    /// [`ComplianceOperator::new`] (a film the grid cannot resolve, a cell
+    /// compliance out of range, [`Error::OutOfMemory`]).
     pub fn new(
         substrate: &Substrate,
         grid: &Grid,
@@ -127,7 +129,9 @@ impl ContactSolver {
     /// shared between scenes).
     ///
     /// # Errors
-    /// As [`ContactSolver::new`].
+    /// [`Error::InvalidParameter`] for a tolerance that is not positive and
+    /// finite or a zero iteration limit; [`Error::OutOfMemory`] if the
+    /// per-cell vectors cannot be allocated.
     pub fn with_operator(
         operator: ComplianceOperator,
         substrate: &Substrate,
@@ -147,13 +151,13 @@ impl ContactSolver {
             params,
             surface_contact_modulus: substrate.surface_material().contact_modulus(),
             workspace: Workspace {
-                profile: vec![0.0; n],
-                displacement: vec![0.0; n],
-                gap: vec![0.0; n],
-                direction: vec![0.0; n],
-                response: vec![0.0; n],
-                previous: vec![0.0; n],
-                target: vec![0.0; n],
+                profile: cell_vector(n)?,
+                displacement: cell_vector(n)?,
+                gap: cell_vector(n)?,
+                direction: cell_vector(n)?,
+                response: cell_vector(n)?,
+                previous: cell_vector(n)?,
+                target: cell_vector(n)?,
             },
         })
     }
@@ -339,6 +343,17 @@ pub(crate) fn check_solution(solution: &Solution) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// A zeroed per-cell vector, or [`Error::OutOfMemory`] instead of an abort.
+fn cell_vector(n: usize) -> Result<Vec<f64>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(n).map_err(|_| Error::OutOfMemory {
+        bytes: n.saturating_mul(8),
+        what: "a solver's per-cell vectors",
+    })?;
+    v.resize(n, 0.0);
+    Ok(v)
 }
 
 /// The 4-neighbours of cell `c` on a row-major grid of `rows x columns`.
