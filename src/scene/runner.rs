@@ -139,6 +139,16 @@ impl<'a> Runner<'a> {
                         return Ok(Outcome::ReachedEdge);
                     }
                 }
+                // Unloading starts at the peak itself, so that the loop closes.
+                if let Some(peak) = self.steps.last().copied() {
+                    let step = Step {
+                        phase: Phase::Unloading,
+                        iterations: 0,
+                        ..peak
+                    };
+                    progress(&step);
+                    self.steps.push(step);
+                }
                 if !self.unload(max_depth, increment, progress)? {
                     return Ok(Outcome::ReachedEdge);
                 }
