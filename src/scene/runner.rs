@@ -70,16 +70,6 @@ impl<'a> Runner<'a> {
         Ok(solution)
     }
 
-    fn touches_edge(&self) -> bool {
-        let Some(warm) = &self.warm else { return false };
-        let grid = self.solver.grid();
-        let (rows, columns) = (grid.rows(), grid.columns());
-        (0..rows * columns).any(|c| {
-            let (i, j) = (c / columns, c % columns);
-            (i == 0 || j == 0 || i + 1 == rows || j + 1 == columns) && warm.is_attached(c)
-        })
-    }
-
     /// Records a step; false if the contact reached the grid's edge.
     fn record(
         &mut self,
@@ -87,7 +77,7 @@ impl<'a> Runner<'a> {
         phase: Phase,
         progress: &mut dyn FnMut(&Step),
     ) -> bool {
-        if self.watch_edge && self.touches_edge() {
+        if self.watch_edge && solution.edge_contact {
             return false;
         }
         let step = Step::new(phase, &solution);

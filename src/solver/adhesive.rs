@@ -332,12 +332,7 @@ fn next_to(attached: &[bool], columns: usize, c: usize) -> bool {
 
 /// Whether attached cell `c` has a detached (or missing) 4-neighbour.
 fn on_boundary(attached: &[bool], columns: usize, c: usize) -> bool {
-    let rows = attached.len() / columns;
-    let (i, j) = (c / columns, c % columns);
-    i == 0
-        || j == 0
-        || i + 1 == rows
-        || j + 1 == columns
+    super::on_outer_ring(c, attached.len() / columns, columns)
         || !attached[c - columns]
         || !attached[c + columns]
         || !attached[c - 1]

@@ -256,8 +256,7 @@ impl ContactSolver {
             };
             if in_contact {
                 cells += 1;
-                let (i, j) = (c / columns, c % columns);
-                edge_contact |= isolated && (i == 0 || j == 0 || i + 1 == rows || j + 1 == columns);
+                edge_contact |= isolated && on_outer_ring(c, rows, columns);
             }
             let x = ((c / columns) as f64 + 0.5) * delta - 0.5 * lx;
             let y = ((c % columns) as f64 + 0.5) * delta - 0.5 * ly;
@@ -354,6 +353,13 @@ fn cell_vector(n: usize) -> Result<Vec<f64>> {
     })?;
     v.resize(n, 0.0);
     Ok(v)
+}
+
+/// Whether cell `c` of a row-major `rows x columns` grid lies on its outer
+/// ring of cells.
+pub(super) fn on_outer_ring(c: usize, rows: usize, columns: usize) -> bool {
+    let (i, j) = (c / columns, c % columns);
+    i == 0 || j == 0 || i + 1 == rows || j + 1 == columns
 }
 
 /// The 4-neighbours of cell `c` on a row-major grid of `rows x columns`.

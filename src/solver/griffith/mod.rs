@@ -261,14 +261,10 @@ impl ContactSolver {
     fn usable_prefix(&self, order: &[(usize, f64)], top: usize) -> (usize, bool) {
         let grid = *self.grid();
         let (rows, columns) = (grid.rows(), grid.columns());
-        let on_edge = |c: usize| {
-            let (i, j) = (c / columns, c % columns);
-            i == 0 || j == 0 || i + 1 == rows || j + 1 == columns
-        };
         let periodic = self.operator.boundary() == crate::grid::Boundary::Periodic;
         match order[..top]
             .iter()
-            .position(|&(c, _)| !periodic && on_edge(c))
+            .position(|&(c, _)| !periodic && super::on_outer_ring(c, rows, columns))
         {
             Some(first) => (first, false),
             None => (top, true),
