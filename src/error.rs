@@ -171,6 +171,23 @@ pub(crate) fn non_negative_finite(name: &'static str, value: f64) -> Result<f64>
     }
 }
 
+/// Checks an advancing (loading, `dgamma0`) and a receding (unloading,
+/// `dgamma1`) work of adhesion: each non-negative and finite, and
+/// `dgamma0 <= dgamma1` (an edge that advanced more easily than it recedes
+/// would cycle). Returns them.
+pub(crate) fn works_of_adhesion(advancing: f64, receding: f64) -> Result<(f64, f64)> {
+    let advancing = non_negative_finite("work_of_adhesion (advancing)", advancing)?;
+    let receding = non_negative_finite("work_of_adhesion (receding)", receding)?;
+    if advancing > receding {
+        return Err(Error::InvalidParameter {
+            name: "work_of_adhesion (advancing)",
+            value: advancing,
+            expected: "at most the receding work of adhesion (dgamma0 <= dgamma1)",
+        });
+    }
+    Ok((advancing, receding))
+}
+
 /// Checks that `nu` is a Poisson ratio in `[0, 0.5]`.
 pub(crate) fn poisson_ratio(nu: f64) -> Result<f64> {
     if (0.0..=0.5).contains(&nu) {

@@ -335,6 +335,16 @@ fn f13_lesser_findings() {
         s.solve_depth(&punch, 1e140, None, &mut ()),
         Err(Error::NonFinite { .. })
     ));
+    // dgamma0 > dgamma1 is refused by the mesh-criterion solver too.
+    let mut hysteretic = solver(
+        &Substrate::half_space(m),
+        &Grid::new(8, 8, 1e-4).unwrap(),
+        Boundary::Isolated,
+    );
+    assert!(matches!(
+        hysteretic.solve_depth_hysteretic(&Sphere::new(1e-2).unwrap(), 1e-6, 0.2, 0.1, None, &mut ()),
+        Err(Error::InvalidParameter { value, .. }) if value == 0.2
+    ));
     // The kernel's tail-error estimate at h = f64::MAX is 0, not NaN, and
     // the coefficients are the half-space's.
     let thickest = Substrate::layer_on_rigid_base(m, f64::MAX).unwrap();

@@ -178,13 +178,7 @@ impl<'a> LayeredJkrCycle<'a> {
         max_depth: f64,
     ) -> Result<Self> {
         let max_depth = crate::error::positive_finite("max_depth", max_depth)?;
-        if advancing > receding {
-            return Err(Error::InvalidParameter {
-                name: "work_of_adhesion (advancing)",
-                value: advancing,
-                expected: "at most the receding work of adhesion",
-            });
-        }
+        let (advancing, receding) = crate::error::works_of_adhesion(advancing, receding)?;
         let advancing = body.paraboloid(sphere_radius, advancing)?;
         let receding = body.paraboloid(sphere_radius, receding)?;
         let peak = advancing.at_depth(max_depth)?.ok_or(Error::Internal {

@@ -257,15 +257,7 @@ impl Scene {
         self.substrate.build()?;
         self.indenter.build(self.tilt)?;
         if let Some((loading, unloading)) = self.adhesion.works() {
-            crate::error::non_negative_finite("work_of_adhesion (loading)", loading)?;
-            crate::error::non_negative_finite("work_of_adhesion (unloading)", unloading)?;
-            if loading > unloading {
-                return Err(Error::InvalidParameter {
-                    name: "work_of_adhesion (loading)",
-                    value: loading,
-                    expected: "at most the unloading work of adhesion (dgamma0 <= dgamma1)",
-                });
-            }
+            crate::error::works_of_adhesion(loading, unloading)?;
         }
         match self.protocol {
             Protocol::Depth { depth } => {

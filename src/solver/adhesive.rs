@@ -63,7 +63,8 @@ impl ContactSolver {
     ///
     /// # Errors
     /// As [`ContactSolver::solve_depth`], and [`Error::InvalidParameter`]
-    /// for a negative or non-finite work of adhesion.
+    /// for a negative or non-finite work of adhesion or `advancing >
+    /// receding`.
     pub fn solve_depth_hysteretic<I: Indenter + ?Sized>(
         &mut self,
         indenter: &I,
@@ -74,9 +75,7 @@ impl ContactSolver {
         observer: &mut dyn Observer,
     ) -> Result<(Solution, WarmStart)> {
         check_finite("depth", depth)?;
-        let advancing =
-            crate::error::non_negative_finite("work_of_adhesion (advancing)", advancing)?;
-        let receding = crate::error::non_negative_finite("work_of_adhesion (receding)", receding)?;
+        let (advancing, receding) = crate::error::works_of_adhesion(advancing, receding)?;
         self.check_warm_start(warm)?;
         self.sample_profile(indenter)?;
         let sigma_c = self.critical_stress(receding);

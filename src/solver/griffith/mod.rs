@@ -87,16 +87,7 @@ impl ContactSolver {
             Reach::Depth(d) => check_finite("depth", d)?,
             Reach::Force(f) => check_finite("force", f)?,
         };
-        let advancing =
-            crate::error::non_negative_finite("work_of_adhesion (advancing)", advancing)?;
-        let receding = crate::error::non_negative_finite("work_of_adhesion (receding)", receding)?;
-        if advancing > receding {
-            return Err(Error::InvalidParameter {
-                name: "work_of_adhesion (advancing)",
-                value: advancing,
-                expected: "at most the receding work of adhesion",
-            });
-        }
+        let (advancing, receding) = crate::error::works_of_adhesion(advancing, receding)?;
         let lowest = self.sample_profile(indenter)?;
         let order = self.family_order(lowest);
         let smallest_level = order
