@@ -246,12 +246,10 @@ impl ContactSolver {
                 ws.gap[c] = 0.0;
             }
         }
-        if !(b_norm.is_finite() && r_norm.is_finite()) {
-            return Err(Error::NonFinite {
-                what: "clamped solve (prescribed displacements or their norm overflow)",
-                value: b_norm + r_norm,
-            });
-        }
+        super::all_finite(
+            "clamped solve (prescribed displacements or their norm overflow)",
+            &[b_norm, r_norm],
+        )?;
         let b_norm = b_norm.sqrt().max(f64::MIN_POSITIVE);
         let mut rz = precondition(&mut self.operator, attached, &ws.gap, &mut ws.previous)?;
         ws.direction.copy_from_slice(&ws.previous);

@@ -326,22 +326,26 @@ impl ContactSolver {
 /// A solution whose scalars are all finite, else [`Error::NonFinite`]: no
 /// NaN or infinity leaves a solver inside an `Ok`.
 pub(crate) fn check_solution(solution: &Solution) -> Result<()> {
-    for value in [
-        solution.depth,
-        solution.force,
-        solution.moment.0,
-        solution.moment.1,
-        solution.contact_area,
-        solution.residual,
-    ] {
-        if !value.is_finite() {
-            return Err(Error::NonFinite {
-                what: "contact solution",
-                value,
-            });
-        }
+    all_finite(
+        "contact solution",
+        &[
+            solution.depth,
+            solution.force,
+            solution.moment.0,
+            solution.moment.1,
+            solution.contact_area,
+            solution.residual,
+        ],
+    )
+}
+
+/// `Ok` if every one of `values` is finite, else [`Error::NonFinite`] naming
+/// `what` and the first offending value.
+pub(crate) fn all_finite(what: &'static str, values: &[f64]) -> Result<()> {
+    match values.iter().find(|v| !v.is_finite()) {
+        Some(&value) => Err(Error::NonFinite { what, value }),
+        None => Ok(()),
     }
-    Ok(())
 }
 
 /// A zeroed per-cell vector, or [`Error::OutOfMemory`] instead of an abort.

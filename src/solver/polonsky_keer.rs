@@ -133,13 +133,11 @@ impl ContactSolver {
                 self.operator.apply(&pressure, &mut ws.displacement)?;
                 continue;
             }
-            if !(g_norm.is_finite() && gap_sum.is_finite()) {
-                return Err(Error::NonFinite {
-                    what: "constrained conjugate gradients (the depth, heights or force \
-                           overflow f64 at these moduli and cell sizes)",
-                    value: g_norm,
-                });
-            }
+            super::all_finite(
+                "constrained conjugate gradients (the depth, heights or force \
+                 overflow f64 at these moduli and cell sizes)",
+                &[g_norm, gap_sum],
+            )?;
             if let Control::Force(_) = control {
                 // Gaps relative to the mean over the contact (the depth);
                 // the norm is recomputed, not corrected, to avoid cancellation.

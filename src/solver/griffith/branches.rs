@@ -496,14 +496,10 @@ impl AdhesiveBranches {
 
     /// `point` if all its values are finite.
     fn checked(&self, point: BranchPoint) -> Result<BranchPoint> {
-        for value in [point.depth, point.force, point.contact_area] {
-            if !value.is_finite() {
-                return Err(Error::NonFinite {
-                    what: "adhesive energy balance",
-                    value,
-                });
-            }
-        }
+        crate::solver::all_finite(
+            "adhesive energy balance",
+            &[point.depth, point.force, point.contact_area],
+        )?;
         Ok(point)
     }
 }

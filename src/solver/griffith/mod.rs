@@ -344,14 +344,10 @@ impl ContactSolver {
                 shape_force: f1 * area,
                 shape_energy: f2 * area,
             };
-            for v in [values.stiffness, values.shape_force, values.shape_energy] {
-                if !v.is_finite() {
-                    return Err(Error::NonFinite {
-                        what: "adhesive energy balance",
-                        value: v,
-                    });
-                }
-            }
+            super::all_finite(
+                "adhesive energy balance",
+                &[values.stiffness, values.shape_force, values.shape_energy],
+            )?;
             *iterations += i1 + i2;
             *residual = residual.max(r1).max(r2);
             observer.observe(&IterationInfo {
