@@ -78,8 +78,9 @@ impl Scene {
 
     /// For an adhesive scene with a paraboloid or sphere: the radii (m) of the
     /// loading peak's contact and of the pull-off contact, from the exact
-    /// (layered) JKR solution. `None` where there is none, or it fails.
-    fn adhesive_radii(&self) -> Option<(f64, f64)> {
+    /// (layered) JKR solution, given the non-adhesive `estimate` of the
+    /// peak's. `None` where there is none, or it fails.
+    fn adhesive_radii(&self, estimate: f64) -> Option<(f64, f64)> {
         let (advancing, receding) = self.adhesion.works()?;
         let (IndenterSpec::Sphere { radius } | IndenterSpec::Paraboloid { radius }) = self.indenter
         else {
@@ -95,7 +96,7 @@ impl Scene {
         // The exact solution is tabulated over the contact radii it may need:
         // the pull-off's (a few JKR scales) and the peak's (about twice the
         // non-adhesive estimate); its cost grows with the range.
-        let reach = (3.0 * scale).max(2.0 * self.contact_radius_estimate().ok()?);
+        let reach = (3.0 * scale).max(2.0 * estimate);
         let eps = match &substrate {
             crate::substrate::Substrate::Coated(c) => {
                 let eps = reach / c.thickness();
@@ -152,10 +153,10 @@ impl Scene {
             };
             return Grid::new(cells, cells, equal_area_spacing(radius, n, cells, shift));
         }
-        let (peak, resolved) = match self.adhesive_radii() {
+        let peak = self.contact_radius_estimate()?;
+        let (peak, resolved) = match self.adhesive_radii(peak) {
             Some((peak, pull_off)) => (peak, peak.min(pull_off)),
             None => {
-                let peak = self.contact_radius_estimate()?;
                 if !(peak.is_normal() && peak > 0.0) {
                     let (name, value) = match self.protocol {
                         Protocol::Depth { depth } => ("depth", depth),
