@@ -123,3 +123,22 @@ pub enum Boundary {
     /// The grid is one period of a doubly periodic surface.
     Periodic,
 }
+
+/// The smallest number of cells `>= n` whose prime factors are 2, 3, 5 and 7
+/// only: FFTs of such (padded) lengths are several times faster than of
+/// lengths with a large prime factor.
+pub(crate) fn fft_friendly(n: usize) -> usize {
+    // A power of two lies in [n, 2n]: the search is bounded.
+    let n = n.max(1);
+    (n..=2 * n)
+        .find(|&m| {
+            let mut rest = m;
+            for p in [2, 3, 5, 7] {
+                while rest % p == 0 {
+                    rest /= p;
+                }
+            }
+            rest == 1
+        })
+        .unwrap_or(n)
+}

@@ -11,11 +11,14 @@
 //! [`doc::theory`](crate::doc::theory).
 
 mod cell;
+mod convolution;
 mod fourier;
 mod influence;
+mod inverse;
 mod operator;
 mod radial;
 
 pub use fourier::FourierCompliance;
 pub use influence::InfluenceCoefficients;
+pub(crate) use inverse::BoxInverse;
 pub use operator::{check_film, memory_estimate, ComplianceOperator, MIN_THICKNESS_OVER_SPACING};

@@ -50,7 +50,7 @@ use crate::grid::{Boundary, Grid};
 use crate::solver::{ContactSolver, Fields, SolverParams};
 
 use runner::{Outcome, Runner};
-use sizing::fft_friendly;
+use crate::grid::fft_friendly;
 
 /// How the indenter is driven.
 #[derive(Debug, Clone, Copy, PartialEq)]

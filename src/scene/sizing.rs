@@ -1,6 +1,7 @@
 //! Grid sizing: how fine and how wide a scene's grid is, from the contacts
 //! it must hold and resolve.
 
+use crate::grid::fft_friendly;
 use crate::error::{Error, Result};
 use crate::grid::Grid;
 
@@ -194,25 +195,6 @@ impl Scene {
         let cells = fft_friendly(cells as usize);
         Grid::new(cells, cells, spacing)
     }
-}
-
-/// The smallest number of cells `>= n` whose prime factors are 2, 3, 5 and 7
-/// only: FFTs of such (padded) lengths are several times faster than of
-/// lengths with a large prime factor.
-pub(super) fn fft_friendly(n: usize) -> usize {
-    // A power of two lies in [n, 2n]: the search is bounded.
-    let n = n.max(1);
-    (n..=2 * n)
-        .find(|&m| {
-            let mut rest = m;
-            for p in [2, 3, 5, 7] {
-                while rest % p == 0 {
-                    rest /= p;
-                }
-            }
-            rest == 1
-        })
-        .unwrap_or(n)
 }
 
 /// A spacing within 2 % of `2 radius / n` for which the cells of a

@@ -49,11 +49,12 @@ use ndarray::Array2;
 use crate::error::{Error, Result};
 use crate::grid::{Boundary, Grid};
 use crate::indenter::Indenter;
-use crate::kernel::ComplianceOperator;
+use crate::kernel::{BoxInverse, ComplianceOperator, FourierCompliance};
 use crate::substrate::Substrate;
 
 pub use griffith::{AdhesiveBranches, BranchPoint, Reach, EDGE_SHIFT};
 pub use params::{Fields, IterationInfo, Observer, Solution, SolverParams, WarmStart};
+pub use polonsky_keer::MULTIRESOLUTION_CELLS;
 
 /// The constant of the mesh-dependent critical stress (Pohrt & Popov 2015).
 pub const MESH_CRITERION_CONSTANT: f64 = 0.473201;
@@ -81,6 +82,18 @@ pub const MESH_CRITERION_CONSTANT: f64 = 0.473201;
 pub struct ContactSolver {
     operator: ComplianceOperator,
     params: SolverParams,
+    /// The substrate's Fourier compliance, for the preconditioner.
+    compliance: FourierCompliance,
+    /// The constrained conjugate gradients' preconditioner, built on first
+    /// use for a box around the contact and rebuilt only when the contact
+    /// outgrows it (or shrinks far inside it).
+    preconditioner: Option<BoxInverse>,
+    /// The substrate, for the coarser solvers.
+    substrate: Substrate,
+    /// The solver on the grid of half the cells each way and twice their
+    /// size, for the multi-resolution start (built on first use; `None`
+    /// also when the grid cannot be halved).
+    coarse: Option<Option<Box<ContactSolver>>>,
     /// `E*` of the surface material, for the critical stress.
     surface_contact_modulus: f64,
     workspace: Workspace,
@@ -105,6 +118,8 @@ struct Workspace {
     previous: Vec<f64>,
     /// Prescribed displacements of a clamped solve.
     target: Vec<f64>,
+    /// Cells of the working set (in contact or overlapping).
+    working: Vec<bool>,
 }
 
 impl ContactSolver {
@@ -149,6 +164,10 @@ impl ContactSolver {
         Ok(ContactSolver {
             operator,
             params,
+            compliance: FourierCompliance::new(substrate),
+            preconditioner: None,
+            substrate: *substrate,
+            coarse: None,
             surface_contact_modulus: substrate.surface_material().contact_modulus(),
             workspace: Workspace {
                 profile: cell_vector(n)?,
@@ -158,6 +177,7 @@ impl ContactSolver {
                 response: cell_vector(n)?,
                 previous: cell_vector(n)?,
                 target: cell_vector(n)?,
+                working: vec![false; n],
             },
         })
     }
@@ -180,6 +200,9 @@ impl ContactSolver {
     /// Replaces the parameters (the kernel is kept).
     pub fn set_params(&mut self, params: SolverParams) {
         self.params = params;
+        if let Some(Some(coarse)) = self.coarse.as_mut() {
+            coarse.set_params(polonsky_keer::coarse_params(&params));
+        }
     }
 
     /// The critical tensile stress `sqrt(E1* dgamma / (0.473201 Delta))` for a
@@ -282,6 +305,7 @@ impl ContactSolver {
             contact_cells: cells,
             edge_contact,
             iterations,
+            coarse_iterations: 0,
             residual,
             pressure: field(fields.pressure, &|| pressure.to_vec()),
             displacement: field(fields.displacement, &|| ws.displacement.clone()),

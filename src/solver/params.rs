@@ -103,8 +103,12 @@ pub struct Solution {
     /// grid), the contact was truncated by the grid and the result is wrong;
     /// solve again on a wider grid. Always `false` on a periodic grid.
     pub edge_contact: bool,
-    /// Iterations used (operator applications per solve, roughly).
+    /// Iterations used on this grid (about one operator application each).
     pub iterations: usize,
+    /// Iterations of the multi-resolution start on the coarser grids (of
+    /// half, a quarter, ... the cells each way), 0 without one; each costs
+    /// a quarter, a sixteenth, ... of an iteration on this grid.
+    pub coarse_iterations: usize,
     /// Final residual.
     pub residual: f64,
     /// Cell pressures, if asked for in [`Fields`].

@@ -2,12 +2,35 @@
 //! 1999, Wear 231, 206-219).
 
 use crate::error::{Error, Result};
+use crate::grid::{fft_friendly, Boundary, Grid};
 use crate::indenter::Indenter;
+use crate::kernel::BoxInverse;
 
-use super::{check_finite, ContactSolver, IterationInfo, Observer, Solution, WarmStart};
+use super::{
+    check_finite, ContactSolver, Fields, IterationInfo, Observer, Solution, SolverParams,
+    WarmStart,
+};
 
 /// Iterations between full recomputations of `u = K p`.
 const REFRESH: usize = 50;
+
+/// Grids at least this many cells each way (and even) start from the
+/// solution on the grid of half the cells each way.
+pub const MULTIRESOLUTION_CELLS: usize = 64;
+
+/// The tolerance of the coarse solves of a multi-resolution start (or the
+/// solve's own, if looser): a start needs the contact set, not the last
+/// digits of the pressure.
+const COARSE_TOLERANCE: f64 = 1e-5;
+
+/// The parameters of a coarse solver under a solver with `params`.
+pub(super) fn coarse_params(params: &SolverParams) -> SolverParams {
+    SolverParams {
+        tolerance: params.tolerance.max(COARSE_TOLERANCE),
+        fields: Fields::default(),
+        ..*params
+    }
+}
 
 /// Which quantity a non-adhesive solve prescribes.
 #[derive(Clone, Copy)]
@@ -43,7 +66,7 @@ impl ContactSolver {
         if depth <= lowest {
             return Ok(self.no_contact(depth));
         }
-        self.constrained_cg(Control::Depth(depth), warm, observer)
+        self.solve_from(indenter, Control::Depth(depth), warm, observer)
     }
 
     /// Non-adhesive contact under total force `force` (N, `>= 0`); the depth
@@ -66,7 +89,73 @@ impl ContactSolver {
         if force == 0.0 {
             return Ok(self.no_contact(lowest));
         }
-        self.constrained_cg(Control::Force(force), warm, observer)
+        self.solve_from(indenter, Control::Force(force), warm, observer)
+    }
+
+    /// The constrained conjugate gradients from `warm` if it has contact,
+    /// else from the multi-resolution start if the grid allows one.
+    fn solve_from<I: Indenter + ?Sized>(
+        &mut self,
+        indenter: &I,
+        control: Control,
+        warm: Option<&WarmStart>,
+        observer: &mut dyn Observer,
+    ) -> Result<(Solution, WarmStart)> {
+        let has_contact = warm.is_some_and(|w| w.pressure.iter().any(|p| *p > 0.0));
+        let coarse = if has_contact {
+            None
+        } else {
+            self.coarse_start(indenter, control)
+        };
+        let start = coarse.as_ref().map(|(w, _)| w).or(warm);
+        let (mut solution, end) = self.constrained_cg(control, start, observer)?;
+        solution.coarse_iterations = coarse.map_or(0, |(_, iterations)| iterations);
+        Ok((solution, end))
+    }
+
+    /// The multi-resolution start: the same problem solved on the grid of
+    /// half the cells each way (twice their size), itself started from the
+    /// next coarser grid, its pressures spread over the four cells each
+    /// coarse cell covers. `None` for grids smaller than
+    /// [`MULTIRESOLUTION_CELLS`] or with an odd number of rows or columns,
+    /// or if the coarse grid cannot resolve the substrate (a film too thin
+    /// for its cells) or its solve fails: the fine solve then starts cold,
+    /// and reports its own errors. Also the iterations spent.
+    fn coarse_start<I: Indenter + ?Sized>(
+        &mut self,
+        indenter: &I,
+        control: Control,
+    ) -> Option<(WarmStart, usize)> {
+        let grid = *self.grid();
+        let (rows, columns) = (grid.rows(), grid.columns());
+        if rows % 2 != 0 || columns % 2 != 0 || rows.min(columns) < MULTIRESOLUTION_CELLS {
+            return None;
+        }
+        if self.coarse.is_none() {
+            let params = coarse_params(&self.params);
+            let coarse = Grid::new(rows / 2, columns / 2, 2.0 * grid.spacing())
+                .and_then(|g| {
+                    ContactSolver::new(&self.substrate, &g, self.operator.boundary(), params)
+                })
+                .ok()
+                .map(Box::new);
+            self.coarse = Some(coarse);
+        }
+        let coarse = self.coarse.as_mut()?.as_mut()?;
+        let (solution, warm) = match control {
+            Control::Depth(d) => coarse.solve_depth(indenter, d, None, &mut ()),
+            Control::Force(w) => coarse.solve_force(indenter, w, None, &mut ()),
+        }
+        .ok()?;
+        let half = columns / 2;
+        let pressure: Vec<f64> = (0..rows * columns)
+            .map(|c| warm.pressure[(c / columns / 2) * half + (c % columns) / 2])
+            .collect();
+        let attached = pressure.iter().map(|p| *p > 0.0).collect();
+        Some((
+            WarmStart { pressure, attached },
+            solution.iterations + solution.coarse_iterations,
+        ))
     }
 
     fn constrained_cg(
@@ -78,14 +167,14 @@ impl ContactSolver {
         let n = self.grid().len();
         let area = self.grid().cell_area();
         let reachable = self.reachable();
-        let self_coefficient = self.self_compliance()?;
-        let mut pressure = self.initial_pressure(control, warm, &reachable, self_coefficient);
+        let mut pressure = self.initial_pressure(control, warm, &reachable);
         if let Control::Force(w) = control {
             let total = area * pressure.iter().sum::<f64>();
             rescale(&mut pressure, w / total);
         }
+        let force_control = matches!(control, Control::Force(_));
         let tolerance = self.params.tolerance;
-        let (mut delta, mut g_old) = (0.0, 1.0);
+        let mut rz_old = 0.0;
         self.workspace.direction.fill(0.0);
         let mut depth = match control {
             Control::Depth(d) => d,
@@ -93,23 +182,24 @@ impl ContactSolver {
         };
         let mut residual = f64::INFINITY;
         // u = K p is kept up to date incrementally: one operator application
-        // per iteration (K t), plus one only when clamping or new overlap
-        // changed the pressure off the search direction, and a full refresh
-        // every REFRESH iterations against drift.
+        // per iteration (K t), plus one only when clamping changed the
+        // pressure off the search direction, and a full refresh every
+        // REFRESH iterations against drift.
         self.operator
             .apply(&pressure, &mut self.workspace.displacement)?;
         for iteration in 1..=self.params.max_iterations {
-            let ws = &mut self.workspace;
             if iteration % REFRESH == 0 {
-                self.operator.apply(&pressure, &mut ws.displacement)?;
+                self.operator
+                    .apply(&pressure, &mut self.workspace.displacement)?;
             }
-            // Gap (up to the unknown depth under force control).
+            let ws = &mut self.workspace;
+            // Gaps (up to the unknown depth under force control), and the
+            // depth under force control: the mean over the contact.
             let reference = match control {
                 Control::Depth(d) => d,
                 Control::Force(_) => 0.0,
             };
-            let mut contact = 0usize;
-            let (mut gap_sum, mut g_norm) = (0.0, 0.0);
+            let (mut contact, mut gap_sum) = (0usize, 0.0);
             for c in 0..n {
                 ws.gap[c] = if reachable[c] {
                     ws.profile[c] - reference + ws.displacement[c]
@@ -119,69 +209,97 @@ impl ContactSolver {
                 if pressure[c] > 0.0 {
                     contact += 1;
                     gap_sum += ws.gap[c];
-                    g_norm += ws.gap[c] * ws.gap[c];
                 }
             }
-            if contact == 0 {
-                // Every pressure was clamped: restart from the overlap.
-                for c in 0..n {
-                    if reachable[c] && ws.gap[c] < 0.0 {
-                        pressure[c] = -ws.gap[c] / self_coefficient;
-                    }
+            if force_control {
+                if contact == 0 {
+                    return Err(Error::Internal {
+                        what: "constrained conjugate gradients",
+                        detail: "no cell carries pressure under force control".into(),
+                    });
                 }
-                delta = 0.0;
-                self.operator.apply(&pressure, &mut ws.displacement)?;
-                continue;
-            }
-            super::all_finite(
-                "constrained conjugate gradients (the depth, heights or force \
-                 overflow f64 at these moduli and cell sizes)",
-                &[g_norm, gap_sum],
-            )?;
-            if let Control::Force(_) = control {
-                // Gaps relative to the mean over the contact (the depth);
-                // the norm is recomputed, not corrected, to avoid cancellation.
                 depth = gap_sum / contact as f64;
-                g_norm = 0.0;
                 for c in 0..n {
                     if reachable[c] {
                         ws.gap[c] -= depth;
                     }
-                    if pressure[c] > 0.0 {
-                        g_norm += ws.gap[c] * ws.gap[c];
+                }
+            }
+            // The working set: cells in contact, and reachable cells the
+            // indenter overlaps (the free variables of the bound-constrained
+            // minimum); new overlap restarts the conjugation.
+            let mut overlap = false;
+            let (mut members, mut r_sum) = (0usize, 0.0);
+            for c in 0..n {
+                let open = pressure[c] == 0.0;
+                let member = reachable[c] && (!open || ws.gap[c] < 0.0);
+                overlap |= member && open;
+                ws.working[c] = member;
+                if member {
+                    members += 1;
+                    r_sum += ws.gap[c];
+                }
+            }
+            if members == 0 {
+                // Unreachable: with no pressure anywhere, the lowest cell
+                // overlaps (solve_depth only gets here below first contact).
+                return Err(Error::Internal {
+                    what: "constrained conjugate gradients",
+                    detail: "empty working set".into(),
+                });
+            }
+            if force_control {
+                // The gradient projected on loads of zero net force.
+                let mean = r_sum / members as f64;
+                for c in 0..n {
+                    if ws.working[c] {
+                        ws.gap[c] -= mean;
                     }
                 }
             }
-            // Conjugation; a zero previous norm (every gap closed exactly)
-            // restarts from steepest descent instead of making 0/0 = NaN.
-            let beta = if g_old > 0.0 {
-                delta * (g_norm / g_old)
-            } else {
+            self.precondition_working_set()?;
+            let ws = &mut self.workspace;
+            if force_control {
+                let mean = (0..n)
+                    .filter(|&c| ws.working[c])
+                    .map(|c| ws.response[c])
+                    .sum::<f64>()
+                    / members as f64;
+                for c in 0..n {
+                    if ws.working[c] {
+                        ws.response[c] -= mean;
+                    }
+                }
+            }
+            let rz: f64 = (0..n)
+                .filter(|&c| ws.working[c])
+                .map(|c| ws.gap[c] * ws.response[c])
+                .sum();
+            super::all_finite(
+                "constrained conjugate gradients (the depth, heights or force \
+                 overflow f64 at these moduli and cell sizes)",
+                &[rz, depth],
+            )?;
+            // Conjugation; a zero previous product (every gap closed
+            // exactly) restarts from steepest descent instead of making
+            // 0/0 = NaN.
+            let beta = if overlap || rz_old <= 0.0 {
                 0.0
+            } else {
+                rz / rz_old
             };
+            rz_old = rz;
             for c in 0..n {
-                ws.direction[c] = if pressure[c] > 0.0 {
-                    ws.gap[c] + beta * ws.direction[c]
+                ws.direction[c] = if ws.working[c] {
+                    ws.response[c] + beta * ws.direction[c]
                 } else {
                     0.0
                 };
             }
-            g_old = g_norm;
             self.operator.apply(&ws.direction, &mut ws.response)?;
-            let mut mean = 0.0;
-            if let Control::Force(_) = control {
-                mean = (0..n)
-                    .filter(|&c| pressure[c] > 0.0)
-                    .map(|c| ws.response[c])
-                    .sum::<f64>()
-                    / contact as f64;
-                for r in ws.response.iter_mut() {
-                    *r -= mean;
-                }
-            }
             let (mut numerator, mut denominator) = (0.0, 0.0);
             for c in 0..n {
-                if pressure[c] > 0.0 {
+                if ws.working[c] {
                     numerator += ws.gap[c] * ws.direction[c];
                     denominator += ws.response[c] * ws.direction[c];
                 }
@@ -191,38 +309,31 @@ impl ContactSolver {
             } else {
                 0.0
             };
-            // One pass: step along the direction, clamp at zero, add new
-            // overlap (Polonsky & Keer's steps 7-9), and keep u = K p up to
-            // date: u += -step K t now, + K (correction) below, the
-            // correction being what clamping and overlap added to
-            // p - step t (`gap` holds it once read).
-            let mut overlap = false;
+            // Step along the direction, clamp at zero, and keep u = K p up
+            // to date: u -= step K t now, + K (correction) below, the
+            // correction being what clamping added to p - step t (`gap`
+            // holds it once read).
             let mut corrected = false;
             let (mut change, mut size, mut contact_cells) = (0.0, 0.0, 0usize);
-            let force_control = matches!(control, Control::Force(_));
             if force_control {
                 ws.previous.copy_from_slice(&pressure);
             }
             for c in 0..n {
                 let old = pressure[c];
-                let stepped = old - step * ws.direction[c];
-                let mut new = if old > 0.0 { stepped.max(0.0) } else { 0.0 };
-                if reachable[c] && new == 0.0 && ws.gap[c] < 0.0 {
-                    new = -step.max(0.0) * ws.gap[c];
-                    if new <= 0.0 {
-                        new = -ws.gap[c] / self_coefficient;
-                    }
-                    overlap = true;
-                }
+                let stepped = if ws.working[c] {
+                    old - step * ws.direction[c]
+                } else {
+                    old
+                };
+                let new = stepped.max(0.0);
                 pressure[c] = new;
-                ws.displacement[c] -= step * (ws.response[c] + mean);
+                ws.displacement[c] -= step * ws.response[c];
                 ws.gap[c] = new - stepped;
                 corrected |= ws.gap[c] != 0.0;
                 change += (new - old).abs();
                 size += new;
                 contact_cells += usize::from(new > 0.0);
             }
-            delta = if overlap { 0.0 } else { 1.0 };
             if corrected {
                 self.operator.apply(&ws.gap, &mut ws.response)?;
                 for (u, k) in ws.displacement.iter_mut().zip(&ws.response) {
@@ -234,6 +345,15 @@ impl ContactSolver {
                 if total > 0.0 {
                     rescale(&mut pressure, w / total);
                     rescale(&mut ws.displacement, w / total);
+                } else {
+                    // Every pressure clamped: restart uniform on the overlap.
+                    for c in 0..n {
+                        pressure[c] = if ws.working[c] { 1.0 } else { 0.0 };
+                    }
+                    let total = area * members as f64;
+                    rescale(&mut pressure, w / total);
+                    rz_old = 0.0;
+                    self.operator.apply(&pressure, &mut ws.displacement)?;
                 }
                 change = pressure
                     .iter()
@@ -253,36 +373,7 @@ impl ContactSolver {
                 contact_cells,
             });
             if residual <= tolerance && !overlap {
-                // Final displacement and depth for the converged pressure.
-                self.operator
-                    .apply(&pressure, &mut self.workspace.displacement)?;
-                if let Control::Force(_) = control {
-                    let ws = &self.workspace;
-                    let (sum, count) = (0..n)
-                        .filter(|&c| pressure[c] > 0.0)
-                        .fold((0.0, 0usize), |(s, k), c| {
-                            (s + ws.profile[c] + ws.displacement[c], k + 1)
-                        });
-                    depth = sum / count.max(1) as f64;
-                }
-                let solution = self.solution(&pressure, depth, iteration, residual, None);
-                super::check_solution(&solution)?;
-                if matches!(control, Control::Depth(_))
-                    && solution.contact_cells == n
-                    && !self.operator.uniform_mode_bounded()
-                {
-                    // Periodic grid in full contact: the mean pressure is
-                    // undetermined by the depth (infinite compliance of the
-                    // uniform mode).
-                    return Err(Error::Unsupported {
-                        feature: "full contact under depth control on a periodic grid \
-                                  without a rigid base",
-                        reason: "the mean pressure is undetermined (the uniform mode's \
-                                 compliance is infinite); prescribe the force (solve_force)",
-                    });
-                }
-                let attached = pressure.iter().map(|p| *p > 0.0).collect();
-                return Ok((solution, WarmStart { pressure, attached }));
+                return self.converged(control, pressure, depth, iteration, residual);
             }
         }
         Err(Error::NoConvergence {
@@ -290,6 +381,109 @@ impl ContactSolver {
             iterations: self.params.max_iterations,
             residual,
         })
+    }
+
+    /// The solution and warm start of a converged pressure.
+    fn converged(
+        &mut self,
+        control: Control,
+        pressure: Vec<f64>,
+        mut depth: f64,
+        iteration: usize,
+        residual: f64,
+    ) -> Result<(Solution, WarmStart)> {
+        let n = self.grid().len();
+        // Final displacement and depth for the converged pressure.
+        self.operator
+            .apply(&pressure, &mut self.workspace.displacement)?;
+        if let Control::Force(_) = control {
+            let ws = &self.workspace;
+            let (sum, count) = (0..n)
+                .filter(|&c| pressure[c] > 0.0)
+                .fold((0.0, 0usize), |(s, k), c| {
+                    (s + ws.profile[c] + ws.displacement[c], k + 1)
+                });
+            depth = sum / count.max(1) as f64;
+        }
+        let solution = self.solution(&pressure, depth, iteration, residual, None);
+        super::check_solution(&solution)?;
+        if matches!(control, Control::Depth(_))
+            && solution.contact_cells == n
+            && !self.operator.uniform_mode_bounded()
+        {
+            // Periodic grid in full contact: the mean pressure is
+            // undetermined by the depth (infinite compliance of the
+            // uniform mode).
+            return Err(Error::Unsupported {
+                feature: "full contact under depth control on a periodic grid \
+                          without a rigid base",
+                reason: "the mean pressure is undetermined (the uniform mode's \
+                         compliance is infinite); prescribe the force (solve_force)",
+            });
+        }
+        let attached = pressure.iter().map(|p| *p > 0.0).collect();
+        Ok((solution, WarmStart { pressure, attached }))
+    }
+
+    /// `response = P M^-1 P gap` on the working set, `M^-1` the
+    /// compliance's inverse on a periodic box around the working set
+    /// ([`BoxInverse`]; the whole grid when periodic). The box is rebuilt
+    /// only when the set outgrows it or shrinks to less than 1/2.25 of its
+    /// area.
+    fn precondition_working_set(&mut self) -> Result<()> {
+        let grid = *self.grid();
+        let (rows, columns) = (grid.rows(), grid.columns());
+        let periodic = self.operator.boundary() == Boundary::Periodic;
+        let ws = &mut self.workspace;
+        let Some(bounds) = bounding_box(&ws.working, columns) else {
+            ws.response.fill(0.0);
+            return Ok(());
+        };
+        // A margin of a sixteenth of the extent (at least 4 cells) keeps
+        // the box's periodic images apart; the stiffness decays like 1/r^3.
+        let side = |(lo, hi): (usize, usize), cells: usize| {
+            let extent = hi - lo + 1;
+            if periodic {
+                cells
+            } else {
+                fft_friendly((extent + 2 * (extent / 16).max(4)).min(cells))
+            }
+        };
+        let needed = (side(bounds.0, rows), side(bounds.1, columns));
+        let reuse = self.preconditioner.as_ref().is_some_and(|p| {
+            let (m0, m1) = p.size();
+            m0 >= needed.0 && m1 >= needed.1 && 4 * m0 * m1 <= 9 * needed.0 * needed.1
+        });
+        if !reuse {
+            // Free the old box before building the new one.
+            self.preconditioner = None;
+            self.preconditioner = Some(BoxInverse::new(
+                &self.compliance,
+                self.surface_contact_modulus,
+                grid.spacing(),
+                needed,
+            )?);
+        }
+        let Some(inverse) = self.preconditioner.as_mut() else {
+            return Ok(());
+        };
+        // The box centred on the working set (at the origin when periodic).
+        let (m0, m1) = inverse.size();
+        let start = |(lo, hi): (usize, usize), m: usize| {
+            if periodic {
+                0
+            } else {
+                lo as isize - (m.saturating_sub(hi - lo + 1) / 2) as isize
+            }
+        };
+        let origin = (start(bounds.0, m0), start(bounds.1, m1));
+        inverse.apply(
+            columns,
+            origin,
+            &ws.working,
+            &ws.gap,
+            &mut ws.response,
+        )
     }
 
     /// The operator's response at a cell to unit pressure on it.
@@ -304,14 +498,13 @@ impl ContactSolver {
         Ok(ws.response[0].max(f64::MIN_POSITIVE))
     }
 
-    /// A starting pressure: the warm start where it has contact, else the
-    /// overlap divided by the self-compliance (or uniform, for force control).
+    /// A starting pressure: the warm start where it has contact, else zero
+    /// (or uniform on the reachable cells, for force control).
     fn initial_pressure(
         &self,
         control: Control,
         warm: Option<&WarmStart>,
         reachable: &[bool],
-        self_coefficient: f64,
     ) -> Vec<f64> {
         if let Some(w) = warm {
             let p: Vec<f64> = w
@@ -324,18 +517,10 @@ impl ContactSolver {
                 return p;
             }
         }
-        let profile = &self.workspace.profile;
         match control {
-            Control::Depth(d) => profile
-                .iter()
-                .map(|f| {
-                    if f.is_finite() {
-                        (d - f).max(0.0) / self_coefficient
-                    } else {
-                        0.0
-                    }
-                })
-                .collect(),
+            // The first iteration steps from zero along the preconditioned
+            // overlap.
+            Control::Depth(_) => vec![0.0; reachable.len()],
             Control::Force(_) => reachable
                 .iter()
                 .map(|r| if *r { 1.0 } else { 0.0 })
@@ -348,4 +533,21 @@ fn rescale(values: &mut [f64], factor: f64) {
     for v in values {
         *v *= factor;
     }
+}
+
+/// The rows `(first, last)` and columns `(first, last)` of the cells where
+/// `member` holds on a row-major grid of `columns` columns, `None` if none.
+fn bounding_box(member: &[bool], columns: usize) -> Option<((usize, usize), (usize, usize))> {
+    let mut bounds: Option<((usize, usize), (usize, usize))> = None;
+    for (i, row) in member.chunks_exact(columns).enumerate() {
+        let Some(first) = row.iter().position(|m| *m) else {
+            continue;
+        };
+        let last = row.iter().rposition(|m| *m).unwrap_or(first);
+        bounds = Some(match bounds {
+            None => ((i, i), (first, last)),
+            Some(((r0, _), (c0, c1))) => ((r0, i), (c0.min(first), c1.max(last))),
+        });
+    }
+    bounds
 }

@@ -1,0 +1,371 @@
+//! Two-dimensional FFT convolution of a grid of cells with a real
+//! multiplier, zero-padded or periodic, in three cache-blocked passes that
+//! run on all threads.
+//!
+//! 1. Rows: each data row, zero-padded to the FFT width, goes through a
+//!    real-to-complex FFT into `row_spectra` (row-major).
+//! 2. Columns: blocks of a few adjacent spectrum columns are gathered from
+//!    `row_spectra` into contiguous lines (a blocked transpose), padded with
+//!    zeros to the FFT height, transformed, multiplied, transformed back; the
+//!    data rows of each are stored column-major in `filtered`.
+//! 3. Rows again: groups of a few rows are gathered from `filtered` (the
+//!    blocked transpose back), go through the complex-to-real FFT, and their
+//!    data columns are the output.
+//!
+//! Nothing of the padded grid is ever stored whole: the buffers hold the
+//! `rows x (width/2 + 1)` half-spectra of the data rows twice (32 bytes per
+//! cell of an unpadded grid with an even number of columns) and a few lines per
+//! thread. Each row and column is transformed by the same code whatever the
+//! number of threads, so results do not depend on it.
+
+use std::sync::Arc;
+
+use num_complex::Complex;
+use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
+use rustfft::{Fft, FftPlanner};
+
+use crate::error::{Error, Result};
+
+/// Bytes of the column lines a thread transforms at once (a block fits in
+/// the second-level cache).
+const BLOCK_BYTES: usize = 1 << 18;
+/// Rows gathered at once in the inverse row pass (four complex values fill a
+/// 64-byte cache line).
+const ROW_GROUP: usize = 4;
+
+/// Plans and scratch of one convolution geometry.
+pub(super) struct Convolution {
+    /// Data rows and columns (the grid).
+    rows: usize,
+    columns: usize,
+    /// FFT height and width (padded or not).
+    size: (usize, usize),
+    row_forward: Arc<dyn RealToComplex<f64>>,
+    row_inverse: Arc<dyn ComplexToReal<f64>>,
+    column_forward: Arc<dyn Fft<f64>>,
+    column_inverse: Arc<dyn Fft<f64>>,
+    /// Half-spectra of the data rows, `rows x half`, row-major.
+    row_spectra: Vec<Complex<f64>>,
+    /// Filtered columns, data rows only, `half x rows`, column-major.
+    filtered: Vec<Complex<f64>>,
+    tasks: Vec<Scratch>,
+    rows_per_task: usize,
+    /// Spectrum columns per block and blocks per task.
+    block: usize,
+    blocks_per_task: usize,
+}
+
+/// One thread's scratch.
+struct Scratch {
+    /// One padded real row.
+    real: Vec<f64>,
+    /// A block of column lines, or a group of row spectra.
+    lines: Vec<Complex<f64>>,
+    fft: Vec<Complex<f64>>,
+}
+
+/// Tasks the passes are split into: one per thread (with the `parallel`
+/// feature, and for grids of at least 2^16 FFT cells, below which the fork
+/// costs more than it saves), else one.
+fn task_count(fft_cells: usize) -> usize {
+    #[cfg(feature = "parallel")]
+    {
+        if fft_cells >= 1 << 16 {
+            return rayon::current_num_threads().max(1);
+        }
+    }
+    let _ = fft_cells;
+    1
+}
+
+/// Runs `f` on every task, in parallel with the `parallel` feature.
+fn run_tasks<T: Send>(tasks: Vec<T>, f: impl Fn(T) -> Result<()> + Sync + Send) -> Result<()> {
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        tasks.into_par_iter().try_for_each(f)
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        tasks.into_iter().try_for_each(f)
+    }
+}
+
+/// A zeroed vector of `len` values, or [`Error::OutOfMemory`].
+pub(super) fn zeroed<T: Clone + Default>(len: usize) -> Result<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(len).map_err(|_| Error::OutOfMemory {
+        bytes: len.saturating_mul(std::mem::size_of::<T>()),
+        what: "an FFT buffer",
+    })?;
+    v.resize(len, T::default());
+    Ok(v)
+}
+
+/// Buffer sizes are fixed at construction, so an FFT error is a bug of this
+/// module; it is reported rather than unwrapped.
+fn fft_error(error: realfft::FftError) -> Error {
+    Error::Internal {
+        what: "FFT",
+        detail: error.to_string(),
+    }
+}
+
+impl Convolution {
+    /// Bytes of the buffers for `rows x columns` data on an FFT grid of
+    /// `size`, besides the multipliers.
+    pub(super) fn memory(rows: usize, _columns: usize, size: (usize, usize)) -> usize {
+        let half = size.1 / 2 + 1;
+        let tasks = task_count(size.0 * size.1);
+        2 * 16 * rows * half + tasks * (8 * size.1 + 16 * (BLOCK_BYTES / 16 + size.0))
+    }
+
+    /// Plans and buffers for `rows x columns` data on an FFT grid of `size`
+    /// (`size.0 >= rows`, `size.1 >= columns`; larger means zero-padded).
+    pub(super) fn new(rows: usize, columns: usize, size: (usize, usize)) -> Result<Self> {
+        let (n0, n1) = size;
+        let mut real_planner = RealFftPlanner::<f64>::new();
+        let row_forward = real_planner.plan_fft_forward(n1);
+        let row_inverse = real_planner.plan_fft_inverse(n1);
+        let mut planner = FftPlanner::<f64>::new();
+        let column_forward = planner.plan_fft_forward(n0);
+        let column_inverse = planner.plan_fft_inverse(n0);
+        let half = n1 / 2 + 1;
+        let fft_scratch = [
+            row_forward.get_scratch_len(),
+            row_inverse.get_scratch_len(),
+            column_forward.get_inplace_scratch_len(),
+            column_inverse.get_inplace_scratch_len(),
+        ]
+        .into_iter()
+        .max()
+        .unwrap_or(0);
+        let tasks = task_count(n0 * n1);
+        let block = (BLOCK_BYTES / (16 * n0)).clamp(1, half);
+        let blocks = half.div_ceil(block);
+        let lines = (block * n0).max(ROW_GROUP * half);
+        let scratch = (0..tasks)
+            .map(|_| {
+                Ok(Scratch {
+                    real: zeroed(n1)?,
+                    lines: zeroed(lines)?,
+                    fft: zeroed(fft_scratch)?,
+                })
+            })
+            .collect::<Result<Vec<_>>>()?;
+        Ok(Convolution {
+            rows,
+            columns,
+            size,
+            row_forward,
+            row_inverse,
+            column_forward,
+            column_inverse,
+            row_spectra: zeroed(rows * half)?,
+            filtered: zeroed(rows * half)?,
+            tasks: scratch,
+            rows_per_task: rows.div_ceil(tasks),
+            block,
+            blocks_per_task: blocks.div_ceil(tasks),
+        })
+    }
+
+    /// The FFT grid (height, width).
+    pub(super) fn size(&self) -> (usize, usize) {
+        self.size
+    }
+
+    /// `output = IFFT2(multiplier * FFT2(input))` restricted to the data
+    /// cells, `input` zero-padded to the FFT grid; `multiplier` holds
+    /// `half x height` values (column-major over the half-spectrum), the
+    /// FFT normalisation included.
+    pub(super) fn apply(
+        &mut self,
+        input: &[f64],
+        output: &mut [f64],
+        multiplier: &[f64],
+    ) -> Result<()> {
+        self.forward_rows(input)?;
+        self.filter_columns(multiplier)?;
+        self.inverse_rows(output)
+    }
+
+    /// Pass 1: real-to-complex transforms of the zero-padded data rows.
+    fn forward_rows(&mut self, input: &[f64]) -> Result<()> {
+        let (columns, half) = (self.columns, self.size.1 / 2 + 1);
+        let per_task = self.rows_per_task;
+        let fft = &self.row_forward;
+        let tasks: Vec<_> = input
+            .chunks(per_task * columns)
+            .zip(self.row_spectra.chunks_mut(per_task * half))
+            .zip(self.tasks.iter_mut())
+            .collect();
+        run_tasks(tasks, |((input, spectra), scratch)| {
+            for (row, spectrum) in input
+                .chunks_exact(columns)
+                .zip(spectra.chunks_exact_mut(half))
+            {
+                scratch.real[..columns].copy_from_slice(row);
+                scratch.real[columns..].fill(0.0);
+                fft.process_with_scratch(&mut scratch.real, spectrum, &mut scratch.fft)
+                    .map_err(fft_error)?;
+            }
+            Ok(())
+        })
+    }
+
+    /// Pass 2: column transforms, multiplication, inverse column transforms.
+    fn filter_columns(&mut self, multiplier: &[f64]) -> Result<()> {
+        let (rows, n0, half) = (self.rows, self.size.0, self.size.1 / 2 + 1);
+        let (block, per_task) = (self.block, self.blocks_per_task * self.block);
+        let (forward, inverse) = (&self.column_forward, &self.column_inverse);
+        let row_spectra = &self.row_spectra;
+        let tasks: Vec<_> = self
+            .filtered
+            .chunks_mut(per_task * rows)
+            .zip(self.tasks.iter_mut())
+            .enumerate()
+            .collect();
+        run_tasks(tasks, |(task, (filtered, scratch))| {
+            let first = task * per_task;
+            for (b, out) in filtered.chunks_mut(block * rows).enumerate() {
+                let j0 = first + b * block;
+                let width = out.len() / rows;
+                let lines = &mut scratch.lines[..width * n0];
+                for (i, spectrum) in row_spectra.chunks_exact(half).enumerate() {
+                    for (w, value) in spectrum[j0..j0 + width].iter().enumerate() {
+                        lines[w * n0 + i] = *value;
+                    }
+                }
+                for line in lines.chunks_exact_mut(n0) {
+                    line[rows..].fill(Complex::default());
+                }
+                forward.process_with_scratch(lines, &mut scratch.fft);
+                for (c, k) in lines
+                    .iter_mut()
+                    .zip(&multiplier[j0 * n0..(j0 + width) * n0])
+                {
+                    *c *= *k;
+                }
+                inverse.process_with_scratch(lines, &mut scratch.fft);
+                for (line, column) in lines.chunks_exact(n0).zip(out.chunks_exact_mut(rows)) {
+                    column.copy_from_slice(&line[..rows]);
+                }
+            }
+            Ok(())
+        })
+    }
+
+    /// Pass 3: complex-to-real transforms of the filtered rows; their data
+    /// columns are the output.
+    fn inverse_rows(&mut self, output: &mut [f64]) -> Result<()> {
+        let (rows, columns, half) = (self.rows, self.columns, self.size.1 / 2 + 1);
+        let even = self.size.1 % 2 == 0;
+        let per_task = self.rows_per_task;
+        let fft = &self.row_inverse;
+        let filtered = &self.filtered;
+        let tasks: Vec<_> = output
+            .chunks_mut(per_task * columns)
+            .zip(self.tasks.iter_mut())
+            .enumerate()
+            .collect();
+        run_tasks(tasks, |(task, (output, scratch))| {
+            for (g, out) in output.chunks_mut(ROW_GROUP * columns).enumerate() {
+                let i0 = task * per_task + g * ROW_GROUP;
+                let count = out.len() / columns;
+                let lines = &mut scratch.lines[..count * half];
+                for j in 0..half {
+                    let column = &filtered[j * rows + i0..j * rows + i0 + count];
+                    for (r, value) in column.iter().enumerate() {
+                        lines[r * half + j] = *value;
+                    }
+                }
+                for (spectrum, row) in lines
+                    .chunks_exact_mut(half)
+                    .zip(out.chunks_exact_mut(columns))
+                {
+                    // A real signal has real DC and Nyquist terms; clear the rounding.
+                    spectrum[0].im = 0.0;
+                    if even {
+                        spectrum[half - 1].im = 0.0;
+                    }
+                    fft.process_with_scratch(spectrum, &mut scratch.real, &mut scratch.fft)
+                        .map_err(fft_error)?;
+                    row.copy_from_slice(&scratch.real[..columns]);
+                }
+            }
+            Ok(())
+        })
+    }
+
+    /// The normalised real spectrum (`half x height`, column-major) of a
+    /// real kernel on the whole FFT grid that is even in the row index
+    /// (row `i` equals row `height - i`): `row(i, values)` fills row `i`
+    /// (`i <= height / 2`) of width `size.1`. The spectrum of an even kernel
+    /// is real; its imaginary rounding is dropped.
+    pub(super) fn even_kernel_spectrum(
+        &mut self,
+        row: impl Fn(usize, &mut [f64]),
+    ) -> Result<Vec<f64>> {
+        let (n0, n1) = self.size;
+        let half = n1 / 2 + 1;
+        let distinct = n0 / 2 + 1;
+        let mut row_spectra: Vec<Complex<f64>> = zeroed(distinct * half)?;
+        let scratch = &mut self.tasks[0];
+        for (i, spectrum) in row_spectra.chunks_exact_mut(half).enumerate() {
+            row(i, &mut scratch.real);
+            self.row_forward
+                .process_with_scratch(&mut scratch.real, spectrum, &mut scratch.fft)
+                .map_err(fft_error)?;
+        }
+        let normalisation = 1.0 / (n0 * n1) as f64;
+        let mut spectrum = zeroed(half * n0)?;
+        let line = &mut scratch.lines[..n0];
+        for j in 0..half {
+            for (i, value) in line.iter_mut().enumerate() {
+                *value = row_spectra[i.min(n0 - i) * half + j];
+            }
+            self.column_forward
+                .process_with_scratch(line, &mut scratch.fft);
+            for (k, value) in spectrum[j * n0..(j + 1) * n0].iter_mut().zip(line.iter()) {
+                *k = value.re * normalisation;
+            }
+        }
+        Ok(spectrum)
+    }
+}
+
+/// The wavenumber (rad/m) of FFT index `index` on `n` cells of side `delta`,
+/// indices above `n/2` standing for negative frequencies.
+pub(super) fn wavenumber(index: usize, n: usize, delta: f64) -> f64 {
+    let k = if index <= n / 2 {
+        index as f64
+    } else {
+        index as f64 - n as f64
+    };
+    2.0 * std::f64::consts::PI * k / (n as f64 * delta)
+}
+
+/// The multiplier `f(q_x, q_y)` at the wavevectors of an FFT grid of `size`
+/// with cells of side `delta`, divided by the FFT normalisation and laid out
+/// for [`Convolution::apply`].
+///
+/// # Errors
+/// [`Error::OutOfMemory`].
+pub(super) fn multiplier(
+    size: (usize, usize),
+    delta: f64,
+    f: impl Fn(f64, f64) -> f64,
+) -> Result<Vec<f64>> {
+    let (n0, n1) = size;
+    let half = n1 / 2 + 1;
+    let normalisation = 1.0 / (n0 * n1) as f64;
+    let mut values = zeroed(half * n0)?;
+    for (ky, column) in values.chunks_exact_mut(n0).enumerate() {
+        let qy = wavenumber(ky, n1, delta);
+        for (kx, value) in column.iter_mut().enumerate() {
+            *value = f(wavenumber(kx, n0, delta), qy) * normalisation;
+        }
+    }
+    Ok(values)
+}
