@@ -7,9 +7,9 @@
 //! 2. Columns: blocks of a few adjacent spectrum columns are gathered from
 //!    `row_spectra` into contiguous lines (a blocked transpose), padded with
 //!    zeros to the FFT height, transformed, multiplied, transformed back; the
-//!    data rows of each are stored column-major in `filtered`.
-//! 3. Rows again: groups of a few rows are gathered from `filtered` (the
-//!    blocked transpose back), go through the complex-to-real FFT, and their
+//!    data rows of a block are stored as a row-major tile in `filtered`.
+//! 3. Rows again: each row is gathered from the tiles of pass 2 (the
+//!    blocked transpose back), goes through the complex-to-real FFT, and its
 //!    data columns are the output.
 //!
 //! Nothing of the padded grid is ever stored whole: the buffers hold the
@@ -29,9 +29,6 @@ use crate::error::{Error, Result};
 /// Bytes of the column lines a thread transforms at once (a block fits in
 /// the second-level cache).
 const BLOCK_BYTES: usize = 1 << 18;
-/// Rows gathered at once in the inverse row pass (four complex values fill a
-/// 64-byte cache line).
-const ROW_GROUP: usize = 4;
 
 /// Plans and scratch of one convolution geometry.
 pub(super) struct Convolution {
@@ -46,7 +43,8 @@ pub(super) struct Convolution {
     column_inverse: Arc<dyn Fft<f64>>,
     /// Half-spectra of the data rows, `rows x half`, row-major.
     row_spectra: Vec<Complex<f64>>,
-    /// Filtered columns, data rows only, `half x rows`, column-major.
+    /// Filtered columns, data rows only: per block of `block` columns a
+    /// row-major tile of `rows x block`.
     filtered: Vec<Complex<f64>>,
     tasks: Vec<Scratch>,
     rows_per_task: usize,
@@ -143,7 +141,7 @@ impl Convolution {
         let tasks = task_count(n0 * n1);
         let block = (BLOCK_BYTES / (16 * n0)).clamp(1, half);
         let blocks = half.div_ceil(block);
-        let lines = (block * n0).max(ROW_GROUP * half);
+        let lines = (block * n0).max(half);
         let scratch = (0..tasks)
             .map(|_| {
                 Ok(Scratch {
@@ -228,16 +226,16 @@ impl Convolution {
             .collect();
         run_tasks(tasks, |(task, (filtered, scratch))| {
             let first = task * per_task;
-            for (b, out) in filtered.chunks_mut(block * rows).enumerate() {
+            for (b, tile) in filtered.chunks_mut(block * rows).enumerate() {
                 let j0 = first + b * block;
-                let width = out.len() / rows;
+                let width = tile.len() / rows;
                 let lines = &mut scratch.lines[..width * n0];
-                for (i, spectrum) in row_spectra.chunks_exact(half).enumerate() {
-                    for (w, value) in spectrum[j0..j0 + width].iter().enumerate() {
-                        lines[w * n0 + i] = *value;
+                // Gather the block's columns (a blocked transpose).
+                for (w, line) in lines.chunks_exact_mut(n0).enumerate() {
+                    let column = row_spectra[j0 + w..].iter().step_by(half);
+                    for (value, spectrum) in line[..rows].iter_mut().zip(column) {
+                        *value = *spectrum;
                     }
-                }
-                for line in lines.chunks_exact_mut(n0) {
                     line[rows..].fill(Complex::default());
                 }
                 forward.process_with_scratch(lines, &mut scratch.fft);
@@ -248,8 +246,12 @@ impl Convolution {
                     *c *= *k;
                 }
                 inverse.process_with_scratch(lines, &mut scratch.fft);
-                for (line, column) in lines.chunks_exact(n0).zip(out.chunks_exact_mut(rows)) {
-                    column.copy_from_slice(&line[..rows]);
+                // Store the data rows as a row-major tile of `rows x width`.
+                for (w, line) in lines.chunks_exact(n0).enumerate() {
+                    for (value, out) in line[..rows].iter().zip(tile[w..].iter_mut().step_by(width))
+                    {
+                        *out = *value;
+                    }
                 }
             }
             Ok(())
@@ -262,6 +264,7 @@ impl Convolution {
         let (rows, columns, half) = (self.rows, self.columns, self.size.1 / 2 + 1);
         let even = self.size.1 % 2 == 0;
         let per_task = self.rows_per_task;
+        let block = self.block;
         let fft = &self.row_inverse;
         let filtered = &self.filtered;
         let tasks: Vec<_> = output
@@ -270,29 +273,22 @@ impl Convolution {
             .enumerate()
             .collect();
         run_tasks(tasks, |(task, (output, scratch))| {
-            for (g, out) in output.chunks_mut(ROW_GROUP * columns).enumerate() {
-                let i0 = task * per_task + g * ROW_GROUP;
-                let count = out.len() / columns;
-                let lines = &mut scratch.lines[..count * half];
-                for j in 0..half {
-                    let column = &filtered[j * rows + i0..j * rows + i0 + count];
-                    for (r, value) in column.iter().enumerate() {
-                        lines[r * half + j] = *value;
-                    }
+            for (r, row) in output.chunks_exact_mut(columns).enumerate() {
+                let i = task * per_task + r;
+                let spectrum = &mut scratch.lines[..half];
+                // Gather the row from the tiles of pass 2.
+                for (j0, tile) in (0..half).step_by(block).zip(filtered.chunks(block * rows)) {
+                    let width = tile.len() / rows;
+                    spectrum[j0..j0 + width].copy_from_slice(&tile[i * width..(i + 1) * width]);
                 }
-                for (spectrum, row) in lines
-                    .chunks_exact_mut(half)
-                    .zip(out.chunks_exact_mut(columns))
-                {
-                    // A real signal has real DC and Nyquist terms; clear the rounding.
-                    spectrum[0].im = 0.0;
-                    if even {
-                        spectrum[half - 1].im = 0.0;
-                    }
-                    fft.process_with_scratch(spectrum, &mut scratch.real, &mut scratch.fft)
-                        .map_err(fft_error)?;
-                    row.copy_from_slice(&scratch.real[..columns]);
+                // A real signal has real DC and Nyquist terms; clear the rounding.
+                spectrum[0].im = 0.0;
+                if even {
+                    spectrum[half - 1].im = 0.0;
                 }
+                fft.process_with_scratch(spectrum, &mut scratch.real, &mut scratch.fft)
+                    .map_err(fft_error)?;
+                row.copy_from_slice(&scratch.real[..columns]);
             }
             Ok(())
         })

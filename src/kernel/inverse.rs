@@ -47,7 +47,11 @@ impl BoxInverse {
         let smallest = wavenumber(1, m0.max(m1).max(2), delta).abs();
         let stiffness = |qx: f64, qy: f64| {
             let q = qx.hypot(qy);
-            let (qx, q) = if q == 0.0 { (smallest, smallest) } else { (qx, q) };
+            let (qx, q) = if q == 0.0 {
+                (smallest, smallest)
+            } else {
+                (qx, q)
+            };
             let value = 1.0 / (compliance.eval(q) * cell_filter(qx, qy, delta));
             if value.is_finite() && value > 0.0 {
                 value
@@ -73,7 +77,8 @@ impl BoxInverse {
     /// and `residual.len() / columns` rows, `P` the restriction to the cells
     /// where `member` holds, with the box's first cell at grid cell
     /// `origin` (rows and columns, possibly negative: box cells off the grid
-    /// are zero). Cells outside the box or not members get 0.
+    /// are zero). Only members in the box are written: the box must hold
+    /// every member.
     ///
     /// # Errors
     /// As the FFT ([`Error::Internal`](crate::Error::Internal), a bug).
@@ -102,7 +107,6 @@ impl BoxInverse {
         }
         self.convolution
             .apply(&self.input, &mut self.output, &self.multiplier)?;
-        result.fill(0.0);
         for bi in 0..m0 {
             for bj in 0..m1 {
                 if let Some(c) = cell(bi, bj) {

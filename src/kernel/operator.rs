@@ -1,7 +1,6 @@
 //! The compliance operator: pressure -> surface displacement by FFT
 //! convolution, with its plans and scratch buffers.
 
-
 use crate::error::{Error, Result};
 use crate::grid::{Boundary, Grid};
 use crate::substrate::Substrate;
@@ -326,7 +325,9 @@ impl ComplianceOperator {
         let delta = self.grid.spacing();
         let smallest = wavenumber(1, n0.max(n1).max(2), delta).abs();
         let modulus = self.surface_modulus;
-        multiplier((n0, n1), delta, |qx, qy| 0.5 * modulus * qx.hypot(qy).max(smallest))
+        multiplier((n0, n1), delta, |qx, qy| {
+            0.5 * modulus * qx.hypot(qy).max(smallest)
+        })
     }
 
     /// `output = IFFT(spectrum * FFT(input))` on the (padded) grid.

@@ -49,8 +49,8 @@ use crate::error::{positive_finite, Error, Result};
 use crate::grid::{Boundary, Grid};
 use crate::solver::{ContactSolver, Fields, SolverParams};
 
-use runner::{Outcome, Runner};
 use crate::grid::fft_friendly;
+use runner::{Outcome, Runner};
 
 /// How the indenter is driven.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -319,6 +319,7 @@ impl Scene {
             tolerance: self.solver.tolerance,
             max_iterations: self.solver.max_iterations,
             fields: Fields::default(),
+            ..SolverParams::default()
         };
         ContactSolver::new(&self.substrate.build()?, grid, self.boundary, params)
     }

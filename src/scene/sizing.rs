@@ -1,8 +1,8 @@
 //! Grid sizing: how fine and how wide a scene's grid is, from the contacts
 //! it must hold and resolve.
 
-use crate::grid::fft_friendly;
 use crate::error::{Error, Result};
+use crate::grid::fft_friendly;
 use crate::grid::Grid;
 
 use super::{Adhesion, AdhesionMethod, IndenterSpec, Protocol, Scene};

@@ -42,6 +42,7 @@
 mod adhesive;
 mod griffith;
 mod params;
+mod passes;
 mod polonsky_keer;
 
 use ndarray::Array2;

@@ -7,7 +7,7 @@ use crate::indenter::Indenter;
 use crate::kernel::BoxInverse;
 
 use super::{
-    check_finite, ContactSolver, Fields, IterationInfo, Observer, Solution, SolverParams,
+    check_finite, passes, ContactSolver, Fields, IterationInfo, Observer, Solution, SolverParams,
     WarmStart,
 };
 
@@ -128,7 +128,11 @@ impl ContactSolver {
     ) -> Option<(WarmStart, usize)> {
         let grid = *self.grid();
         let (rows, columns) = (grid.rows(), grid.columns());
-        if rows % 2 != 0 || columns % 2 != 0 || rows.min(columns) < MULTIRESOLUTION_CELLS {
+        if !self.params.multiresolution
+            || rows % 2 != 0
+            || columns % 2 != 0
+            || rows.min(columns) < MULTIRESOLUTION_CELLS
+        {
             return None;
         }
         if self.coarse.is_none() {
@@ -193,54 +197,37 @@ impl ContactSolver {
                     .apply(&pressure, &mut self.workspace.displacement)?;
             }
             let ws = &mut self.workspace;
-            // Gaps (up to the unknown depth under force control), and the
-            // depth under force control: the mean over the contact.
+            // The depth under force control: the mean of profile + u over
+            // the contact.
             let reference = match control {
                 Control::Depth(d) => d,
-                Control::Force(_) => 0.0,
-            };
-            let (mut contact, mut gap_sum) = (0usize, 0.0);
-            for c in 0..n {
-                ws.gap[c] = if reachable[c] {
-                    ws.profile[c] - reference + ws.displacement[c]
-                } else {
-                    0.0
-                };
-                if pressure[c] > 0.0 {
-                    contact += 1;
-                    gap_sum += ws.gap[c];
-                }
-            }
-            if force_control {
-                if contact == 0 {
-                    return Err(Error::Internal {
-                        what: "constrained conjugate gradients",
-                        detail: "no cell carries pressure under force control".into(),
-                    });
-                }
-                depth = gap_sum / contact as f64;
-                for c in 0..n {
-                    if reachable[c] {
-                        ws.gap[c] -= depth;
+                Control::Force(_) => {
+                    let (sum, contact) =
+                        passes::contact_sum(&ws.profile, &ws.displacement, &pressure);
+                    if contact == 0 {
+                        return Err(Error::Internal {
+                            what: "constrained conjugate gradients",
+                            detail: "no cell carries pressure under force control".into(),
+                        });
                     }
+                    depth = sum / contact as f64;
+                    depth
                 }
-            }
-            // The working set: cells in contact, and reachable cells the
-            // indenter overlaps (the free variables of the bound-constrained
-            // minimum); new overlap restarts the conjugation.
-            let mut overlap = false;
-            let (mut members, mut r_sum) = (0usize, 0.0);
-            for c in 0..n {
-                let open = pressure[c] == 0.0;
-                let member = reachable[c] && (!open || ws.gap[c] < 0.0);
-                overlap |= member && open;
-                ws.working[c] = member;
-                if member {
-                    members += 1;
-                    r_sum += ws.gap[c];
-                }
-            }
-            if members == 0 {
+            };
+            // Gaps and the working set: cells in contact, and reachable
+            // cells the indenter overlaps (the free variables of the
+            // bound-constrained minimum); new overlap restarts the
+            // conjugation.
+            let set = passes::gaps_and_working_set(
+                &ws.profile,
+                &ws.displacement,
+                &pressure,
+                &reachable,
+                reference,
+                &mut ws.gap,
+                &mut ws.working,
+            );
+            if set.members == 0 {
                 // Unreachable: with no pressure anywhere, the lowest cell
                 // overlaps (solve_depth only gets here below first contact).
                 return Err(Error::Internal {
@@ -250,31 +237,19 @@ impl ContactSolver {
             }
             if force_control {
                 // The gradient projected on loads of zero net force.
-                let mean = r_sum / members as f64;
-                for c in 0..n {
-                    if ws.working[c] {
-                        ws.gap[c] -= mean;
-                    }
-                }
+                passes::shift_on(&ws.working, &mut ws.gap, set.gap_sum / set.members as f64);
             }
+            // z = P M^-1 P r in `response`; under force control projected
+            // too (its mean taken out of the direction; the product r.z is
+            // unchanged as r has zero sum).
             self.precondition_working_set()?;
             let ws = &mut self.workspace;
-            if force_control {
-                let mean = (0..n)
-                    .filter(|&c| ws.working[c])
-                    .map(|c| ws.response[c])
-                    .sum::<f64>()
-                    / members as f64;
-                for c in 0..n {
-                    if ws.working[c] {
-                        ws.response[c] -= mean;
-                    }
-                }
-            }
-            let rz: f64 = (0..n)
-                .filter(|&c| ws.working[c])
-                .map(|c| ws.gap[c] * ws.response[c])
-                .sum();
+            let (z_sum, rz) = passes::sum_and_dot(&ws.working, &ws.response, &ws.gap);
+            let z_shift = if force_control {
+                z_sum / set.members as f64
+            } else {
+                0.0
+            };
             super::all_finite(
                 "constrained conjugate gradients (the depth, heights or force \
                  overflow f64 at these moduli and cell sizes)",
@@ -283,96 +258,76 @@ impl ContactSolver {
             // Conjugation; a zero previous product (every gap closed
             // exactly) restarts from steepest descent instead of making
             // 0/0 = NaN.
-            let beta = if overlap || rz_old <= 0.0 {
+            let beta = if set.overlap || rz_old <= 0.0 {
                 0.0
             } else {
                 rz / rz_old
             };
             rz_old = rz;
-            for c in 0..n {
-                ws.direction[c] = if ws.working[c] {
-                    ws.response[c] + beta * ws.direction[c]
-                } else {
-                    0.0
-                };
-            }
+            passes::update_direction(&ws.working, &ws.response, z_shift, beta, &mut ws.direction);
             self.operator.apply(&ws.direction, &mut ws.response)?;
-            let (mut numerator, mut denominator) = (0.0, 0.0);
-            for c in 0..n {
-                if ws.working[c] {
-                    numerator += ws.gap[c] * ws.direction[c];
-                    denominator += ws.response[c] * ws.direction[c];
-                }
-            }
+            let (numerator, denominator) =
+                passes::two_dots(&ws.working, &ws.gap, &ws.response, &ws.direction);
             let step = if denominator > 0.0 {
                 numerator / denominator
+            } else if numerator == 0.0 {
+                0.0 // A zero direction: the gaps are closed.
             } else {
-                0.0
+                // K t . t <= 0 for t != 0: t lies in the operator's null
+                // space, the uniform mode of a periodic grid on a body
+                // without a rigid base.
+                return Err(self.singular_uniform_mode());
             };
             // Step along the direction, clamp at zero, and keep u = K p up
             // to date: u -= step K t now, + K (correction) below, the
             // correction being what clamping added to p - step t (`gap`
-            // holds it once read).
-            let mut corrected = false;
-            let (mut change, mut size, mut contact_cells) = (0.0, 0.0, 0usize);
-            if force_control {
-                ws.previous.copy_from_slice(&pressure);
-            }
-            for c in 0..n {
-                let old = pressure[c];
-                let stepped = if ws.working[c] {
-                    old - step * ws.direction[c]
-                } else {
-                    old
-                };
-                let new = stepped.max(0.0);
-                pressure[c] = new;
-                ws.displacement[c] -= step * ws.response[c];
-                ws.gap[c] = new - stepped;
-                corrected |= ws.gap[c] != 0.0;
-                change += (new - old).abs();
-                size += new;
-                contact_cells += usize::from(new > 0.0);
-            }
-            if corrected {
+            // holds it).
+            let mut stats = passes::step(
+                &ws.working,
+                &ws.direction,
+                &ws.response,
+                step,
+                &mut pressure,
+                &mut ws.displacement,
+                &mut ws.gap,
+                &mut ws.previous,
+            );
+            if stats.corrected {
                 self.operator.apply(&ws.gap, &mut ws.response)?;
-                for (u, k) in ws.displacement.iter_mut().zip(&ws.response) {
-                    *u += k;
-                }
+                passes::add(&mut ws.displacement, &ws.response);
             }
             if let Control::Force(w) = control {
-                let total = area * size;
+                let total = area * stats.size;
                 if total > 0.0 {
-                    rescale(&mut pressure, w / total);
-                    rescale(&mut ws.displacement, w / total);
+                    (stats.change, stats.size) = passes::rescale(
+                        &mut pressure,
+                        &mut ws.displacement,
+                        &ws.previous,
+                        w / total,
+                    );
                 } else {
-                    // Every pressure clamped: restart uniform on the overlap.
+                    // Every pressure clamped: restart uniform on the
+                    // working set.
                     for c in 0..n {
                         pressure[c] = if ws.working[c] { 1.0 } else { 0.0 };
                     }
-                    let total = area * members as f64;
-                    rescale(&mut pressure, w / total);
+                    rescale(&mut pressure, w / (area * set.members as f64));
                     rz_old = 0.0;
                     self.operator.apply(&pressure, &mut ws.displacement)?;
+                    stats.size = pressure.iter().sum();
                 }
-                change = pressure
-                    .iter()
-                    .zip(&ws.previous)
-                    .map(|(a, b)| (a - b).abs())
-                    .sum();
-                size = pressure.iter().sum();
             }
-            residual = if size > 0.0 {
-                change / size
+            residual = if stats.size > 0.0 {
+                stats.change / stats.size
             } else {
                 f64::INFINITY
             };
             observer.observe(&IterationInfo {
                 iteration,
                 residual,
-                contact_cells,
+                contact_cells: stats.contact,
             });
-            if residual <= tolerance && !overlap {
+            if residual <= tolerance && !set.overlap {
                 return self.converged(control, pressure, depth, iteration, residual);
             }
         }
@@ -411,21 +366,33 @@ impl ContactSolver {
             && solution.contact_cells == n
             && !self.operator.uniform_mode_bounded()
         {
-            // Periodic grid in full contact: the mean pressure is
-            // undetermined by the depth (infinite compliance of the
-            // uniform mode).
-            return Err(Error::Unsupported {
-                feature: "full contact under depth control on a periodic grid \
-                          without a rigid base",
-                reason: "the mean pressure is undetermined (the uniform mode's \
-                         compliance is infinite); prescribe the force (solve_force)",
-            });
+            return Err(self.singular_uniform_mode());
         }
         let attached = pressure.iter().map(|p| *p > 0.0).collect();
         Ok((solution, WarmStart { pressure, attached }))
     }
 
-    /// `response = P M^-1 P gap` on the working set, `M^-1` the
+    /// The error of a periodic grid in full contact on a body without a
+    /// rigid base under depth control: the mean pressure is undetermined
+    /// by the depth (the uniform mode's compliance is infinite). Anything
+    /// else that stalls the step is a bug.
+    fn singular_uniform_mode(&self) -> Error {
+        if self.operator.uniform_mode_bounded() {
+            return Error::Internal {
+                what: "constrained conjugate gradients",
+                detail: "the operator is not positive definite on the working set".into(),
+            };
+        }
+        Error::Unsupported {
+            feature: "full contact under depth control on a periodic grid \
+                      without a rigid base",
+            reason: "the mean pressure is undetermined (the uniform mode's \
+                     compliance is infinite); prescribe the force (solve_force)",
+        }
+    }
+
+    /// `response = P M^-1 P gap` on the working set (`gap` itself without
+    /// preconditioning), `M^-1` the
     /// compliance's inverse on a periodic box around the working set
     /// ([`BoxInverse`]; the whole grid when periodic). The box is rebuilt
     /// only when the set outgrows it or shrinks to less than 1/2.25 of its
@@ -435,6 +402,10 @@ impl ContactSolver {
         let (rows, columns) = (grid.rows(), grid.columns());
         let periodic = self.operator.boundary() == Boundary::Periodic;
         let ws = &mut self.workspace;
+        if !self.params.precondition {
+            ws.response.copy_from_slice(&ws.gap);
+            return Ok(());
+        }
         let Some(bounds) = bounding_box(&ws.working, columns) else {
             ws.response.fill(0.0);
             return Ok(());
@@ -477,13 +448,7 @@ impl ContactSolver {
             }
         };
         let origin = (start(bounds.0, m0), start(bounds.1, m1));
-        inverse.apply(
-            columns,
-            origin,
-            &ws.working,
-            &ws.gap,
-            &mut ws.response,
-        )
+        inverse.apply(columns, origin, &ws.working, &ws.gap, &mut ws.response)
     }
 
     /// The operator's response at a cell to unit pressure on it.

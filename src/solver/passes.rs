@@ -1,0 +1,270 @@
+//! The per-cell passes of the constrained conjugate gradients, on all
+//! threads with the `parallel` feature.
+//!
+//! Cells are split into chunks of a fixed size and sums are added chunk by
+//! chunk in order, so results do not depend on the number of threads.
+
+use std::ops::Range;
+
+/// Cells per chunk (fixed: the summation order depends on it alone).
+const CHUNK: usize = 1 << 14;
+
+#[cfg(feature = "parallel")]
+use rayon::prelude::*;
+
+/// Chunks of a mutable slice, in parallel with the `parallel` feature.
+macro_rules! chunks_mut {
+    ($v:expr) => {{
+        #[cfg(feature = "parallel")]
+        let chunks = $v.par_chunks_mut(CHUNK);
+        #[cfg(not(feature = "parallel"))]
+        let chunks = $v.chunks_mut(CHUNK);
+        chunks
+    }};
+}
+
+/// `f` on every chunk's range of cells, in parallel, results in order.
+fn map_chunks<T: Send>(n: usize, f: impl Fn(Range<usize>) -> T + Sync + Send) -> Vec<T> {
+    let range = |k: usize| k * CHUNK..((k + 1) * CHUNK).min(n);
+    #[cfg(feature = "parallel")]
+    {
+        (0..n.div_ceil(CHUNK))
+            .into_par_iter()
+            .map(range)
+            .map(f)
+            .collect()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        (0..n.div_ceil(CHUNK)).map(range).map(f).collect()
+    }
+}
+
+/// What the gap pass found about the working set.
+#[derive(Debug, Clone, Copy, Default)]
+pub(super) struct WorkingSet {
+    /// Cells in the set.
+    pub(super) members: usize,
+    /// Sum of their gaps.
+    pub(super) gap_sum: f64,
+    /// Whether a member carries no pressure (new overlap).
+    pub(super) overlap: bool,
+}
+
+/// `(sum of profile + u, count)` over the cells that carry pressure.
+pub(super) fn contact_sum(profile: &[f64], displacement: &[f64], pressure: &[f64]) -> (f64, usize) {
+    map_chunks(pressure.len(), |r| {
+        r.filter(|&c| pressure[c] > 0.0)
+            .fold((0.0, 0), |(s, k), c| {
+                (s + profile[c] + displacement[c], k + 1)
+            })
+    })
+    .into_iter()
+    .fold((0.0, 0), |(s, k), (a, b)| (s + a, k + b))
+}
+
+/// Gaps `profile - reference + u` on reachable cells (0 elsewhere) and the
+/// working set: reachable cells in contact or overlapping.
+pub(super) fn gaps_and_working_set(
+    profile: &[f64],
+    displacement: &[f64],
+    pressure: &[f64],
+    reachable: &[bool],
+    reference: f64,
+    gap: &mut [f64],
+    working: &mut [bool],
+) -> WorkingSet {
+    let pass = |(k, (gap, working)): (usize, (&mut [f64], &mut [bool]))| {
+        let mut set = WorkingSet::default();
+        for (i, (g, w)) in gap.iter_mut().zip(working.iter_mut()).enumerate() {
+            let c = k * CHUNK + i;
+            *g = if reachable[c] {
+                profile[c] - reference + displacement[c]
+            } else {
+                0.0
+            };
+            let open = pressure[c] == 0.0;
+            *w = reachable[c] && (!open || *g < 0.0);
+            if *w {
+                set.members += 1;
+                set.gap_sum += *g;
+                set.overlap |= open;
+            }
+        }
+        set
+    };
+    let parts: Vec<WorkingSet> = chunks_mut!(gap)
+        .zip(chunks_mut!(working))
+        .enumerate()
+        .map(pass)
+        .collect();
+    parts
+        .into_iter()
+        .fold(WorkingSet::default(), |a, b| WorkingSet {
+            members: a.members + b.members,
+            gap_sum: a.gap_sum + b.gap_sum,
+            overlap: a.overlap | b.overlap,
+        })
+}
+
+/// `values -= shift` on the working set.
+pub(super) fn shift_on(working: &[bool], values: &mut [f64], shift: f64) {
+    let pass = |(k, values): (usize, &mut [f64])| {
+        for (i, v) in values.iter_mut().enumerate() {
+            if working[k * CHUNK + i] {
+                *v -= shift;
+            }
+        }
+    };
+    chunks_mut!(values).enumerate().for_each(pass);
+}
+
+/// `(sum a, sum a b)` over the working set.
+pub(super) fn sum_and_dot(working: &[bool], a: &[f64], b: &[f64]) -> (f64, f64) {
+    map_chunks(a.len(), |r| {
+        r.filter(|&c| working[c])
+            .fold((0.0, 0.0), |(s, d), c| (s + a[c], d + a[c] * b[c]))
+    })
+    .into_iter()
+    .fold((0.0, 0.0), |(s, d), (x, y)| (s + x, d + y))
+}
+
+/// `(sum a t, sum b t)` over the working set.
+pub(super) fn two_dots(working: &[bool], a: &[f64], b: &[f64], t: &[f64]) -> (f64, f64) {
+    map_chunks(t.len(), |r| {
+        r.filter(|&c| working[c])
+            .fold((0.0, 0.0), |(x, y), c| (x + a[c] * t[c], y + b[c] * t[c]))
+    })
+    .into_iter()
+    .fold((0.0, 0.0), |(x, y), (a, b)| (x + a, y + b))
+}
+
+/// `direction = z - shift + beta direction` on the working set, 0 elsewhere.
+pub(super) fn update_direction(
+    working: &[bool],
+    z: &[f64],
+    shift: f64,
+    beta: f64,
+    direction: &mut [f64],
+) {
+    let pass = |(k, direction): (usize, &mut [f64])| {
+        for (i, t) in direction.iter_mut().enumerate() {
+            let c = k * CHUNK + i;
+            *t = if working[c] {
+                z[c] - shift + beta * *t
+            } else {
+                0.0
+            };
+        }
+    };
+    chunks_mut!(direction).enumerate().for_each(pass);
+}
+
+/// What a step did.
+#[derive(Debug, Clone, Copy, Default)]
+pub(super) struct Step {
+    /// Whether clamping changed a pressure off the search direction.
+    pub(super) corrected: bool,
+    /// Sum of the absolute pressure changes.
+    pub(super) change: f64,
+    /// Sum of the new pressures.
+    pub(super) size: f64,
+    /// Cells with pressure.
+    pub(super) contact: usize,
+}
+
+/// The step `p -= step t` on the working set, clamped at zero; `u -= step
+/// K t`; `correction` gets what the clamping added (to apply `K` to);
+/// `previous` the old pressures.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn step(
+    working: &[bool],
+    direction: &[f64],
+    response: &[f64],
+    step: f64,
+    pressure: &mut [f64],
+    displacement: &mut [f64],
+    correction: &mut [f64],
+    previous: &mut [f64],
+) -> Step {
+    type Chunk<'a> = (
+        usize,
+        (
+            ((&'a mut [f64], &'a mut [f64]), &'a mut [f64]),
+            &'a mut [f64],
+        ),
+    );
+    let pass = |(k, (((p, u), corr), prev)): Chunk<'_>| {
+        let mut s = Step::default();
+        for i in 0..p.len() {
+            let c = k * CHUNK + i;
+            let old = p[i];
+            prev[i] = old;
+            let stepped = if working[c] {
+                old - step * direction[c]
+            } else {
+                old
+            };
+            let new = stepped.max(0.0);
+            p[i] = new;
+            u[i] -= step * response[c];
+            corr[i] = new - stepped;
+            s.corrected |= corr[i] != 0.0;
+            s.change += (new - old).abs();
+            s.size += new;
+            s.contact += usize::from(new > 0.0);
+        }
+        s
+    };
+    let parts: Vec<Step> = chunks_mut!(pressure)
+        .zip(chunks_mut!(displacement))
+        .zip(chunks_mut!(correction))
+        .zip(chunks_mut!(previous))
+        .enumerate()
+        .map(pass)
+        .collect();
+    parts.into_iter().fold(Step::default(), |a, b| Step {
+        corrected: a.corrected | b.corrected,
+        change: a.change + b.change,
+        size: a.size + b.size,
+        contact: a.contact + b.contact,
+    })
+}
+
+/// `values += add`.
+pub(super) fn add(values: &mut [f64], add: &[f64]) {
+    let pass = |(k, values): (usize, &mut [f64])| {
+        for (i, v) in values.iter_mut().enumerate() {
+            *v += add[k * CHUNK + i];
+        }
+    };
+    chunks_mut!(values).enumerate().for_each(pass);
+}
+
+/// Scales `pressure` and `displacement` by `factor`; returns `(sum |p -
+/// previous|, sum p)` of the scaled pressure.
+pub(super) fn rescale(
+    pressure: &mut [f64],
+    displacement: &mut [f64],
+    previous: &[f64],
+    factor: f64,
+) -> (f64, f64) {
+    let pass = |(k, (p, u)): (usize, (&mut [f64], &mut [f64]))| {
+        let (mut change, mut size) = (0.0, 0.0);
+        for i in 0..p.len() {
+            p[i] *= factor;
+            u[i] *= factor;
+            change += (p[i] - previous[k * CHUNK + i]).abs();
+            size += p[i];
+        }
+        (change, size)
+    };
+    let parts: Vec<(f64, f64)> = chunks_mut!(pressure)
+        .zip(chunks_mut!(displacement))
+        .enumerate()
+        .map(pass)
+        .collect();
+    parts
+        .into_iter()
+        .fold((0.0, 0.0), |(a, b), (c, d)| (a + c, b + d))
+}
