@@ -7,7 +7,10 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::hint::black_box;
 
-use layered_contact::indenter::Sphere;
+use std::time::{Duration, Instant};
+
+use layered_contact::indenter::{Paraboloid, Sphere};
+use layered_contact::kernel::ComplianceOperator;
 use layered_contact::scene::{
     Adhesion, AdhesionMethod, IndenterSpec, Protocol, Resolution, Scene, SolverSettings,
     SubstrateSpec,
@@ -82,5 +85,50 @@ fn bench_solver(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_solver);
+/// One constrained-CG iteration (the peers' Hertz problem: paraboloid R = 1
+/// on a half-space, 2 x 2 domain, warm-started from the solution at a 4 %
+/// smaller depth so that the contact set still changes), timed per
+/// iteration, beside one operator application (one padded FFT round trip)
+/// on the same grid.
+fn bench_iteration(c: &mut Criterion) {
+    let mut group = c.benchmark_group("CG iteration vs padded FFT round trip");
+    group.sample_size(10);
+    for n in [512usize, 1024] {
+        let grid = Grid::square(n, 2.0).unwrap();
+        let substrate = Substrate::half_space(Material::new(1.0, 0.0).unwrap());
+        let params = SolverParams {
+            tolerance: 1e-8,
+            ..SolverParams::default()
+        };
+        let mut solver = ContactSolver::new(&substrate, &grid, Boundary::Isolated, params).unwrap();
+        let ball = Paraboloid::new(1.0).unwrap();
+        let (_, warm) = solver.solve_depth(&ball, 0.24, None, &mut ()).unwrap();
+        group.bench_function(BenchmarkId::new("CG iteration", n), |b| {
+            b.iter_custom(|repeats| {
+                let mut total = Duration::ZERO;
+                for _ in 0..repeats {
+                    let start = Instant::now();
+                    let (s, _) = solver
+                        .solve_depth(&ball, black_box(0.25), Some(&warm), &mut ())
+                        .unwrap();
+                    total += start.elapsed() / s.iterations as u32;
+                }
+                total
+            })
+        });
+        let mut operator = ComplianceOperator::new(&substrate, &grid, Boundary::Isolated).unwrap();
+        let pressure: Vec<f64> = (0..grid.len()).map(|i| (i % 17) as f64).collect();
+        let mut displacement = vec![0.0; grid.len()];
+        group.bench_function(BenchmarkId::new("padded FFT round trip", n), |b| {
+            b.iter(|| {
+                operator
+                    .apply(black_box(&pressure), &mut displacement)
+                    .unwrap()
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench_solver, bench_iteration);
 criterion_main!(benches);

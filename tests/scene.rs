@@ -40,6 +40,7 @@ fn non_adhesive_scene_is_the_plain_solver() {
         tolerance: scene.solver.tolerance,
         max_iterations: scene.solver.max_iterations,
         fields: Fields::default(),
+        ..SolverParams::default()
     };
     let mut solver = ContactSolver::new(
         &scene.substrate.build().unwrap(),

@@ -1,5 +1,7 @@
 //! Non-adhesive contact by constrained conjugate gradients (Polonsky & Keer
-//! 1999, Wear 231, 206-219).
+//! 1999, Wear 231, 206-219), preconditioned with the compliance's inverse on
+//! a box around the contact (Vollebregt 2014, J. Comput. Phys. 257,
+//! 333-351), with a multi-resolution start.
 
 use crate::error::{Error, Result};
 use crate::grid::{fft_friendly, Boundary, Grid};
@@ -348,9 +350,9 @@ impl ContactSolver {
         residual: f64,
     ) -> Result<(Solution, WarmStart)> {
         let n = self.grid().len();
-        // Final displacement and depth for the converged pressure.
-        self.operator
-            .apply(&pressure, &mut self.workspace.displacement)?;
+        // The displacement is K p, kept up to date step by step (and
+        // recomputed every REFRESH iterations): the depth under force
+        // control follows from it.
         if let Control::Force(_) = control {
             let ws = &self.workspace;
             let (sum, count) = (0..n)
