@@ -37,8 +37,8 @@ fn main() -> Result<(), layered_contact::Error> {
     } else {
         sizes
     };
-    let (radius, depth, side) = (1.0, 0.25, 2.0);
-    let hertz_force = 4.0 / 3.0 * radius_sqrt(radius) * depth * depth.sqrt();
+    let (radius, depth, side): (f64, f64, f64) = (1.0, 0.25, 2.0);
+    let hertz_force = 4.0 / 3.0 * radius.sqrt() * depth * depth.sqrt();
     let params = SolverParams {
         tolerance: 1e-8,
         ..SolverParams::default()
@@ -71,8 +71,4 @@ fn main() -> Result<(), layered_contact::Error> {
         );
     }
     Ok(())
-}
-
-fn radius_sqrt(r: f64) -> f64 {
-    r.sqrt()
 }
