@@ -130,6 +130,14 @@ pub enum Error {
         /// What needed it.
         what: &'static str,
     },
+    /// A height-map file could not be read or parsed.
+    #[error("height map {path}: {detail}")]
+    HeightMapFile {
+        /// The file.
+        path: String,
+        /// What went wrong (with the line for text files).
+        detail: String,
+    },
     /// An iterative method stopped before reaching its tolerance.
     #[error("{method} did not converge after {iterations} iterations (residual {residual:e})")]
     NoConvergence {

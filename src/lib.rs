@@ -64,6 +64,7 @@ mod numerics;
 pub mod scene;
 pub mod solver;
 pub mod substrate;
+pub mod topography;
 
 pub use error::{Error, Result};
 pub use grid::{Boundary, Grid};

@@ -1,5 +1,7 @@
 //! An arbitrary indenter given by heights on a grid.
 
+use std::path::Path;
+
 use crate::error::{Error, Result};
 use crate::grid::Grid;
 
@@ -55,6 +57,91 @@ impl HeightMap {
             });
         }
         Ok(HeightMap { grid, heights })
+    }
+}
+
+impl HeightMap {
+    /// A height map from a NumPy `.npy` file of a 2D `float64` array (rows
+    /// by columns, heights in m), on square cells of side `spacing` (m).
+    ///
+    /// # Errors
+    /// [`Error::HeightMapFile`] if the file cannot be read or is not a 2D
+    /// `float64` array; the errors of [`Grid::new`] and [`HeightMap::new`].
+    pub fn from_npy(path: impl AsRef<Path>, spacing: f64) -> Result<Self> {
+        let path = path.as_ref();
+        let file_error = |detail: String| Error::HeightMapFile {
+            path: path.display().to_string(),
+            detail,
+        };
+        let array: ndarray::Array2<f64> =
+            ndarray_npy::read_npy(path).map_err(|e| file_error(e.to_string()))?;
+        let (rows, columns) = array.dim();
+        let grid = Grid::new(rows, columns, spacing)?;
+        HeightMap::new(grid, array.iter().copied().collect())
+    }
+
+    /// A height map from a text file with one row of the map per line,
+    /// values separated by spaces, tabs or commas (heights in m; empty
+    /// lines and lines starting with `#` are skipped), on square cells of
+    /// side `spacing` (m).
+    ///
+    /// # Errors
+    /// [`Error::HeightMapFile`] if the file cannot be read, a value is not a
+    /// number (naming its line and column) or the rows differ in length; the
+    /// errors of [`Grid::new`] and [`HeightMap::new`].
+    pub fn from_text(path: impl AsRef<Path>, spacing: f64) -> Result<Self> {
+        let path = path.as_ref();
+        let file_error = |detail: String| Error::HeightMapFile {
+            path: path.display().to_string(),
+            detail,
+        };
+        let text = std::fs::read_to_string(path).map_err(|e| file_error(e.to_string()))?;
+        let (mut heights, mut columns, mut rows) = (Vec::new(), None, 0usize);
+        for (number, line) in text.lines().enumerate() {
+            let line = line.trim();
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            let before = heights.len();
+            for (column, word) in line
+                .split(|c: char| c.is_whitespace() || c == ',')
+                .filter(|w| !w.is_empty())
+                .enumerate()
+            {
+                let value: f64 = word.parse().map_err(|_| {
+                    file_error(format!(
+                        "line {}, value {}: `{word}` is not a number",
+                        number + 1,
+                        column + 1
+                    ))
+                })?;
+                heights.push(value);
+            }
+            let found = heights.len() - before;
+            match columns {
+                None => columns = Some(found),
+                Some(c) if c != found => {
+                    return Err(file_error(format!(
+                        "line {} has {found} values, the first row {c}",
+                        number + 1
+                    )))
+                }
+                Some(_) => {}
+            }
+            rows += 1;
+        }
+        let grid = Grid::new(rows, columns.unwrap_or(0), spacing)?;
+        HeightMap::new(grid, heights)
+    }
+
+    /// The grid of the map.
+    pub fn grid(&self) -> &Grid {
+        &self.grid
+    }
+
+    /// The heights (m, row-major).
+    pub fn heights(&self) -> &[f64] {
+        &self.heights
     }
 }
 
