@@ -114,6 +114,14 @@
 //! more). [`kernel::memory_estimate`](crate::kernel::memory_estimate) gives
 //! the estimate a solver reserves before allocating.
 //!
+//! Rough contacts (a self-affine surface of Hurst exponent 0.8 down to four
+//! cells, on a film on a rigid base, force control, two threads) take more
+//! iterations, growing with the grid as the surface gains roughness: 44 at
+//! `N = 1024` (4.5 s), 60 at 2048 (26 s), 102 at 4096 (208 s, 3.6 GB, 228
+//! bytes per cell including the height map); a periodic `8192 x 8192` cell
+//! converges in 229 iterations (23 min, 10.8 GB). Tables in
+//! `BENCHMARKS.md`.
+//!
 //! An adhesive cycle by the energy balance takes two warm-started clamped
 //! solves of about eight preconditioned iterations per set of the family,
 //! with one set per cell of radius (or per 10 % of it).

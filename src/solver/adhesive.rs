@@ -211,6 +211,10 @@ impl ContactSolver {
         pressure: &mut [f64],
     ) -> Result<(usize, f64)> {
         let mut target = std::mem::take(&mut self.workspace.target);
+        if target.len() != self.workspace.profile.len() {
+            // Allocated on first use: non-adhesive solves never need it.
+            target = super::cell_vector(self.workspace.profile.len())?;
+        }
         for (t, f) in target.iter_mut().zip(&self.workspace.profile) {
             *t = depth - f;
         }

@@ -129,7 +129,8 @@ struct Workspace {
     direction: Vec<f64>,
     response: Vec<f64>,
     previous: Vec<f64>,
-    /// Prescribed displacements of a clamped solve.
+    /// Prescribed displacements of a clamped solve (allocated on first
+    /// use).
     target: Vec<f64>,
     /// Cells of the working set (in contact or overlapping).
     working: Vec<bool>,
@@ -189,7 +190,7 @@ impl ContactSolver {
                 direction: cell_vector(n)?,
                 response: cell_vector(n)?,
                 previous: cell_vector(n)?,
-                target: cell_vector(n)?,
+                target: Vec::new(),
                 working: vec![false; n],
             },
         })

@@ -1,0 +1,85 @@
+//! Rough contacts on large grids: a self-affine surface (Hurst 0.8, rms
+//! slope 0.1, roll-off at a quarter of the domain, cut-off at four cells),
+//! turned into a rigid indenter and pressed under force control onto a
+//! rubber film (E = 1 MPa, nu = 0.49, 0.1 mm thick) on a rigid base, over a
+//! 1 mm square; nominal pressure 5 kPa (a few per cent of the area in
+//! contact).
+//!
+//! ```text
+//! cargo run --release --example rough_benchmark -- [isolated|periodic] N [N ...]
+//! ```
+//!
+//! Prints one CSV line per grid: N, boundary, seconds to build the solver,
+//! to synthesise the surface and to solve, iterations (and those of the
+//! multi-resolution start), the contact fraction, and the process's peak
+//! resident memory and bytes per cell. `RAYON_NUM_THREADS` sets the threads.
+
+use std::time::Instant;
+
+use layered_contact::solver::{ContactSolver, SolverParams};
+use layered_contact::topography::{Amplitude, SelfAffine};
+use layered_contact::{Boundary, Grid, Material, Substrate};
+
+fn peak_resident_bytes() -> f64 {
+    std::fs::read_to_string("/proc/self/status")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("VmHWM:"))
+                .and_then(|l| l.split_whitespace().nth(1)?.parse::<f64>().ok())
+        })
+        .map_or(f64::NAN, |kb| kb * 1024.0)
+}
+
+fn main() -> Result<(), layered_contact::Error> {
+    let mut args = std::env::args().skip(1).peekable();
+    let boundary = match args.peek().map(String::as_str) {
+        Some("periodic") => {
+            args.next();
+            Boundary::Periodic
+        }
+        Some("isolated") => {
+            args.next();
+            Boundary::Isolated
+        }
+        _ => Boundary::Isolated,
+    };
+    let sizes: Vec<usize> = args.filter_map(|a| a.parse().ok()).collect();
+    let side = 1e-3;
+    let film = Substrate::layer_on_rigid_base(Material::new(1e6, 0.49)?, 1e-4)?;
+    let force = 5e3 * side * side;
+    println!("N,boundary,build_s,surface_s,solve_s,iterations,coarse_iterations,contact_fraction,peak_mb,bytes_per_cell");
+    for n in sizes {
+        let grid = Grid::square(n, side)?;
+        let start = Instant::now();
+        let surface = SelfAffine {
+            hurst: 0.8,
+            amplitude: Amplitude::RmsSlope(0.1),
+            long_cutoff: 0.25 * side,
+            short_cutoff: 4.0 * grid.spacing(),
+            seed: 1,
+        }
+        .indenter(&grid)?;
+        let synthesis = start.elapsed().as_secs_f64();
+        let start = Instant::now();
+        let params = SolverParams {
+            tolerance: 1e-8,
+            ..SolverParams::default()
+        };
+        let mut solver = ContactSolver::new(&film, &grid, boundary, params)?;
+        let build = start.elapsed().as_secs_f64();
+        let start = Instant::now();
+        let (solution, _) = solver.solve_force(&surface, force, None, &mut ())?;
+        let solve = start.elapsed().as_secs_f64();
+        let peak = peak_resident_bytes();
+        println!(
+            "{n},{boundary:?},{build:.2},{synthesis:.2},{solve:.2},{},{},{:.4},{:.0},{:.0}",
+            solution.iterations,
+            solution.coarse_iterations,
+            solution.contact_cells as f64 / grid.len() as f64,
+            peak / 1048576.0,
+            peak / grid.len() as f64
+        );
+    }
+    Ok(())
+}
