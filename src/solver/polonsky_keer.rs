@@ -230,12 +230,11 @@ impl ContactSolver {
                 &mut ws.working,
             );
             if set.members == 0 {
-                // Unreachable: with no pressure anywhere, the lowest cell
-                // overlaps (solve_depth only gets here below first contact).
-                return Err(Error::Internal {
-                    what: "constrained conjugate gradients",
-                    detail: "empty working set".into(),
-                });
+                // No pressure and no overlap (depth control only: under
+                // force control some cell always carries pressure): zero
+                // pressure is the solution. Only rounding gets here, at a
+                // depth a hair's breadth past first contact.
+                return self.converged(control, pressure, depth, iteration, 0.0);
             }
             if force_control {
                 // The gradient projected on loads of zero net force.
