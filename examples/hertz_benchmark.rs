@@ -16,16 +16,8 @@ use layered_contact::indenter::Paraboloid;
 use layered_contact::solver::{ContactSolver, SolverParams};
 use layered_contact::{Boundary, Grid, Material, Substrate};
 
-fn peak_resident_mb() -> f64 {
-    std::fs::read_to_string("/proc/self/status")
-        .ok()
-        .and_then(|s| {
-            s.lines()
-                .find(|l| l.starts_with("VmHWM:"))
-                .and_then(|l| l.split_whitespace().nth(1)?.parse::<f64>().ok())
-        })
-        .map_or(f64::NAN, |kb| kb / 1024.0)
-}
+#[path = "support/memory.rs"]
+mod memory;
 
 fn main() -> Result<(), layered_contact::Error> {
     let sizes: Vec<usize> = std::env::args()
@@ -58,7 +50,7 @@ fn main() -> Result<(), layered_contact::Error> {
             "{n},depth,{build:.3},{t:.3},{},{:.3e},{:.0}",
             s.iterations,
             s.force / hertz_force - 1.0,
-            peak_resident_mb()
+            memory::peak_resident_bytes() / 1048576.0
         );
         let start = Instant::now();
         let (s, _) = solver.solve_force(&indenter, hertz_force, None, &mut ())?;
@@ -67,7 +59,7 @@ fn main() -> Result<(), layered_contact::Error> {
             "{n},force,{build:.3},{t:.3},{},{:.3e},{:.0}",
             s.iterations,
             s.depth / depth - 1.0,
-            peak_resident_mb()
+            memory::peak_resident_bytes() / 1048576.0
         );
     }
     Ok(())

@@ -20,16 +20,8 @@ use layered_contact::solver::{ContactSolver, SolverParams};
 use layered_contact::topography::{Amplitude, SelfAffine};
 use layered_contact::{Boundary, Grid, Material, Substrate};
 
-fn peak_resident_bytes() -> f64 {
-    std::fs::read_to_string("/proc/self/status")
-        .ok()
-        .and_then(|s| {
-            s.lines()
-                .find(|l| l.starts_with("VmHWM:"))
-                .and_then(|l| l.split_whitespace().nth(1)?.parse::<f64>().ok())
-        })
-        .map_or(f64::NAN, |kb| kb * 1024.0)
-}
+#[path = "support/memory.rs"]
+mod memory;
 
 fn main() -> Result<(), layered_contact::Error> {
     let mut args = std::env::args().skip(1).peekable();
@@ -71,7 +63,7 @@ fn main() -> Result<(), layered_contact::Error> {
         let start = Instant::now();
         let (solution, _) = solver.solve_force(&surface, force, None, &mut ())?;
         let solve = start.elapsed().as_secs_f64();
-        let peak = peak_resident_bytes();
+        let peak = memory::peak_resident_bytes();
         println!(
             "{n},{boundary:?},{build:.2},{synthesis:.2},{solve:.2},{},{},{:.4},{:.0},{:.0}",
             solution.iterations,

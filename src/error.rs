@@ -153,6 +153,18 @@ pub enum Error {
 /// `Result` with the crate's [`Error`].
 pub type Result<T> = std::result::Result<T, Error>;
 
+/// A zeroed vector of `len` values, or [`Error::OutOfMemory`] naming
+/// `what` instead of an abort.
+pub(crate) fn zeroed<T: Clone + Default>(len: usize, what: &'static str) -> Result<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(len).map_err(|_| Error::OutOfMemory {
+        bytes: len.saturating_mul(std::mem::size_of::<T>()),
+        what,
+    })?;
+    v.resize(len, T::default());
+    Ok(v)
+}
+
 /// Checks that `value` is positive and finite.
 pub(crate) fn positive_finite(name: &'static str, value: f64) -> Result<f64> {
     if value > 0.0 && value.is_finite() {

@@ -49,6 +49,7 @@ use realfft::RealFftPlanner;
 use crate::error::{Error, Result};
 use crate::grid::Grid;
 use crate::indenter::HeightMap;
+use crate::kernel::wavenumber;
 
 /// How large a synthesised surface is.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -231,14 +232,4 @@ impl SelfAffine {
         }
         Ok(())
     }
-}
-
-/// The wavenumber (rad/m) of FFT index `index` on `n` cells of side `delta`.
-fn wavenumber(index: usize, n: usize, delta: f64) -> f64 {
-    let k = if index <= n / 2 {
-        index as f64
-    } else {
-        index as f64 - n as f64
-    };
-    2.0 * PI * k / (n as f64 * delta)
 }

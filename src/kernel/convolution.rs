@@ -89,15 +89,9 @@ fn run_tasks<T: Send>(tasks: Vec<T>, f: impl Fn(T) -> Result<()> + Sync + Send) 
     }
 }
 
-/// A zeroed vector of `len` values, or [`Error::OutOfMemory`].
+/// A zeroed FFT buffer of `len` values, or [`Error::OutOfMemory`].
 pub(super) fn zeroed<T: Clone + Default>(len: usize) -> Result<Vec<T>> {
-    let mut v = Vec::new();
-    v.try_reserve_exact(len).map_err(|_| Error::OutOfMemory {
-        bytes: len.saturating_mul(std::mem::size_of::<T>()),
-        what: "an FFT buffer",
-    })?;
-    v.resize(len, T::default());
-    Ok(v)
+    crate::error::zeroed(len, "an FFT buffer")
 }
 
 /// Buffer sizes are fixed at construction, so an FFT error is a bug of this
@@ -110,9 +104,9 @@ fn fft_error(error: realfft::FftError) -> Error {
 }
 
 impl Convolution {
-    /// Bytes of the buffers for `rows x columns` data on an FFT grid of
+    /// Bytes of the buffers for data of `rows` rows on an FFT grid of
     /// `size`, besides the multipliers.
-    pub(super) fn memory(rows: usize, _columns: usize, size: (usize, usize)) -> usize {
+    pub(super) fn memory(rows: usize, size: (usize, usize)) -> usize {
         let half = size.1 / 2 + 1;
         let tasks = task_count(size.0 * size.1);
         2 * 16 * rows * half + tasks * (8 * size.1 + 16 * (BLOCK_BYTES / 16 + size.0))
@@ -333,7 +327,7 @@ impl Convolution {
 
 /// The wavenumber (rad/m) of FFT index `index` on `n` cells of side `delta`,
 /// indices above `n/2` standing for negative frequencies.
-pub(super) fn wavenumber(index: usize, n: usize, delta: f64) -> f64 {
+pub(crate) fn wavenumber(index: usize, n: usize, delta: f64) -> f64 {
     let k = if index <= n / 2 {
         index as f64
     } else {

@@ -18,6 +18,7 @@ mod inverse;
 mod operator;
 mod radial;
 
+pub(crate) use convolution::wavenumber;
 pub use fourier::FourierCompliance;
 pub use influence::InfluenceCoefficients;
 pub(crate) use inverse::BoxInverse;

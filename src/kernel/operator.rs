@@ -86,10 +86,7 @@ pub fn memory_estimate(grid: &Grid, boundary: Boundary) -> usize {
     let size = fft_size(grid, boundary);
     let half = size.1 / 2 + 1;
     let cells = grid.len();
-    Convolution::memory(grid.rows(), grid.columns(), size)
-        + 2 * 8 * size.0 * half
-        + 8 * cells
-        + 10 * 8 * cells
+    Convolution::memory(grid.rows(), size) + 2 * 8 * size.0 * half + 8 * cells + 10 * 8 * cells
 }
 
 /// The FFT grid: twice the grid each way when isolated (zero padding), the

@@ -388,13 +388,7 @@ pub(crate) fn all_finite(what: &'static str, values: &[f64]) -> Result<()> {
 
 /// A zeroed per-cell vector, or [`Error::OutOfMemory`] instead of an abort.
 fn cell_vector(n: usize) -> Result<Vec<f64>> {
-    let mut v = Vec::new();
-    v.try_reserve_exact(n).map_err(|_| Error::OutOfMemory {
-        bytes: n.saturating_mul(8),
-        what: "a solver's per-cell vectors",
-    })?;
-    v.resize(n, 0.0);
-    Ok(v)
+    crate::error::zeroed(n, "a solver's per-cell vectors")
 }
 
 /// Whether cell `c` of a row-major `rows x columns` grid lies on its outer
