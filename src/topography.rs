@@ -207,7 +207,7 @@ impl SelfAffine {
         HeightMap::new(*grid, heights.iter().map(|h| top - h).collect())
     }
 
-    fn check(&self, grid: &Grid) -> Result<()> {
+    pub(crate) fn check(&self, grid: &Grid) -> Result<()> {
         if !(self.hurst > 0.0 && self.hurst < 1.0) {
             return Err(Error::InvalidParameter {
                 name: "hurst",

@@ -43,7 +43,7 @@ mod spec;
 
 pub use accuracy::{richardson, Converged, Quantity};
 pub use curve::{Curve, Phase, Step};
-pub use spec::{Adhesion, IndenterSpec, SubstrateSpec, Tilt};
+pub use spec::{Adhesion, CustomIndenter, IndenterSpec, SubstrateSpec, Tilt};
 
 use crate::error::{positive_finite, Error, Result};
 use crate::grid::{Boundary, Grid};
@@ -254,8 +254,13 @@ impl Scene {
     /// # Errors
     /// The first invalid value, as a typed error.
     pub fn validate(&self) -> Result<()> {
-        self.substrate.build()?;
         self.indenter.build(self.tilt)?;
+        self.validate_settings()
+    }
+
+    /// Checks everything but the indenter (whose map may be costly to read).
+    fn validate_settings(&self) -> Result<()> {
+        self.substrate.build()?;
         if let Some((loading, unloading)) = self.adhesion.works() {
             crate::error::works_of_adhesion(loading, unloading)?;
         }
@@ -343,9 +348,9 @@ impl Scene {
     }
 
     /// Runs the scene on a solver built by [`Scene::solver`] (or shared with
-    /// another scene on the same substrate and grid). A curved indenter whose
-    /// contact reaches the edge of the grid restarts on a grid 1.5 times as
-    /// wide with the same spacing (at most four times).
+    /// another scene on the same substrate and grid). A curved or custom
+    /// indenter whose contact reaches the edge of the grid restarts on a
+    /// grid 1.5 times as wide with the same spacing (at most four times).
     ///
     /// # Errors
     /// As [`Scene::run`].
@@ -354,7 +359,7 @@ impl Scene {
         solver: &mut ContactSolver,
         progress: &mut dyn FnMut(&Step),
     ) -> Result<Curve> {
-        self.validate()?;
+        self.validate_settings()?;
         let indenter = self.indenter.build(self.tilt)?;
         let mut grown: Option<ContactSolver> = None;
         for _ in 0..=MAX_GRID_GROWTH {
@@ -367,6 +372,13 @@ impl Scene {
             };
             match outcome {
                 Outcome::Done(curve) => return Ok(*curve),
+                Outcome::ReachedEdge if self.indenter.is_map() => {
+                    return Err(Error::Unsupported {
+                        feature: "an adhesive contact reaching the edge of a height map",
+                        reason: "pad the map with heights the contact does not reach, \
+                                 or solve it on a periodic grid",
+                    })
+                }
                 Outcome::ReachedEdge => {
                     let grid = *active.grid();
                     let cells = fft_friendly((grid.rows() * 3).div_ceil(2));

@@ -39,6 +39,7 @@ impl<'a> Runner<'a> {
             peak: None,
             warm: None,
             watch_edge: !matches!(scene.indenter, IndenterSpec::FlatPunch { .. })
+                && !scene.indenter.is_map()
                 && scene.boundary == Boundary::Isolated,
         }
     }

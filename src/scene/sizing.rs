@@ -29,9 +29,18 @@ impl Scene {
                 crate::substrate::Base::Rigid => c.layer().contact_modulus(),
             },
         };
-        Ok(match (self.indenter, self.protocol) {
-            (IndenterSpec::FlatPunch { radius }, _) => radius,
+        Ok(match (&self.indenter, self.protocol) {
+            (IndenterSpec::FlatPunch { radius }, _) => *radius,
+            (IndenterSpec::Custom(custom), _) => crate::indenter::Indenter::bounding_radius(custom),
+            // Solved on the map's own grid; never sized.
+            (IndenterSpec::HeightMap { .. } | IndenterSpec::RoughSurface { .. }, _) => {
+                return Err(Error::Internal {
+                    what: "grid sizing",
+                    detail: "a height map is not sized from its contact".into(),
+                })
+            }
             (IndenterSpec::Sphere { radius } | IndenterSpec::Paraboloid { radius }, protocol) => {
+                let radius = *radius;
                 let (target, by_force) = match protocol {
                     Protocol::Depth { depth } => (depth.abs(), false),
                     Protocol::Cycle { max_depth, .. } => (max_depth, false),
@@ -64,6 +73,7 @@ impl Scene {
                 },
                 protocol,
             ) => {
+                let (half_angle, base_radius) = (*half_angle, *base_radius);
                 let depth = match protocol {
                     Protocol::Depth { depth } => depth.abs(),
                     Protocol::Cycle { max_depth, .. } => max_depth,
@@ -134,12 +144,19 @@ impl Scene {
     /// pull-off contact (from the exact layered JKR solution) if that is
     /// smaller. The grid holds the peak contact with `margin` on each side.
     /// Grid sizes are rounded up to products of 2, 3, 5 and 7 (fast FFTs).
+    /// A [custom](IndenterSpec::Custom) indenter is treated like a curved
+    /// one whose peak contact is its bounding disc. The height-map kinds are
+    /// solved on their own grid.
     /// For a flat punch (untilted or not) the spacing is adjusted within 2 %
     /// of `2a / cells_across` so that the cells whose centres lie on the
     /// punch have the punch's area: the staircase punch then has the right
     /// radius on average, and the stiffness converges smoothly like `1/N`
     /// instead of oscillating with the staircase.
     pub fn grid(&self) -> Result<Grid> {
+        self.validate_settings()?;
+        if let Some(grid) = self.indenter.map_grid()? {
+            return Ok(grid);
+        }
         self.validate()?;
         let n = self.resolution.cells_across;
         if let IndenterSpec::FlatPunch { radius } = self.indenter {

@@ -1,10 +1,15 @@
 //! Plain-number descriptions of bodies, indenters and effects: what a scene
 //! file holds. Each is validated when built into the library's types.
 
-use crate::error::Result;
-use crate::indenter::{Cone, FlatPunch, Indenter, Paraboloid, Sphere, Tilted};
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use crate::error::{Error, Result};
+use crate::grid::Grid;
+use crate::indenter::{Cone, FlatPunch, HeightMap, Indenter, Paraboloid, Sphere, Tilted};
 use crate::material::Material;
 use crate::substrate::Substrate;
+use crate::topography::{Amplitude, SelfAffine};
 
 /// The body, by its material constants (SI units).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -83,7 +88,17 @@ impl SubstrateSpec {
 }
 
 /// The indenter's shape.
-#[derive(Debug, Clone, Copy, PartialEq)]
+///
+/// The four solids are sized by the scene from their contact (see
+/// [`Scene::grid`](super::Scene::grid)). The two height-map kinds are solved
+/// on the map's own grid, whatever the scene's resolution says: the map is
+/// sampled exactly, cell by cell, and a contact that reaches the map's edge
+/// ends there (the map is all there is of the indenter). [`Custom`]
+/// takes any [`Indenter`] of the caller's; it cannot be written to or read
+/// from a scene file.
+///
+/// [`Custom`]: IndenterSpec::Custom
+#[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(
     feature = "serde",
@@ -112,7 +127,98 @@ pub enum IndenterSpec {
         /// Base radius, m.
         base_radius: f64,
     },
+    /// Heights (m) read from a file ([`HeightMap::from_npy`] for a `.npy`
+    /// file, [`HeightMap::from_text`] for any other), on square cells of
+    /// side `spacing`, centred on the axis. The indenter's lowest point
+    /// should be at height 0 (it then touches first at depth 0).
+    HeightMap {
+        /// The file; relative paths are relative to the working directory.
+        path: PathBuf,
+        /// Cell side, m.
+        spacing: f64,
+    },
+    /// A seeded self-affine rough surface ([`SelfAffine`]) synthesised on
+    /// `cells` x `cells` square cells of side `spacing`, turned upside down
+    /// into a rigid indenter ([`SelfAffine::indenter`]) whose highest summit
+    /// touches first, at depth 0.
+    RoughSurface {
+        /// Hurst exponent, in `(0, 1)`.
+        hurst: f64,
+        /// The rms height (m) or rms slope.
+        amplitude: Amplitude,
+        /// Roll-off wavelength, m.
+        long_cutoff: f64,
+        /// Short-wavelength cut-off, m (at least two cells).
+        short_cutoff: f64,
+        /// Seed of the random numbers.
+        seed: u64,
+        /// Cells along each side, 2 to 65536.
+        cells: usize,
+        /// Cell side, m.
+        spacing: f64,
+    },
+    /// Any indenter of the caller's: the grid spans its
+    /// [`bounding_radius`](Indenter::bounding_radius) with `cells_across`
+    /// cells across the bounding diameter (so give a bounding radius close to
+    /// the largest contact) and the scene's margin around it, and grows if
+    /// the contact reaches its edge.
+    #[cfg_attr(feature = "serde", serde(skip))]
+    Custom(CustomIndenter),
 }
+
+/// An indenter of the caller's for [`IndenterSpec::Custom`], shared by the
+/// scenes that hold it. Two are equal if they are the same indenter.
+///
+/// ```
+/// use layered_contact::indenter::Paraboloid;
+/// use layered_contact::scene::{CustomIndenter, IndenterSpec, Protocol, Scene};
+///
+/// let shape = CustomIndenter::new(Paraboloid::new(0.01)?);
+/// let scene = Scene {
+///     indenter: IndenterSpec::Custom(shape),
+///     protocol: Protocol::Depth { depth: 1e-5 },
+///     ..Scene::default()
+/// };
+/// // 64 cells (the default) across the bounding diameter, 0.25 of it on each side.
+/// assert_eq!(scene.grid()?.rows(), 96);
+/// Ok::<(), layered_contact::Error>(())
+/// ```
+#[derive(Clone)]
+pub struct CustomIndenter(Arc<dyn Indenter + Send + Sync>);
+
+impl CustomIndenter {
+    /// Wraps `indenter`.
+    pub fn new(indenter: impl Indenter + Send + Sync + 'static) -> Self {
+        CustomIndenter(Arc::new(indenter))
+    }
+}
+
+impl std::fmt::Debug for CustomIndenter {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("CustomIndenter")
+            .field("bounding_radius", &self.0.bounding_radius())
+            .finish_non_exhaustive()
+    }
+}
+
+impl PartialEq for CustomIndenter {
+    fn eq(&self, other: &Self) -> bool {
+        Arc::ptr_eq(&self.0, &other.0)
+    }
+}
+
+impl Indenter for CustomIndenter {
+    fn height(&self, x: f64, y: f64) -> f64 {
+        self.0.height(x, y)
+    }
+
+    fn bounding_radius(&self) -> f64 {
+        self.0.bounding_radius()
+    }
+}
+
+/// The widest synthesised rough surface, in cells along a side.
+const MAX_ROUGH_CELLS: usize = 65536;
 
 /// A small tilt of the indenter, radians (see [`Tilted`]).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -128,22 +234,108 @@ pub struct Tilt {
 impl IndenterSpec {
     /// The validated indenter, tilted if `tilt` is given.
     ///
+    /// Height maps are read or synthesised here, once per call.
+    ///
     /// # Errors
-    /// The errors of the indenters' constructors.
+    /// The errors of the indenters' constructors, of reading a height map
+    /// ([`Error::HeightMapFile`]) and of the synthesis
+    /// ([`SelfAffine::heights`]).
     pub fn build(&self, tilt: Option<Tilt>) -> Result<Box<dyn Indenter + Send + Sync>> {
-        let shape: Box<dyn Indenter + Send + Sync> = match *self {
-            IndenterSpec::FlatPunch { radius } => Box::new(FlatPunch::new(radius)?),
-            IndenterSpec::Sphere { radius } => Box::new(Sphere::new(radius)?),
-            IndenterSpec::Paraboloid { radius } => Box::new(Paraboloid::new(radius)?),
+        let shape: Box<dyn Indenter + Send + Sync> = match self {
+            IndenterSpec::FlatPunch { radius } => Box::new(FlatPunch::new(*radius)?),
+            IndenterSpec::Sphere { radius } => Box::new(Sphere::new(*radius)?),
+            IndenterSpec::Paraboloid { radius } => Box::new(Paraboloid::new(*radius)?),
             IndenterSpec::Cone {
                 half_angle,
                 base_radius,
-            } => Box::new(Cone::new(half_angle, base_radius)?),
+            } => Box::new(Cone::new(*half_angle, *base_radius)?),
+            IndenterSpec::HeightMap { path, spacing } => Box::new(read_height_map(path, *spacing)?),
+            IndenterSpec::RoughSurface { .. } => {
+                let (surface, grid) = self.rough_surface()?.ok_or(Error::Internal {
+                    what: "scene indenter",
+                    detail: "a rough surface without its parameters".into(),
+                })?;
+                Box::new(surface.indenter(&grid)?)
+            }
+            IndenterSpec::Custom(custom) => {
+                crate::error::positive_finite("bounding_radius", custom.bounding_radius())?;
+                Box::new(custom.clone())
+            }
         };
         Ok(match tilt {
             Some(t) => Box::new(Tilted::new(shape, t.angle_y, t.angle_x)?),
             None => shape,
         })
+    }
+
+    /// The grid a height-map kind is defined on (reading a map file's
+    /// heights); `None` for the other kinds.
+    ///
+    /// # Errors
+    /// As [`IndenterSpec::build`].
+    pub fn map_grid(&self) -> Result<Option<Grid>> {
+        Ok(match self {
+            IndenterSpec::HeightMap { path, spacing } => {
+                Some(*read_height_map(path, *spacing)?.grid())
+            }
+            IndenterSpec::RoughSurface { .. } => self.rough_surface()?.map(|(_, grid)| grid),
+            _ => None,
+        })
+    }
+
+    /// Whether the indenter ends at the edge of its own grid (the height-map
+    /// kinds), so that a contact reaching it is not truncated by the grid.
+    pub(crate) fn is_map(&self) -> bool {
+        matches!(
+            self,
+            IndenterSpec::HeightMap { .. } | IndenterSpec::RoughSurface { .. }
+        )
+    }
+
+    /// The surface and grid of a rough-surface kind, validated without
+    /// synthesising it.
+    fn rough_surface(&self) -> Result<Option<(SelfAffine, Grid)>> {
+        let IndenterSpec::RoughSurface {
+            hurst,
+            amplitude,
+            long_cutoff,
+            short_cutoff,
+            seed,
+            cells,
+            spacing,
+        } = *self
+        else {
+            return Ok(None);
+        };
+        if !(2..=MAX_ROUGH_CELLS).contains(&cells) {
+            return Err(Error::InvalidParameter {
+                name: "cells",
+                value: cells as f64,
+                expected: "between 2 and 65536 cells along a side",
+            });
+        }
+        let grid = Grid::new(cells, cells, spacing)?;
+        let surface = SelfAffine {
+            hurst,
+            amplitude,
+            long_cutoff,
+            short_cutoff,
+            seed,
+        };
+        surface.check(&grid)?;
+        Ok(Some((surface, grid)))
+    }
+}
+
+/// A height map from `path`: `.npy` by its extension, plain text otherwise.
+fn read_height_map(path: &std::path::Path, spacing: f64) -> Result<HeightMap> {
+    if path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("npy"))
+    {
+        HeightMap::from_npy(path, spacing)
+    } else {
+        HeightMap::from_text(path, spacing)
     }
 }
 
