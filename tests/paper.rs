@@ -4,7 +4,7 @@
 //! 0.05 %, pull-offs +0.08 % and +0.12 %; the full example's worst pull-off
 //! is 0.3 %).
 
-#[path = "../examples/paper/experiment.rs"]
+#[path = "../src/bin/layered-contact/paper/experiment.rs"]
 mod experiment;
 
 use experiment::Config;

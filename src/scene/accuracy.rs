@@ -36,15 +36,34 @@ pub enum Quantity {
     PeakForce,
     /// The pull-off force ([`Curve::pull_off`]), N.
     PullOffForce,
+    /// The contact radius (of equal area) at the largest force of the
+    /// curve, m.
+    PeakContactRadius,
 }
 
 impl Quantity {
+    /// Its name in files and messages: `stiffness`, `peak_force`,
+    /// `pull_off_force`, `peak_contact_radius`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Quantity::Stiffness => "stiffness",
+            Quantity::PeakForce => "peak_force",
+            Quantity::PullOffForce => "pull_off_force",
+            Quantity::PeakContactRadius => "peak_contact_radius",
+        }
+    }
+
     /// The quantity of `curve`, if the curve has it.
     pub fn of(&self, curve: &Curve) -> Option<f64> {
         match self {
             Quantity::Stiffness => curve.stiffness(),
             Quantity::PeakForce => curve.steps.iter().map(|s| s.force).reduce(f64::max),
             Quantity::PullOffForce => curve.pull_off().map(|s| s.force),
+            Quantity::PeakContactRadius => curve
+                .steps
+                .iter()
+                .max_by(|a, b| a.force.total_cmp(&b.force))
+                .map(|s| s.contact_radius),
         }
     }
 }

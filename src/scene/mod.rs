@@ -11,7 +11,7 @@
 //! substrate and grid through [`Scene::run_on`].
 //!
 //! With the `serde` feature (on by default) scenes read from and write to
-//! TOML or JSON; see the `run_scene` example.
+//! TOML or JSON; the `layered-contact` command-line tool runs such files.
 //!
 //! ```
 //! use layered_contact::scene::{Adhesion, IndenterSpec, Protocol, Scene, SubstrateSpec};
@@ -37,12 +37,14 @@
 mod accuracy;
 mod curve;
 mod energy;
+mod reference;
 mod runner;
 mod sizing;
 mod spec;
 
 pub use accuracy::{richardson, Converged, Quantity};
 pub use curve::{Curve, Phase, Step};
+pub use reference::Reference;
 pub use spec::{Adhesion, CustomIndenter, IndenterSpec, SubstrateSpec, Tilt};
 
 use crate::error::{positive_finite, Error, Result};

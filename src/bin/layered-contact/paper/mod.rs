@@ -3,6 +3,7 @@
 //! glass, `h = 5 .. 25 mm`, probed by flat punches and spheres.
 //!
 //! ```text
+//! layered-contact paper [--out DIR] [--fine]
 //! cargo run --release --example paper -- [--out DIR] [--fine]
 //! ```
 //!
@@ -19,7 +20,7 @@ mod experiment;
 mod figures;
 
 use std::error::Error as StdError;
-use std::path::PathBuf;
+use std::path::Path;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
@@ -28,21 +29,17 @@ use experiment::{Config, StiffnessRow};
 use layered_contact::analytic::PunchStiffnessSeries;
 use layered_contact::scene::Curve;
 
-type Result<T> = std::result::Result<T, Box<dyn StdError + Send + Sync>>;
+pub type Result<T> = std::result::Result<T, Box<dyn StdError + Send + Sync>>;
 
-fn main() -> Result<()> {
-    let mut out = PathBuf::from("target/paper");
-    let mut config = Config::standard();
-    let mut args = std::env::args().skip(1);
-    while let Some(arg) = args.next() {
-        match arg.as_str() {
-            "--out" => out = PathBuf::from(args.next().ok_or("--out needs a directory")?),
-            "--fine" => config = Config::fine(),
-            other => {
-                return Err(format!("unknown argument {other}; use --out DIR and/or --fine").into())
-            }
-        }
-    }
+/// Runs the reproduction into `out` (`fine`: twice the resolution), with a
+/// progress bar on standard error and the summary on standard output.
+pub fn run(out: &Path, fine: bool) -> Result<()> {
+    let config = if fine {
+        Config::fine()
+    } else {
+        Config::standard()
+    };
+    let out = out.to_path_buf();
     std::fs::create_dir_all(&out)?;
     let started = std::time::Instant::now();
 

@@ -7,7 +7,7 @@ use std::path::Path;
 use plotters::prelude::*;
 use plotters::style::register_font;
 
-use crate::experiment::{Config, StiffnessRow};
+use super::experiment::{Config, StiffnessRow};
 use layered_contact::scene::{Curve, Phase};
 
 type Result<T> = std::result::Result<T, Box<dyn Error + Send + Sync>>;
@@ -195,10 +195,10 @@ pub struct Run<'a> {
 /// The colour of layer `index`, or grey / black for the extra works of
 /// adhesion below / above the standard one.
 pub fn run_color(index: usize, dgamma: f64) -> RGBColor {
-    let standard = (dgamma - crate::experiment::DGAMMA_PUNCH).abs() < 1e-12;
+    let standard = (dgamma - super::experiment::DGAMMA_PUNCH).abs() < 1e-12;
     if standard {
         palette(index)
-    } else if dgamma < crate::experiment::DGAMMA_PUNCH {
+    } else if dgamma < super::experiment::DGAMMA_PUNCH {
         RGBColor(150, 150, 150)
     } else {
         RGBColor(40, 40, 40)

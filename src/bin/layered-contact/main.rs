@@ -1,0 +1,159 @@
+//! `layered-contact`: runs contact scenes from TOML or JSON files.
+//!
+//! ```text
+//! layered-contact run scene.toml -o out/     # curve.csv, fields as .npy, curve.svg
+//! layered-contact check scene.toml           # validate; grid and memory
+//! layered-contact reference scene.toml       # exact values where they exist
+//! layered-contact paper [--out DIR] [--fine] # the reference experiment
+//! ```
+//!
+//! Errors are printed as sentences (a scene file's mistakes with line,
+//! column and key) and end the program with exit status 1.
+
+mod output;
+mod paper;
+mod progress;
+mod scene_file;
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+use layered_contact::scene::Scene;
+
+/// Contact mechanics of coated elastic bodies: run scenes from files.
+#[derive(Parser)]
+#[command(name = "layered-contact", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Run a scene file (TOML, or JSON by its extension) and write its
+    /// curve (curve.csv), the fields it asks for (.npy, with x.npy and
+    /// y.npy: the cell centres, m) and a plot (curve.svg).
+    Run {
+        /// The scene file. Height-map paths in it are relative to its folder.
+        scene: PathBuf,
+        /// Output folder (created if missing).
+        #[arg(short, long, default_value = "out")]
+        out: PathBuf,
+    },
+    /// Validate a scene file and print the grid it is solved on and the
+    /// memory the solve needs.
+    Check {
+        /// The scene file.
+        scene: PathBuf,
+    },
+    /// Print the exact values of the scene's results, where the library has
+    /// them (axisymmetric flat punch, paraboloid, sphere).
+    Reference {
+        /// The scene file.
+        scene: PathBuf,
+    },
+    /// Reproduce the reference experiment (Lyashenko, Popov & Borysiuk
+    /// 2023): CSV tables, SVG figures and a summary.
+    Paper {
+        /// Output folder.
+        #[arg(long, default_value = "target/paper")]
+        out: PathBuf,
+        /// Twice the resolution.
+        #[arg(long)]
+        fine: bool,
+    },
+}
+
+type Result<T> = std::result::Result<T, Box<dyn std::error::Error + Send + Sync>>;
+
+fn main() -> ExitCode {
+    match dispatch(Cli::parse().command) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => {
+            eprintln!("error: {error}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn dispatch(command: Command) -> Result<()> {
+    match command {
+        Command::Run { scene, out } => run(&scene_file::read(&scene)?, &out),
+        Command::Check { scene } => check(&scene_file::read(&scene)?),
+        Command::Reference { scene } => reference(&scene_file::read(&scene)?),
+        Command::Paper { out, fine } => paper::run(&out, fine),
+    }
+}
+
+fn run(scene: &Scene, out: &std::path::Path) -> Result<()> {
+    let mut progress = progress::Progress::new(scene);
+    progress.stage("building the kernel");
+    let mut solver = scene.solver()?;
+    progress.stage("solving");
+    let curve = scene.run_on(&mut solver, &mut |step| progress.step(step));
+    progress.finish();
+    let curve = curve?;
+    std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
+    let written = output::write_all(scene, &curve, out)?;
+    println!(
+        "{} steps on a {} x {} grid of {:.4e} m cells",
+        curve.steps.len(),
+        curve.grid.rows(),
+        curve.grid.columns(),
+        curve.grid.spacing()
+    );
+    if let Some(k) = curve.stiffness() {
+        println!("stiffness at the peak: {k:.6e} N/m");
+    }
+    if let Some(p) = curve.pull_off() {
+        println!("pull-off: {:.6e} N at depth {:.6e} m", p.force, p.depth);
+    }
+    for r in scene.reference()? {
+        if let Some(bem) = r.quantity.of(&curve) {
+            println!(
+                "{}: {bem:.6e} (exact {:.6e}, {:+.3} %; {})",
+                r.quantity.name(),
+                r.value,
+                100.0 * (bem / r.value - 1.0),
+                r.source
+            );
+        }
+    }
+    for path in written {
+        println!("wrote {}", path.display());
+    }
+    Ok(())
+}
+
+fn check(scene: &Scene) -> Result<()> {
+    scene.validate()?;
+    let grid = scene.grid()?;
+    let (lx, ly) = grid.extent();
+    let bytes = layered_contact::kernel::memory_estimate(&grid, scene.boundary);
+    println!("scene is valid");
+    println!(
+        "grid: {} x {} cells of {:.4e} m ({lx:.4e} m x {ly:.4e} m), {}",
+        grid.rows(),
+        grid.columns(),
+        grid.spacing(),
+        match scene.boundary {
+            layered_contact::Boundary::Isolated => "isolated",
+            layered_contact::Boundary::Periodic => "periodic",
+        }
+    );
+    println!("memory: about {:.1} MB for the solve", bytes as f64 / 1e6);
+    Ok(())
+}
+
+fn reference(scene: &Scene) -> Result<()> {
+    let references = scene.reference()?;
+    if references.is_empty() {
+        println!("no exact values for this scene (they exist for an untilted flat punch, paraboloid or sphere on an isolated grid)");
+    }
+    for r in references {
+        println!("{}: {:.9e} ({})", r.quantity.name(), r.value, r.source);
+    }
+    Ok(())
+}

@@ -1,0 +1,187 @@
+//! The exact values a scene can be checked against, where they exist: the
+//! axisymmetric solutions of [`analytic::Axisymmetric`] for an untilted flat
+//! punch, paraboloid or sphere on an isolated half-space or coated body.
+
+use crate::analytic::Axisymmetric;
+use crate::error::Result;
+use crate::grid::Boundary;
+use crate::substrate::Substrate;
+
+use super::{IndenterSpec, Protocol, Quantity, Scene};
+
+/// An exact value of one of a scene's [`Quantity`]s.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Reference {
+    /// Which quantity of the scene's curve it is for.
+    pub quantity: Quantity,
+    /// Its exact value (SI units).
+    pub value: f64,
+    /// Where it comes from.
+    pub source: &'static str,
+}
+
+/// Solutions are not tabulated beyond this `a/h` for a reference (the
+/// Nystrom order grows like `8 a/h`).
+const REFERENCE_MAX_EPS: f64 = 50.0;
+
+impl Scene {
+    /// The exact values this scene's curve can be compared with: for an
+    /// untilted flat punch, paraboloid or sphere on an isolated grid, from
+    /// the exact axisymmetric solution on the scene's substrate (a sphere by
+    /// its paraboloid, exact for contacts small against its radius).
+    ///
+    /// * Flat punch: the stiffness; the force at the deepest step of a
+    ///   depth-driven protocol; with adhesion the pull-off force at the
+    ///   unloading work of adhesion (Kendall's on a half-space).
+    /// * Paraboloid and sphere: the force and contact radius at the deepest
+    ///   step of a depth-driven protocol, or the contact radius at the peak
+    ///   force of a force-driven one (at the advancing work of adhesion);
+    ///   with adhesion the load-controlled pull-off force at the receding work
+    ///   (JKR's `-3/2 pi R dgamma` on a half-space), which is also the least
+    ///   force of a displacement-controlled unloading.
+    ///
+    /// Empty for other scenes, and for contacts wider than 50 layer
+    /// thicknesses.
+    ///
+    /// ```
+    /// use layered_contact::scene::{IndenterSpec, Protocol, Quantity, Scene, SubstrateSpec};
+    ///
+    /// let scene = Scene {
+    ///     substrate: SubstrateSpec::HalfSpace { youngs_modulus: 1e6, poisson_ratio: 0.5 },
+    ///     indenter: IndenterSpec::FlatPunch { radius: 1e-3 },
+    ///     protocol: Protocol::Depth { depth: 1e-5 },
+    ///     ..Scene::default()
+    /// };
+    /// let stiffness = scene.reference()?[0];
+    /// assert_eq!(stiffness.quantity, Quantity::Stiffness);
+    /// // 2 E* a with E* = E / (1 - nu^2).
+    /// assert!((stiffness.value / (2.0 * 1e6 / 0.75 * 1e-3) - 1.0).abs() < 1e-12);
+    /// Ok::<(), layered_contact::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`Scene::validate`], and failures of the exact solution.
+    pub fn reference(&self) -> Result<Vec<Reference>> {
+        self.validate()?;
+        if self.boundary != Boundary::Isolated || self.tilt.is_some() {
+            return Ok(Vec::new());
+        }
+        let substrate = self.substrate.build()?;
+        let (advancing, receding) = self.adhesion.works().unwrap_or((0.0, 0.0));
+        let adhesive = self.adhesion.works().is_some();
+        let mut out = Vec::new();
+        match self.indenter {
+            IndenterSpec::FlatPunch { radius } => {
+                let Some(exact) = exact_to(&substrate, radius)? else {
+                    return Ok(out);
+                };
+                let punch = exact.flat_punch(radius)?;
+                let source = "exact axisymmetric flat punch";
+                out.push(Reference {
+                    quantity: Quantity::Stiffness,
+                    value: punch.stiffness(),
+                    source,
+                });
+                if let Some(depth) = self.peak_depth() {
+                    out.push(Reference {
+                        quantity: Quantity::PeakForce,
+                        value: punch.stiffness() * depth,
+                        source,
+                    });
+                }
+                if adhesive && receding > 0.0 {
+                    out.push(Reference {
+                        quantity: Quantity::PullOffForce,
+                        value: punch.pull_off_force(receding),
+                        source,
+                    });
+                }
+            }
+            IndenterSpec::Sphere { radius } | IndenterSpec::Paraboloid { radius } => {
+                let source = if matches!(self.indenter, IndenterSpec::Sphere { .. }) {
+                    "exact axisymmetric paraboloid (sphere for a << R)"
+                } else {
+                    "exact axisymmetric paraboloid"
+                };
+                // The widest contact wanted: twice the Hertz radius at the
+                // peak (a force-driven peak by the surface material's
+                // modulus), or a few JKR radii at pull-off.
+                let modulus = substrate.surface_material().contact_modulus();
+                let hertz = match self.protocol {
+                    Protocol::Depth { depth }
+                    | Protocol::Cycle {
+                        max_depth: depth, ..
+                    } => (radius * depth.max(0.0)).sqrt(),
+                    Protocol::Force { force }
+                    | Protocol::ForceCycle {
+                        max_force: force, ..
+                    } => (0.75 * force * radius / modulus).cbrt(),
+                };
+                let jkr = (9.0 * std::f64::consts::PI * receding * radius * radius
+                    / (8.0 * modulus))
+                    .cbrt();
+                let Some(exact) = exact_to(&substrate, (2.0 * hertz).max(3.0 * jkr))? else {
+                    return Ok(out);
+                };
+                let loading = exact.paraboloid(radius, advancing)?;
+                let peak = match self.protocol {
+                    Protocol::Depth { depth }
+                    | Protocol::Cycle {
+                        max_depth: depth, ..
+                    } => loading.at_depth(depth)?,
+                    Protocol::Force { force }
+                    | Protocol::ForceCycle {
+                        max_force: force, ..
+                    } => loading.at_force(force)?,
+                };
+                if let Some(state) = peak.filter(|s| s.contact_radius > 0.0) {
+                    if self.peak_depth().is_some() {
+                        out.push(Reference {
+                            quantity: Quantity::PeakForce,
+                            value: state.force,
+                            source,
+                        });
+                    }
+                    out.push(Reference {
+                        quantity: Quantity::PeakContactRadius,
+                        value: state.contact_radius,
+                        source,
+                    });
+                }
+                if adhesive && receding > 0.0 {
+                    let pull_off = exact.paraboloid(radius, receding)?.pull_off()?;
+                    out.push(Reference {
+                        quantity: Quantity::PullOffForce,
+                        value: pull_off.load_control.force,
+                        source,
+                    });
+                }
+            }
+            _ => {}
+        }
+        Ok(out)
+    }
+
+    /// The deepest depth of a depth-driven protocol.
+    fn peak_depth(&self) -> Option<f64> {
+        match self.protocol {
+            Protocol::Depth { depth } => Some(depth),
+            Protocol::Cycle { max_depth, .. } => Some(max_depth),
+            Protocol::Force { .. } | Protocol::ForceCycle { .. } => None,
+        }
+    }
+}
+
+/// The exact solutions on `substrate` for contacts up to `radius`, `None`
+/// beyond [`REFERENCE_MAX_EPS`] layer thicknesses.
+fn exact_to(substrate: &Substrate, radius: f64) -> Result<Option<Axisymmetric>> {
+    let eps = match substrate {
+        Substrate::Coated(coating) => radius / coating.thickness(),
+        Substrate::HalfSpace(_) => 1.0,
+    };
+    if !(eps > 0.0 && eps <= REFERENCE_MAX_EPS) {
+        return Ok(None);
+    }
+    Axisymmetric::new(substrate, eps).map(Some)
+}

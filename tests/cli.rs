@@ -1,0 +1,157 @@
+//! The `layered-contact` command-line tool, run as a user would.
+#![cfg(feature = "cli")]
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use layered_contact::scene::Scene;
+
+const PUNCH: &str = r#"# A flat punch cycled on a rubber half-space.
+[substrate]
+kind = "half_space"
+youngs_modulus = 1e6
+poisson_ratio = 0.5
+
+[indenter]
+kind = "flat_punch"
+radius = 1e-3
+
+[protocol]
+kind = "cycle"
+max_depth = 1e-5
+steps = 3
+
+[resolution]
+cells_across = 16
+
+[outputs.fields]
+pressure = true
+displacement = true
+"#;
+
+fn folder(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("lc-cli-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn tool(args: &[&str], dir: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_layered-contact"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap()
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// A misspelt key fails with the file, the line and the key, and no panic
+/// or debug dump.
+#[test]
+fn a_typo_names_line_and_key() {
+    let dir = folder("typo");
+    std::fs::write(
+        dir.join("typo.toml"),
+        PUNCH.replace("radius = 1e-3", "radus = 1e-3"),
+    )
+    .unwrap();
+    for command in ["run", "check", "reference"] {
+        let out = tool(&[command, "typo.toml"], &dir);
+        assert_eq!(out.status.code(), Some(1));
+        let message = text(&out.stderr);
+        assert!(message.starts_with("error: typo.toml: TOML parse error at line 7"));
+        assert!(message.contains("unknown field `radus`, expected `radius`"));
+        assert!(!message.contains("panicked"));
+    }
+    // A library error reads as its message, with the value and the range.
+    std::fs::write(dir.join("bad.toml"), PUNCH.replace("0.5\n", "0.7\n")).unwrap();
+    let message = text(&tool(&["check", "bad.toml"], &dir).stderr);
+    assert_eq!(
+        message,
+        "error: Poisson ratio must lie in [0, 0.5], got 0.7\n"
+    );
+}
+
+/// A valid scene writes the curve, the fields (read back: shape, values,
+/// the force they carry) and the plot; progress goes to stderr as lines.
+#[test]
+fn run_writes_curve_fields_and_plot() {
+    let dir = folder("run");
+    std::fs::write(dir.join("punch.toml"), PUNCH).unwrap();
+    let out = tool(&["run", "punch.toml", "-o", "result"], &dir);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let scene: Scene = toml::from_str(PUNCH).unwrap();
+    let curve = scene.run(&mut |_| {}).unwrap();
+    let grid = curve.grid;
+    let result = dir.join("result");
+
+    let mut reader = csv::Reader::from_path(result.join("curve.csv")).unwrap();
+    let rows: Vec<csv::StringRecord> = reader.records().map(Result::unwrap).collect();
+    assert_eq!(rows.len(), curve.steps.len());
+    for (row, step) in rows.iter().zip(&curve.steps) {
+        assert_eq!(&row[0], step.phase.name());
+        assert_eq!(row[2].parse::<f64>().unwrap(), step.force);
+    }
+
+    let pressure: ndarray::Array2<f64> =
+        ndarray_npy::read_npy(result.join("pressure.npy")).unwrap();
+    assert_eq!(pressure.dim(), (grid.rows(), grid.columns()));
+    let peak = curve.peak.as_ref().unwrap();
+    assert_eq!(&pressure, peak.pressure.as_ref().unwrap());
+    // The pressures carry the peak force: sum p Delta^2 = F.
+    assert!((pressure.sum() * grid.cell_area() / peak.force - 1.0).abs() < 1e-12);
+    let displacement: ndarray::Array2<f64> =
+        ndarray_npy::read_npy(result.join("displacement.npy")).unwrap();
+    // Under the punch the surface moves down by the depth.
+    let centre = displacement[[grid.rows() / 2, grid.columns() / 2]];
+    assert!((centre / peak.depth - 1.0).abs() < 1e-6, "{centre}");
+    assert!(!result.join("gap.npy").exists());
+    let x: ndarray::Array1<f64> = ndarray_npy::read_npy(result.join("x.npy")).unwrap();
+    assert_eq!(x.len(), grid.rows());
+    assert!((x[0] + 0.5 * (grid.rows() as f64 - 1.0) * grid.spacing()).abs() < 1e-18);
+
+    let svg = std::fs::read_to_string(result.join("curve.svg")).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("<polyline"));
+
+    // Not a terminal: one plain line per step.
+    let progress = text(&out.stderr);
+    let lines = progress.lines().filter(|l| l.contains("] step ")).count();
+    assert_eq!(lines, curve.steps.len(), "{progress}");
+    let stdout = text(&out.stdout);
+    assert!(stdout.contains("stiffness:"), "{stdout}");
+}
+
+/// `check` prints the grid; `reference` the exact stiffness `2 E* a`.
+#[test]
+fn check_and_reference() {
+    let dir = folder("check");
+    std::fs::write(dir.join("punch.json"), {
+        let scene: Scene = toml::from_str(PUNCH).unwrap();
+        serde_json::to_string(&scene).unwrap()
+    })
+    .unwrap();
+    let out = tool(&["check", "punch.json"], &dir);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let grid = toml::from_str::<Scene>(PUNCH).unwrap().grid().unwrap();
+    assert!(text(&out.stdout).contains(&format!(
+        "grid: {} x {} cells",
+        grid.rows(),
+        grid.columns()
+    )));
+    let out = tool(&["reference", "punch.json"], &dir);
+    let stdout = text(&out.stdout);
+    let line = stdout
+        .lines()
+        .find(|l| l.starts_with("stiffness: "))
+        .unwrap();
+    let value: f64 = line["stiffness: ".len()..]
+        .split(' ')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!((value / (2.0 * 1e6 / 0.75 * 1e-3) - 1.0).abs() < 1e-9);
+}

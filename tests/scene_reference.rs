@@ -1,0 +1,99 @@
+//! `Scene::reference` against the half-space closed forms (Hertz, JKR,
+//! Kendall) and against the scene's own BEM curve.
+
+use layered_contact::scene::{Adhesion, IndenterSpec, Protocol, Quantity, Scene, SubstrateSpec};
+use std::f64::consts::PI;
+
+const E: f64 = 1e6;
+const NU: f64 = 0.5;
+const E_STAR: f64 = E / (1.0 - NU * NU);
+
+fn value(scene: &Scene, quantity: Quantity) -> f64 {
+    scene
+        .reference()
+        .unwrap()
+        .iter()
+        .find(|r| r.quantity == quantity)
+        .unwrap_or_else(|| panic!("no {quantity:?}"))
+        .value
+}
+
+fn half_space() -> SubstrateSpec {
+    SubstrateSpec::HalfSpace {
+        youngs_modulus: E,
+        poisson_ratio: NU,
+    }
+}
+
+/// Paraboloid on a half-space: Hertz's force and radius, JKR's pull-off.
+#[test]
+fn paraboloid_references_are_hertz_and_jkr() {
+    let (r, d, w) = (0.01, 1e-5, 0.05);
+    let scene = Scene {
+        substrate: half_space(),
+        indenter: IndenterSpec::Paraboloid { radius: r },
+        protocol: Protocol::Cycle {
+            max_depth: d,
+            steps: 4,
+        },
+        ..Scene::default()
+    };
+    let force = value(&scene, Quantity::PeakForce);
+    assert!((force / (4.0 / 3.0 * E_STAR * r.sqrt() * d.powf(1.5)) - 1.0).abs() < 1e-9);
+    let a = value(&scene, Quantity::PeakContactRadius);
+    assert!((a / (r * d).sqrt() - 1.0).abs() < 1e-9);
+    let adhesive = Scene {
+        adhesion: Adhesion::Constant {
+            work_of_adhesion: w,
+        },
+        ..scene
+    };
+    let pull_off = value(&adhesive, Quantity::PullOffForce);
+    assert!((pull_off / (-1.5 * PI * r * w) - 1.0).abs() < 1e-6);
+}
+
+/// Flat punch: 2 E* a and Kendall's pull-off; the BEM scene lands within
+/// its documented discretisation error (0.36 % at 64 across, the
+/// equal-area staircase).
+#[test]
+fn punch_references_are_closed_forms_and_bound_the_bem() {
+    let (a, w) = (1e-3, 0.1);
+    let scene = Scene {
+        substrate: half_space(),
+        indenter: IndenterSpec::FlatPunch { radius: a },
+        adhesion: Adhesion::Constant {
+            work_of_adhesion: w,
+        },
+        protocol: Protocol::Cycle {
+            max_depth: 2e-5,
+            steps: 4,
+        },
+        ..Scene::default()
+    };
+    let stiffness = value(&scene, Quantity::Stiffness);
+    assert!((stiffness / (2.0 * E_STAR * a) - 1.0).abs() < 1e-12);
+    let kendall = -(8.0 * PI * a.powi(3) * E_STAR * w).sqrt();
+    assert!((value(&scene, Quantity::PullOffForce) / kendall - 1.0).abs() < 1e-9);
+    let curve = scene.run(&mut |_| {}).unwrap();
+    let bem = Quantity::Stiffness.of(&curve).unwrap();
+    assert!((bem / stiffness - 1.0).abs() < 0.01, "{}", bem / stiffness);
+}
+
+/// No reference where there is no exact solution: a cone, a tilt, a
+/// periodic grid.
+#[test]
+fn no_reference_without_an_exact_solution() {
+    let cone = Scene {
+        indenter: IndenterSpec::Cone {
+            half_angle: 1.2,
+            base_radius: 1e-3,
+        },
+        ..Scene::default()
+    };
+    assert!(cone.reference().unwrap().is_empty());
+    let periodic = Scene {
+        boundary: layered_contact::Boundary::Periodic,
+        ..Scene::default()
+    };
+    assert!(periodic.reference().unwrap().is_empty());
+}
