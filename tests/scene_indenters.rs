@@ -107,6 +107,7 @@ fn custom_indenter_needs_a_bounding_radius() {
 }
 
 /// The heights of `shape` at the cell centres of `grid`.
+#[cfg(feature = "serde")]
 fn sampled(shape: &impl Indenter, grid: &Grid) -> Vec<f64> {
     let (rows, columns, delta) = (grid.rows(), grid.columns(), grid.spacing());
     (0..rows)
@@ -122,6 +123,7 @@ fn sampled(shape: &impl Indenter, grid: &Grid) -> Vec<f64> {
 
 /// A paraboloid written to `.npy` and to text and read back by a scene file
 /// gives the paraboloid's solution on the map's grid.
+#[cfg(feature = "serde")]
 #[test]
 fn height_map_scene_files() {
     let grid = Grid::new(48, 40, 1.5e-5).unwrap();

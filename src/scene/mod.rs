@@ -320,6 +320,16 @@ impl Scene {
         Ok(())
     }
 
+    /// Makes a relative height-map path relative to `folder` (the folder of
+    /// the scene file it was read from), as front-ends do.
+    pub fn resolve_paths(&mut self, folder: &std::path::Path) {
+        if let IndenterSpec::HeightMap { path, .. } = &mut self.indenter {
+            if path.is_relative() {
+                *path = folder.join(&*path);
+            }
+        }
+    }
+
     /// A solver for this scene's substrate on `grid`.
     fn solver_on(&self, grid: &Grid) -> Result<ContactSolver> {
         let params = SolverParams {

@@ -2,7 +2,7 @@
 
 use std::path::Path;
 
-use layered_contact::scene::{IndenterSpec, Scene};
+use layered_contact::scene::Scene;
 
 use crate::Result;
 
@@ -21,12 +21,8 @@ pub fn read(path: &Path) -> Result<Scene> {
         // the line.
         toml::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?
     };
-    if let IndenterSpec::HeightMap { path: map, .. } = &mut scene.indenter {
-        if map.is_relative() {
-            if let Some(folder) = path.parent() {
-                *map = folder.join(&*map);
-            }
-        }
+    if let Some(folder) = path.parent() {
+        scene.resolve_paths(folder);
     }
     Ok(scene)
 }

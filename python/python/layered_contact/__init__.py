@@ -1,0 +1,115 @@
+"""Contact mechanics of coated elastic bodies.
+
+Rigid indenters (flat punches, spheres, paraboloids, cones, any height map)
+pressed into an elastic half-space or an elastic layer bonded to a rigid or
+elastic base, with and without JKR-limit adhesion: a boundary-element solver,
+exact axisymmetric solutions and scenes (whole loading cycles), from the
+Rust crate ``layered-contact``.
+
+Units are SI. Depth ``d > 0`` presses in, pressure ``p > 0`` compresses,
+adhesive forces are negative. Field arrays are ``rows x columns`` with
+``[i, j]`` at ``(x[i], y[j])``, the cell centres in metres from the
+indenter's axis.
+
+>>> import layered_contact as lc
+>>> rubber = lc.Material(1e6, 0.5)
+>>> solver = lc.ContactSolver(lc.Substrate.half_space(rubber), 64, 64, 2e-5)
+>>> s = solver.solve_depth(lc.Indenter.paraboloid(0.01), 1e-5)
+>>> round(s.force / lc.analytic.hertz_force(rubber, 0.01, 1e-5), 2)
+1.0
+"""
+
+from __future__ import annotations
+
+import os
+from typing import Any, Callable, Mapping, Optional, Union
+
+from . import analytic
+from ._native import (
+    ConvergenceError,
+    ContactSolver,
+    Curve,
+    Indenter,
+    InvalidInputError,
+    LayeredContactError,
+    Material,
+    Solution,
+    Substrate,
+)
+from ._native import check_scene as _check_scene
+from ._native import run_scene as _run_scene
+from ._native import scene_reference as _scene_reference
+
+SceneLike = Union[Mapping[str, Any], str, "os.PathLike[str]"]
+
+__all__ = [
+    "ConvergenceError",
+    "ContactSolver",
+    "Curve",
+    "Indenter",
+    "InvalidInputError",
+    "LayeredContactError",
+    "Material",
+    "Solution",
+    "Substrate",
+    "analytic",
+    "check_scene",
+    "curve_to_dict",
+    "run_scene",
+    "scene_reference",
+]
+
+
+def _scene(scene: SceneLike) -> Any:
+    if isinstance(scene, Mapping):
+        return dict(scene)
+    return os.fspath(scene)
+
+
+def run_scene(
+    scene: SceneLike,
+    progress: Optional[Callable[[dict], None]] = None,
+    indenter: Optional[Indenter] = None,
+) -> Curve:
+    """Run a scene: a dict with the structure of a scene file, or the path
+    of a TOML or JSON scene file (height-map paths relative to it).
+
+    ``progress(step)`` is called after each step with a dict (``phase``,
+    ``depth``, ``force``, ``contact_area``, ``contact_radius``,
+    ``iterations``); an exception it raises (or Ctrl-C) stops reporting and
+    is raised when the run returns. ``indenter`` replaces the scene's
+    indenter by any :class:`Indenter`; the grid then spans its bounding
+    radius with ``resolution.cells_across`` cells across its diameter.
+    """
+    return _run_scene(_scene(scene), progress, indenter)
+
+
+def check_scene(scene: SceneLike) -> dict:
+    """Validate a scene without solving it: the grid it is solved on and
+    the memory it needs, as a dict (``rows``, ``columns``, ``spacing``,
+    ``memory_bytes``)."""
+    rows, columns, spacing, memory = _check_scene(_scene(scene))
+    return {"rows": rows, "columns": columns, "spacing": spacing, "memory_bytes": memory}
+
+
+def scene_reference(scene: SceneLike) -> dict:
+    """The exact values of the scene's results where they exist (untilted
+    flat punch, paraboloid or sphere on an isolated grid): a dict from
+    ``stiffness``, ``peak_force``, ``peak_contact_radius``,
+    ``pull_off_force`` to values."""
+    return _scene_reference(_scene(scene))
+
+
+def curve_to_dict(curve: Curve) -> dict:
+    """A curve as plain Python and NumPy values (picklable, for sweeps)."""
+    return {
+        "phase": list(curve.phase),
+        "depth": curve.depth,
+        "force": curve.force,
+        "contact_area": curve.contact_area,
+        "contact_radius": curve.contact_radius,
+        "iterations": list(curve.iterations),
+        "stiffness": curve.stiffness,
+        "pull_off": curve.pull_off,
+        "grid": curve.grid,
+    }

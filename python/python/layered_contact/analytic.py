@@ -1,0 +1,75 @@
+"""Closed forms and exact axisymmetric solutions, vectorised over NumPy
+arrays (scalars in, floats out).
+
+Hertz (1882) and Johnson, Kendall & Roberts (1971) on a half-space; the
+exact flat-punch stiffness and paraboloid pull-off on any substrate from the
+axisymmetric integral equation of the Rust crate (``analytic::Axisymmetric``).
+"""
+
+from __future__ import annotations
+
+from typing import Any, Tuple, Union
+
+import numpy as np
+
+from . import _native
+from ._native import Material, Substrate
+
+ArrayLike = Union[float, "np.typing.ArrayLike"]
+
+__all__ = [
+    "flat_punch_stiffness",
+    "hertz_contact_radius",
+    "hertz_force",
+    "jkr_pull_off_force",
+    "jkr_state",
+    "paraboloid_pull_off_force",
+]
+
+
+def _array(x: ArrayLike) -> np.ndarray:
+    return np.ascontiguousarray(np.asarray(x, dtype=np.float64))
+
+
+def _out(result: np.ndarray, x: ArrayLike) -> Any:
+    return float(result.reshape(-1)[0]) if np.ndim(x) == 0 else result.reshape(np.shape(x))
+
+
+def hertz_force(material: Material, radius: float, depth: ArrayLike) -> Any:
+    """Hertz: ``F = 4/3 E* sqrt(R) d^(3/2)`` (N) of a paraboloid of tip
+    radius ``radius`` (m) at ``depth`` (m) on a half-space."""
+    return _out(_native.hertz_force(material, radius, _array(depth)), depth)
+
+
+def hertz_contact_radius(material: Material, radius: float, depth: ArrayLike) -> Any:
+    """Hertz: ``a = sqrt(R d)`` (m)."""
+    return _out(_native.hertz_contact_radius(material, radius, _array(depth)), depth)
+
+
+def jkr_state(
+    material: Material, radius: float, work_of_adhesion: float, contact_radius: ArrayLike
+) -> Tuple[Any, Any]:
+    """JKR: ``(force, depth)`` (N, m) at ``contact_radius`` (m) for a
+    paraboloid on a half-space with work of adhesion ``work_of_adhesion``
+    (J/m^2)."""
+    force, depth = _native.jkr_state(material, radius, work_of_adhesion, _array(contact_radius))
+    return _out(force, contact_radius), _out(depth, contact_radius)
+
+
+def jkr_pull_off_force(material: Material, radius: float, work_of_adhesion: float) -> float:
+    """JKR: pull-off force under load control, ``-3/2 pi R w`` (N)."""
+    return _native.jkr_pull_off_force(material, radius, work_of_adhesion)
+
+
+def flat_punch_stiffness(substrate: Substrate, radius: ArrayLike) -> Any:
+    """Exact stiffness ``dF/dd`` (N/m) of a bonded flat punch of radius
+    ``radius`` (m) on ``substrate`` (``2 E* a`` on a half-space)."""
+    return _out(_native.flat_punch_stiffness(substrate, _array(radius)), radius)
+
+
+def paraboloid_pull_off_force(
+    substrate: Substrate, radius: float, work_of_adhesion: float
+) -> float:
+    """Exact load-controlled pull-off force (N) of a paraboloid of tip radius
+    ``radius`` (m) on ``substrate`` (JKR's on a half-space)."""
+    return _native.paraboloid_pull_off_force(substrate, radius, work_of_adhesion)

@@ -1,0 +1,835 @@
+//! Python bindings of `layered-contact`: a thin layer over the Rust crate's
+//! public API. Library errors become the exceptions below with the library's
+//! own messages; solves release the GIL.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use numpy::{
+    PyArray1, PyArrayDyn, PyArrayMethods, PyReadonlyArray2, PyReadonlyArrayDyn,
+    PyUntypedArrayMethods,
+};
+use pyo3::create_exception;
+use pyo3::exceptions::PyException;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyString};
+
+use layered_contact as lc;
+
+create_exception!(
+    layered_contact,
+    LayeredContactError,
+    PyException,
+    "An error of the layered-contact library."
+);
+create_exception!(
+    layered_contact,
+    InvalidInputError,
+    LayeredContactError,
+    "A value outside its valid range (the message names it and the range)."
+);
+create_exception!(
+    layered_contact,
+    ConvergenceError,
+    LayeredContactError,
+    "A solver that did not converge (the message gives the residual)."
+);
+
+/// The library's error as the matching Python exception, same message.
+fn to_py(error: lc::Error) -> PyErr {
+    let message = error.to_string();
+    match error {
+        lc::Error::NoConvergence { .. } | lc::Error::NoEquilibrium { .. } => {
+            ConvergenceError::new_err(message)
+        }
+        lc::Error::InvalidYoungsModulus { .. }
+        | lc::Error::InvalidPoissonRatio { .. }
+        | lc::Error::InvalidThickness { .. }
+        | lc::Error::InvalidParameter { .. }
+        | lc::Error::InvalidGrid { .. }
+        | lc::Error::ShapeMismatch { .. }
+        | lc::Error::IndenterOutsideGrid { .. }
+        | lc::Error::HeightMapFile { .. } => InvalidInputError::new_err(message),
+        _ => LayeredContactError::new_err(message),
+    }
+}
+
+trait OrPy<T> {
+    fn py_err(self) -> PyResult<T>;
+}
+
+impl<T> OrPy<T> for lc::Result<T> {
+    fn py_err(self) -> PyResult<T> {
+        self.map_err(to_py)
+    }
+}
+
+/// An isotropic linear-elastic material.
+#[pyclass(module = "layered_contact._native", frozen)]
+#[derive(Clone)]
+struct Material {
+    inner: lc::Material,
+}
+
+#[pymethods]
+impl Material {
+    #[new]
+    fn new(youngs_modulus: f64, poisson_ratio: f64) -> PyResult<Self> {
+        Ok(Material {
+            inner: lc::Material::new(youngs_modulus, poisson_ratio).py_err()?,
+        })
+    }
+
+    /// Young's modulus E, Pa.
+    #[getter]
+    fn youngs_modulus(&self) -> f64 {
+        self.inner.youngs_modulus()
+    }
+
+    /// Poisson ratio nu.
+    #[getter]
+    fn poisson_ratio(&self) -> f64 {
+        self.inner.poisson_ratio()
+    }
+
+    /// Plane-strain modulus E* = E / (1 - nu^2), Pa.
+    #[getter]
+    fn contact_modulus(&self) -> f64 {
+        self.inner.contact_modulus()
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Material(youngs_modulus={:e}, poisson_ratio={})",
+            self.inner.youngs_modulus(),
+            self.inner.poisson_ratio()
+        )
+    }
+}
+
+/// The elastic body: a half-space, or a layer on a rigid or elastic base.
+#[pyclass(module = "layered_contact._native", frozen)]
+#[derive(Clone)]
+struct Substrate {
+    inner: lc::Substrate,
+}
+
+#[pymethods]
+impl Substrate {
+    /// A homogeneous half-space.
+    #[staticmethod]
+    fn half_space(material: &Material) -> Self {
+        Substrate {
+            inner: lc::Substrate::half_space(material.inner),
+        }
+    }
+
+    /// A layer of thickness `thickness` (m) bonded to a rigid base.
+    #[staticmethod]
+    fn layer_on_rigid_base(layer: &Material, thickness: f64) -> PyResult<Self> {
+        Ok(Substrate {
+            inner: lc::Substrate::layer_on_rigid_base(layer.inner, thickness).py_err()?,
+        })
+    }
+
+    /// A layer of thickness `thickness` (m) bonded to an elastic half-space.
+    #[staticmethod]
+    fn layer_on_elastic_base(layer: &Material, thickness: f64, base: &Material) -> PyResult<Self> {
+        Ok(Substrate {
+            inner: lc::Substrate::layer_on_elastic_base(layer.inner, thickness, base.inner)
+                .py_err()?,
+        })
+    }
+
+    fn __repr__(&self) -> String {
+        format!("{:?}", self.inner)
+    }
+}
+
+/// A rigid indenter; built by the static methods.
+#[pyclass(module = "layered_contact._native", frozen)]
+#[derive(Clone)]
+struct Indenter {
+    inner: Arc<dyn lc::indenter::Indenter + Send + Sync>,
+    name: String,
+}
+
+/// A shared indenter as a library indenter.
+struct Shared(Arc<dyn lc::indenter::Indenter + Send + Sync>);
+
+impl lc::indenter::Indenter for Shared {
+    fn height(&self, x: f64, y: f64) -> f64 {
+        self.0.height(x, y)
+    }
+
+    fn bounding_radius(&self) -> f64 {
+        self.0.bounding_radius()
+    }
+}
+
+impl Indenter {
+    fn new(shape: impl lc::indenter::Indenter + Send + Sync + 'static, name: String) -> Self {
+        Indenter {
+            inner: Arc::new(shape),
+            name,
+        }
+    }
+}
+
+#[pymethods]
+impl Indenter {
+    /// A flat cylindrical punch of radius `radius` (m).
+    #[staticmethod]
+    fn flat_punch(radius: f64) -> PyResult<Self> {
+        let shape = lc::indenter::FlatPunch::new(radius).py_err()?;
+        Ok(Indenter::new(
+            shape,
+            format!("flat_punch(radius={radius:e})"),
+        ))
+    }
+
+    /// A sphere of radius `radius` (m), the exact spherical cap.
+    #[staticmethod]
+    fn sphere(radius: f64) -> PyResult<Self> {
+        let shape = lc::indenter::Sphere::new(radius).py_err()?;
+        Ok(Indenter::new(shape, format!("sphere(radius={radius:e})")))
+    }
+
+    /// A paraboloid of tip radius `radius` (m): f = r^2 / (2 R).
+    #[staticmethod]
+    fn paraboloid(radius: f64) -> PyResult<Self> {
+        let shape = lc::indenter::Paraboloid::new(radius).py_err()?;
+        Ok(Indenter::new(
+            shape,
+            format!("paraboloid(radius={radius:e})"),
+        ))
+    }
+
+    /// A cone of half-angle `half_angle` (rad, axis to face) and base radius
+    /// `base_radius` (m).
+    #[staticmethod]
+    fn cone(half_angle: f64, base_radius: f64) -> PyResult<Self> {
+        let shape = lc::indenter::Cone::new(half_angle, base_radius).py_err()?;
+        Ok(Indenter::new(
+            shape,
+            format!("cone(half_angle={half_angle}, base_radius={base_radius:e})"),
+        ))
+    }
+
+    /// Any shape as a 2D array of heights (m, `rows x columns`, `+inf` where
+    /// it cannot touch) on square cells of side `spacing` (m), centred on
+    /// the axis: `heights[i, j]` is the height at
+    /// `x = (i + 1/2 - rows/2) spacing`, `y = (j + 1/2 - columns/2) spacing`.
+    #[staticmethod]
+    fn height_map(heights: PyReadonlyArray2<'_, f64>, spacing: f64) -> PyResult<Self> {
+        let shape = heights.shape();
+        let (rows, columns) = (shape[0], shape[1]);
+        let values: Vec<f64> = heights.as_array().iter().copied().collect();
+        let grid = lc::Grid::new(rows, columns, spacing).py_err()?;
+        let map = lc::indenter::HeightMap::new(grid, values).py_err()?;
+        Ok(Indenter::new(
+            map,
+            format!("height_map({rows} x {columns}, spacing={spacing:e})"),
+        ))
+    }
+
+    /// The tilted indenter: rotated by `angle_y` about the y axis (the face
+    /// rises with x) and `angle_x` about the x axis (rad, small).
+    fn tilted(&self, angle_y: f64, angle_x: f64) -> PyResult<Self> {
+        let shape =
+            lc::indenter::Tilted::new(Shared(self.inner.clone()), angle_y, angle_x).py_err()?;
+        Ok(Indenter::new(
+            shape,
+            format!("{}.tilted({angle_y}, {angle_x})", self.name),
+        ))
+    }
+
+    /// The height f(x, y) (m) above the lowest point; `inf` where it cannot
+    /// touch. Vectorised over NumPy arrays of equal shape.
+    fn height<'py>(
+        &self,
+        py: Python<'py>,
+        x: PyReadonlyArrayDyn<'py, f64>,
+        y: PyReadonlyArrayDyn<'py, f64>,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        if x.shape() != y.shape() {
+            return Err(InvalidInputError::new_err(format!(
+                "x and y must have the same shape, got {:?} and {:?}",
+                x.shape(),
+                y.shape()
+            )));
+        }
+        let values: Vec<f64> = x
+            .as_array()
+            .iter()
+            .zip(y.as_array().iter())
+            .map(|(x, y)| self.inner.height(*x, *y))
+            .collect();
+        PyArray1::from_vec(py, values).reshape(x.shape().to_vec())
+    }
+
+    /// Radius (m) of the disc outside which the indenter cannot touch.
+    #[getter]
+    fn bounding_radius(&self) -> f64 {
+        self.inner.bounding_radius()
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Indenter.{}", self.name)
+    }
+}
+
+/// The cell centres along an axis of `n` cells: `(k + 1/2 - n/2) spacing`.
+fn centres(py: Python<'_>, n: usize, spacing: f64) -> Py<PyAny> {
+    let values: Vec<f64> = (0..n)
+        .map(|k| (k as f64 + 0.5 - 0.5 * n as f64) * spacing)
+        .collect();
+    PyArray1::from_vec(py, values).into_any().unbind()
+}
+
+/// A field as a `rows x columns` array.
+fn field(py: Python<'_>, array: &Option<ndarray::Array2<f64>>) -> PyResult<Option<Py<PyAny>>> {
+    array
+        .as_ref()
+        .map(|a| {
+            let (rows, columns) = a.dim();
+            let values: Vec<f64> = a.iter().copied().collect();
+            Ok(PyArray1::from_vec(py, values)
+                .reshape([rows, columns])?
+                .into_any()
+                .unbind())
+        })
+        .transpose()
+}
+
+/// One equilibrium of the boundary-element solver. Arrays are
+/// `rows x columns` with `[i, j]` at `(x[i], y[j])`, m from the axis.
+#[pyclass(module = "layered_contact._native", frozen, get_all)]
+struct Solution {
+    /// Depth of the indenter's lowest point below the undeformed surface, m.
+    depth: f64,
+    /// Total force, N (negative when adhesion pulls).
+    force: f64,
+    /// Contact area, m^2.
+    contact_area: f64,
+    /// Radius of the circle of equal area, m.
+    contact_radius: f64,
+    /// Cells in contact.
+    contact_cells: usize,
+    /// Whether the contact touches the edge of an isolated grid.
+    edge_contact: bool,
+    /// Iterations on this grid.
+    iterations: usize,
+    /// Final residual.
+    residual: f64,
+    /// Cell pressures, Pa (compression positive).
+    pressure: Option<Py<PyAny>>,
+    /// Surface displacements into the body, m.
+    displacement: Option<Py<PyAny>>,
+    /// Gap between indenter and surface, m (`inf` where it cannot reach).
+    gap: Option<Py<PyAny>>,
+    /// Cell-centre coordinates along the rows, m.
+    x: Py<PyAny>,
+    /// Cell-centre coordinates along the columns, m.
+    y: Py<PyAny>,
+}
+
+impl Solution {
+    fn new(py: Python<'_>, s: &lc::solver::Solution, grid: &lc::Grid) -> PyResult<Self> {
+        Ok(Solution {
+            depth: s.depth,
+            force: s.force,
+            contact_area: s.contact_area,
+            contact_radius: s.contact_radius,
+            contact_cells: s.contact_cells,
+            edge_contact: s.edge_contact,
+            iterations: s.iterations,
+            residual: s.residual,
+            pressure: field(py, &s.pressure)?,
+            displacement: field(py, &s.displacement)?,
+            gap: field(py, &s.gap)?,
+            x: centres(py, grid.rows(), grid.spacing()),
+            y: centres(py, grid.columns(), grid.spacing()),
+        })
+    }
+}
+
+#[pymethods]
+impl Solution {
+    fn __repr__(&self) -> String {
+        format!(
+            "Solution(depth={:e}, force={:e}, contact_radius={:e}, iterations={})",
+            self.depth, self.force, self.contact_radius, self.iterations
+        )
+    }
+}
+
+/// The boundary-element solver on one substrate and grid: kernel and FFT
+/// plans are built once, solves reuse them (and the last solve as a warm
+/// start when asked). Solves release the GIL.
+#[pyclass(module = "layered_contact._native")]
+struct ContactSolver {
+    inner: lc::solver::ContactSolver,
+    warm: Option<lc::solver::WarmStart>,
+}
+
+#[pymethods]
+impl ContactSolver {
+    /// A solver for `substrate` on `rows x columns` square cells of side
+    /// `spacing` (m), isolated (the body is infinite) or periodic.
+    #[new]
+    #[allow(clippy::too_many_arguments)] // Python keyword arguments
+    #[pyo3(signature = (substrate, rows, columns, spacing, periodic=false, tolerance=1e-8, max_iterations=10_000))]
+    fn new(
+        py: Python<'_>,
+        substrate: &Substrate,
+        rows: usize,
+        columns: usize,
+        spacing: f64,
+        periodic: bool,
+        tolerance: f64,
+        max_iterations: usize,
+    ) -> PyResult<Self> {
+        let grid = lc::Grid::new(rows, columns, spacing).py_err()?;
+        let boundary = if periodic {
+            lc::Boundary::Periodic
+        } else {
+            lc::Boundary::Isolated
+        };
+        let params = lc::solver::SolverParams {
+            tolerance,
+            max_iterations,
+            fields: lc::solver::Fields::all(),
+            ..lc::solver::SolverParams::default()
+        };
+        let substrate = substrate.inner;
+        let inner = py
+            .detach(|| lc::solver::ContactSolver::new(&substrate, &grid, boundary, params))
+            .py_err()?;
+        Ok(ContactSolver { inner, warm: None })
+    }
+
+    /// The equilibrium at depth `depth` (m); `warm_start` starts from the
+    /// previous solve (load stepping).
+    #[pyo3(signature = (indenter, depth, warm_start=false))]
+    fn solve_depth(
+        &mut self,
+        py: Python<'_>,
+        indenter: &Indenter,
+        depth: f64,
+        warm_start: bool,
+    ) -> PyResult<Solution> {
+        self.solve(py, indenter, warm_start, |solver, shape, warm| {
+            solver.solve_depth(shape, depth, warm, &mut ())
+        })
+    }
+
+    /// The equilibrium under total force `force` (N, >= 0).
+    #[pyo3(signature = (indenter, force, warm_start=false))]
+    fn solve_force(
+        &mut self,
+        py: Python<'_>,
+        indenter: &Indenter,
+        force: f64,
+        warm_start: bool,
+    ) -> PyResult<Solution> {
+        self.solve(py, indenter, warm_start, |solver, shape, warm| {
+            solver.solve_force(shape, force, warm, &mut ())
+        })
+    }
+
+    /// `(rows, columns, spacing)`.
+    #[getter]
+    fn grid(&self) -> (usize, usize, f64) {
+        let g = self.inner.grid();
+        (g.rows(), g.columns(), g.spacing())
+    }
+}
+
+type Solved = lc::Result<(lc::solver::Solution, lc::solver::WarmStart)>;
+
+impl ContactSolver {
+    fn solve(
+        &mut self,
+        py: Python<'_>,
+        indenter: &Indenter,
+        warm_start: bool,
+        run: impl FnOnce(
+                &mut lc::solver::ContactSolver,
+                &Shared,
+                Option<&lc::solver::WarmStart>,
+            ) -> Solved
+            + Send,
+    ) -> PyResult<Solution> {
+        let shape = Shared(indenter.inner.clone());
+        let warm = if warm_start { self.warm.take() } else { None };
+        let inner = &mut self.inner;
+        let (solution, warm) = py.detach(|| run(inner, &shape, warm.as_ref())).py_err()?;
+        self.warm = Some(warm);
+        Solution::new(py, &solution, self.inner.grid())
+    }
+}
+
+/// A scene from a dict (the structure of a scene file) or a TOML/JSON file.
+fn read_scene(py: Python<'_>, scene: &Bound<'_, PyAny>) -> PyResult<lc::scene::Scene> {
+    if let Ok(dict) = scene.cast::<PyDict>() {
+        let json: String = py
+            .import("json")?
+            .call_method1("dumps", (dict,))?
+            .extract()?;
+        return serde_json::from_str(&json)
+            .map_err(|e| InvalidInputError::new_err(format!("scene: {e}")));
+    }
+    let path: PathBuf = scene.extract().map_err(|_| {
+        InvalidInputError::new_err("a scene is a dict or the path of a TOML or JSON file")
+    })?;
+    let text = std::fs::read_to_string(&path)
+        .map_err(|e| InvalidInputError::new_err(format!("cannot read {}: {e}", path.display())))?;
+    let json = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("json"));
+    let parsed: Result<lc::scene::Scene, String> = if json {
+        serde_json::from_str(&text).map_err(|e| e.to_string())
+    } else {
+        toml::from_str(&text).map_err(|e| e.to_string())
+    };
+    let mut scene =
+        parsed.map_err(|e| InvalidInputError::new_err(format!("{}: {e}", path.display())))?;
+    if let Some(folder) = path.parent() {
+        scene.resolve_paths(folder);
+    }
+    Ok(scene)
+}
+
+/// A step as a dict.
+fn step_dict<'py>(py: Python<'py>, s: &lc::scene::Step) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("phase", s.phase.name())?;
+    d.set_item("depth", s.depth)?;
+    d.set_item("force", s.force)?;
+    d.set_item("contact_area", s.contact_area)?;
+    d.set_item("contact_radius", s.contact_radius)?;
+    d.set_item("iterations", s.iterations)?;
+    Ok(d)
+}
+
+/// The result of a scene: its steps as arrays, and the peak's fields.
+#[pyclass(module = "layered_contact._native", frozen, get_all)]
+struct Curve {
+    /// "loading" or "unloading" for each step.
+    phase: Vec<String>,
+    /// Depths, m.
+    depth: Py<PyAny>,
+    /// Forces, N.
+    force: Py<PyAny>,
+    /// Contact areas, m^2.
+    contact_area: Py<PyAny>,
+    /// Contact radii (equal area), m.
+    contact_radius: Py<PyAny>,
+    /// Solver iterations per step.
+    iterations: Vec<usize>,
+    /// Contact stiffness at the end of loading, N/m (None without two
+    /// loading steps in contact).
+    stiffness: Option<f64>,
+    /// The pull-off step as a dict (None without tension on unloading).
+    pull_off: Option<Py<PyDict>>,
+    /// `(rows, columns, spacing)` of the grid solved on.
+    grid: (usize, usize, f64),
+    /// The most loaded step with the fields the scene asked for (None if it
+    /// asked for none).
+    peak: Option<Py<Solution>>,
+}
+
+#[pymethods]
+impl Curve {
+    fn __len__(&self) -> usize {
+        self.phase.len()
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Curve({} steps on a {} x {} grid, stiffness={:?})",
+            self.phase.len(),
+            self.grid.0,
+            self.grid.1,
+            self.stiffness
+        )
+    }
+}
+
+fn array(py: Python<'_>, values: Vec<f64>) -> Py<PyAny> {
+    PyArray1::from_vec(py, values).into_any().unbind()
+}
+
+/// Runs a scene (a dict or a TOML/JSON file path), calling
+/// `progress(step_dict)` after each step; `indenter` replaces the scene's
+/// indenter by any `Indenter` (sized from its bounding radius). Releases
+/// the GIL while solving.
+#[pyfunction]
+#[pyo3(signature = (scene, progress=None, indenter=None))]
+fn run_scene(
+    py: Python<'_>,
+    scene: &Bound<'_, PyAny>,
+    progress: Option<Py<PyAny>>,
+    indenter: Option<&Indenter>,
+) -> PyResult<Curve> {
+    let mut scene = read_scene(py, scene)?;
+    if let Some(shape) = indenter {
+        scene.indenter = lc::scene::IndenterSpec::Custom(lc::scene::CustomIndenter::new(Shared(
+            shape.inner.clone(),
+        )));
+    }
+    // The first error the callback raises (or Ctrl-C) is raised after the run.
+    let mut raised: Option<PyErr> = None;
+    let curve = py.detach(|| {
+        scene.run(&mut |step| {
+            if raised.is_some() {
+                return;
+            }
+            Python::attach(|py| {
+                let outcome = py.check_signals().and_then(|()| match &progress {
+                    Some(callback) => step_dict(py, step)
+                        .and_then(|d| callback.call1(py, (d,)))
+                        .map(|_| ()),
+                    None => Ok(()),
+                });
+                if let Err(e) = outcome {
+                    raised = Some(e);
+                }
+            });
+        })
+    });
+    if let Some(e) = raised {
+        return Err(e);
+    }
+    let curve = curve.py_err()?;
+    let steps = &curve.steps;
+    let column = |f: fn(&lc::scene::Step) -> f64| array(py, steps.iter().map(f).collect());
+    let pull_off = curve
+        .pull_off()
+        .map(|s| step_dict(py, s).map(Bound::unbind))
+        .transpose()?;
+    let peak = curve
+        .peak
+        .as_ref()
+        .map(|s| Py::new(py, Solution::new(py, s, &curve.grid)?))
+        .transpose()?;
+    Ok(Curve {
+        phase: steps.iter().map(|s| s.phase.name().to_string()).collect(),
+        depth: column(|s| s.depth),
+        force: column(|s| s.force),
+        contact_area: column(|s| s.contact_area),
+        contact_radius: column(|s| s.contact_radius),
+        iterations: steps.iter().map(|s| s.iterations).collect(),
+        stiffness: curve.stiffness(),
+        pull_off,
+        grid: (
+            curve.grid.rows(),
+            curve.grid.columns(),
+            curve.grid.spacing(),
+        ),
+        peak,
+    })
+}
+
+/// Validates a scene; returns `(rows, columns, spacing, memory_bytes)` of
+/// the grid it is solved on.
+#[pyfunction]
+fn check_scene(py: Python<'_>, scene: &Bound<'_, PyAny>) -> PyResult<(usize, usize, f64, usize)> {
+    let scene = read_scene(py, scene)?;
+    scene.validate().py_err()?;
+    let grid = scene.grid().py_err()?;
+    let bytes = lc::kernel::memory_estimate(&grid, scene.boundary);
+    Ok((grid.rows(), grid.columns(), grid.spacing(), bytes))
+}
+
+/// The exact values of a scene's results where they exist, as
+/// `{quantity: value}` (see `Scene::reference` of the Rust crate).
+#[pyfunction]
+fn scene_reference<'py>(
+    py: Python<'py>,
+    scene: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let scene = read_scene(py, scene)?;
+    let references = py.detach(|| scene.reference()).py_err()?;
+    let out = PyDict::new(py);
+    for r in references {
+        out.set_item(PyString::new(py, r.quantity.name()), r.value)?;
+    }
+    Ok(out)
+}
+
+/// `f` applied to every element of `values`, same shape.
+fn map<'py>(
+    py: Python<'py>,
+    values: PyReadonlyArrayDyn<'py, f64>,
+    f: impl Fn(f64) -> lc::Result<f64>,
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let out: Vec<f64> = values
+        .as_array()
+        .iter()
+        .map(|v| f(*v))
+        .collect::<lc::Result<_>>()
+        .py_err()?;
+    PyArray1::from_vec(py, out).reshape(values.shape().to_vec())
+}
+
+fn finite(name: &'static str, value: f64) -> lc::Result<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(lc::Error::InvalidParameter {
+            name,
+            value,
+            expected: "finite",
+        })
+    }
+}
+
+/// Hertz: force (N) of a paraboloid of tip radius `radius` pressed `depth`
+/// (m) into a half-space of `material`.
+#[pyfunction]
+fn hertz_force<'py>(
+    py: Python<'py>,
+    material: &Material,
+    radius: f64,
+    depth: PyReadonlyArrayDyn<'py, f64>,
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let hertz = lc::analytic::Hertz::new(&material.inner, radius).py_err()?;
+    map(py, depth, |d| Ok(hertz.force(finite("depth", d)?)))
+}
+
+/// Hertz: contact radius (m) at `depth` (m).
+#[pyfunction]
+fn hertz_contact_radius<'py>(
+    py: Python<'py>,
+    material: &Material,
+    radius: f64,
+    depth: PyReadonlyArrayDyn<'py, f64>,
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let hertz = lc::analytic::Hertz::new(&material.inner, radius).py_err()?;
+    map(py, depth, |d| Ok(hertz.contact_radius(finite("depth", d)?)))
+}
+
+/// A NumPy array of any shape.
+type Array<'py> = Bound<'py, PyArrayDyn<f64>>;
+
+/// JKR: `(force, depth)` (N, m) of a paraboloid of tip radius `radius` on a
+/// half-space with work of adhesion `work_of_adhesion` (J/m^2), at contact
+/// radius `contact_radius` (m).
+#[pyfunction]
+fn jkr_state<'py>(
+    py: Python<'py>,
+    material: &Material,
+    radius: f64,
+    work_of_adhesion: f64,
+    contact_radius: PyReadonlyArrayDyn<'py, f64>,
+) -> PyResult<(Array<'py>, Array<'py>)> {
+    let jkr = lc::analytic::JkrSphere::new(&material.inner, radius, work_of_adhesion).py_err()?;
+    let check = |a: f64| {
+        if a >= 0.0 && a.is_finite() {
+            Ok(a)
+        } else {
+            Err(lc::Error::InvalidParameter {
+                name: "contact_radius",
+                value: a,
+                expected: "non-negative and finite",
+            })
+        }
+    };
+    let force = map(py, contact_radius.clone(), |a| Ok(jkr.force(check(a)?)))?;
+    let depth = map(py, contact_radius, |a| Ok(jkr.depth(check(a)?)))?;
+    Ok((force, depth))
+}
+
+/// JKR pull-off force under load control, `-3/2 pi R w` (N).
+#[pyfunction]
+fn jkr_pull_off_force(material: &Material, radius: f64, work_of_adhesion: f64) -> PyResult<f64> {
+    Ok(
+        lc::analytic::JkrSphere::new(&material.inner, radius, work_of_adhesion)
+            .py_err()?
+            .pull_off_force(),
+    )
+}
+
+/// Exact stiffness (N/m) of a flat punch of radius `radius` (m) on
+/// `substrate`, from the axisymmetric solution (any layer thickness).
+#[pyfunction]
+fn flat_punch_stiffness<'py>(
+    py: Python<'py>,
+    substrate: &Substrate,
+    radius: PyReadonlyArrayDyn<'py, f64>,
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let largest =
+        radius
+            .as_array()
+            .iter()
+            .copied()
+            .fold(0.0f64, |m, r| if r.is_finite() { m.max(r) } else { m });
+    let eps = match &substrate.inner {
+        lc::Substrate::Coated(c) => largest / c.thickness(),
+        _ => 1.0,
+    };
+    let substrate = substrate.inner;
+    let radii: Vec<f64> = radius.as_array().iter().copied().collect();
+    let stiffness = py
+        .detach(|| -> lc::Result<Vec<f64>> {
+            let exact = lc::analytic::Axisymmetric::new(&substrate, eps.max(1e-6))?;
+            radii
+                .iter()
+                .map(|&a| Ok(exact.flat_punch(a)?.stiffness()))
+                .collect()
+        })
+        .py_err()?;
+    PyArray1::from_vec(py, stiffness).reshape(radius.shape().to_vec())
+}
+
+/// Exact load-controlled pull-off force (N) of a paraboloid of tip radius
+/// `radius` (m) on `substrate` with work of adhesion `work_of_adhesion`.
+#[pyfunction]
+fn paraboloid_pull_off_force(
+    py: Python<'_>,
+    substrate: &Substrate,
+    radius: f64,
+    work_of_adhesion: f64,
+) -> PyResult<f64> {
+    let substrate = substrate.inner;
+    py.detach(|| -> lc::Result<f64> {
+        let modulus = substrate.surface_material().contact_modulus();
+        let jkr = (9.0 * std::f64::consts::PI * work_of_adhesion * radius * radius
+            / (8.0 * modulus))
+            .cbrt();
+        let eps = match &substrate {
+            lc::Substrate::Coated(c) => 3.0 * jkr / c.thickness(),
+            _ => 1.0,
+        };
+        let exact = lc::analytic::Axisymmetric::new(&substrate, eps)?;
+        let pull_off = exact.paraboloid(radius, work_of_adhesion)?.pull_off()?;
+        Ok(pull_off.load_control.force)
+    })
+    .py_err()
+}
+
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let py = m.py();
+    m.add("LayeredContactError", py.get_type::<LayeredContactError>())?;
+    m.add("InvalidInputError", py.get_type::<InvalidInputError>())?;
+    m.add("ConvergenceError", py.get_type::<ConvergenceError>())?;
+    m.add_class::<Material>()?;
+    m.add_class::<Substrate>()?;
+    m.add_class::<Indenter>()?;
+    m.add_class::<Solution>()?;
+    m.add_class::<ContactSolver>()?;
+    m.add_class::<Curve>()?;
+    m.add_function(wrap_pyfunction!(run_scene, m)?)?;
+    m.add_function(wrap_pyfunction!(check_scene, m)?)?;
+    m.add_function(wrap_pyfunction!(scene_reference, m)?)?;
+    m.add_function(wrap_pyfunction!(hertz_force, m)?)?;
+    m.add_function(wrap_pyfunction!(hertz_contact_radius, m)?)?;
+    m.add_function(wrap_pyfunction!(jkr_state, m)?)?;
+    m.add_function(wrap_pyfunction!(jkr_pull_off_force, m)?)?;
+    m.add_function(wrap_pyfunction!(flat_punch_stiffness, m)?)?;
+    m.add_function(wrap_pyfunction!(paraboloid_pull_off_force, m)?)?;
+    Ok(())
+}

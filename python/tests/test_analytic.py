@@ -1,0 +1,61 @@
+"""The analytic functions against closed forms written out here."""
+
+import math
+
+import numpy as np
+import pytest
+
+import layered_contact as lc
+
+RUBBER = lc.Material(1e6, 0.5)
+E_STAR = 1e6 / 0.75
+
+
+def test_contact_modulus():
+    assert RUBBER.contact_modulus == pytest.approx(E_STAR, rel=1e-15)
+
+
+def test_hertz_vectorised():
+    depth = np.array([[1e-6, 4e-6, 9e-6], [0.0, 1e-5, 2e-5]])
+    force = lc.analytic.hertz_force(RUBBER, 0.01, depth)
+    assert force.shape == (2, 3)
+    np.testing.assert_allclose(force, 4 / 3 * E_STAR * math.sqrt(0.01) * depth**1.5, rtol=1e-14)
+    radius = lc.analytic.hertz_contact_radius(RUBBER, 0.01, 4e-6)
+    assert isinstance(radius, float)
+    assert radius == pytest.approx(math.sqrt(0.01 * 4e-6), rel=1e-14)
+
+
+def test_jkr():
+    w, r = 0.05, 0.01
+    assert lc.analytic.jkr_pull_off_force(RUBBER, r, w) == pytest.approx(-1.5 * math.pi * r * w, rel=1e-12)
+    a = np.linspace(1e-4, 1e-3, 7)
+    force, depth = lc.analytic.jkr_state(RUBBER, r, w, a)
+    # JKR (1971): F = 4 E* a^3 / (3 R) - sqrt(8 pi w E* a^3), d = a^2/R - sqrt(2 pi w a / E*).
+    np.testing.assert_allclose(force, 4 * E_STAR * a**3 / (3 * r) - np.sqrt(8 * math.pi * w * E_STAR * a**3), rtol=1e-12)
+    np.testing.assert_allclose(depth, a**2 / r - np.sqrt(2 * math.pi * w * a / E_STAR), rtol=1e-12)
+
+
+def test_flat_punch_stiffness():
+    a = np.array([1e-3, 2e-3])
+    half_space = lc.Substrate.half_space(RUBBER)
+    np.testing.assert_allclose(lc.analytic.flat_punch_stiffness(half_space, a), 2 * E_STAR * a, rtol=1e-12)
+    # A film on glass (nu = 0.48) at a = h: K / (2 E* a) = 3.36659, the exact
+    # axisymmetric value the Rust crate's tests pin to its published digits.
+    film_material = lc.Material(0.324e6, 0.48)
+    film = lc.Substrate.layer_on_rigid_base(film_material, 5e-3)
+    k = lc.analytic.flat_punch_stiffness(film, 5e-3)
+    assert k / (2 * film_material.contact_modulus * 5e-3) == pytest.approx(3.36659, abs=1e-5)
+
+
+def test_layered_pull_off_tends_to_jkr_on_a_thick_layer():
+    thick = lc.Substrate.layer_on_rigid_base(RUBBER, 1.0)
+    force = lc.analytic.paraboloid_pull_off_force(thick, 0.01, 0.05)
+    assert force == pytest.approx(-1.5 * math.pi * 0.01 * 0.05, rel=1e-3)
+
+
+def test_errors_carry_the_library_message():
+    with pytest.raises(lc.InvalidInputError, match=r"Poisson ratio must lie in \[0, 0.5\], got 0.7"):
+        lc.Material(1e6, 0.7)
+    with pytest.raises(lc.InvalidInputError, match="depth must be finite, got NaN"):
+        lc.analytic.hertz_force(RUBBER, 0.01, [1e-6, float("nan")])
+    assert issubclass(lc.InvalidInputError, lc.LayeredContactError)

@@ -1,0 +1,62 @@
+"""The solver from Python: arrays, shapes, Hertz, height maps, warm starts."""
+
+import math
+
+import numpy as np
+import pytest
+
+import layered_contact as lc
+
+RUBBER = lc.Material(1e6, 0.5)
+HALF_SPACE = lc.Substrate.half_space(RUBBER)
+
+
+def test_hertz_and_fields():
+    n, spacing, r, d = 64, 2e-5, 0.01, 1e-5
+    solver = lc.ContactSolver(HALF_SPACE, n, n + 8, spacing)
+    s = solver.solve_depth(lc.Indenter.paraboloid(r), d)
+    # 32 cells across the Hertz contact: force within 0.1 %.
+    assert s.force == pytest.approx(lc.analytic.hertz_force(RUBBER, r, d), rel=1e-3)
+    assert s.pressure.shape == (n, n + 8)
+    assert s.gap.shape == s.displacement.shape == (n, n + 8)
+    assert s.x.shape == (n,) and s.y.shape == (n + 8,)
+    assert s.x[0] == pytest.approx(-(n - 1) / 2 * spacing)
+    assert s.pressure.sum() * spacing**2 == pytest.approx(s.force, rel=1e-12)
+    # The gap is closed under pressure, to the solver tolerance (1e-8).
+    assert np.all(np.abs(s.gap[s.pressure > 0]) < 1e-8 * d)
+    assert np.all(s.gap[s.pressure == 0] >= -1e-8 * d)
+    assert s.contact_cells == int((s.pressure > 0).sum())
+
+
+def test_height_map_equals_its_shape():
+    n, spacing = 48, 2e-5
+    shape = lc.Indenter.paraboloid(0.01)
+    x = (np.arange(n) + 0.5 - n / 2) * spacing
+    xx, yy = np.meshgrid(x, x, indexing="ij")
+    heights = shape.height(xx, yy)
+    assert heights.shape == (n, n)
+    solver = lc.ContactSolver(HALF_SPACE, n, n, spacing)
+    direct = solver.solve_depth(shape, 8e-6)
+    mapped = solver.solve_depth(lc.Indenter.height_map(heights, spacing), 8e-6)
+    assert mapped.force == pytest.approx(direct.force, rel=1e-12)
+
+
+def test_force_control_and_warm_start():
+    solver = lc.ContactSolver(HALF_SPACE, 64, 64, 2e-5)
+    ball = lc.Indenter.sphere(0.01)
+    first = solver.solve_force(ball, 2e-3)
+    again = solver.solve_force(ball, 2e-3, warm_start=True)
+    assert first.force == pytest.approx(2e-3, rel=1e-9)
+    assert again.depth == pytest.approx(first.depth, rel=1e-7)
+    assert again.iterations < first.iterations
+
+
+def test_bad_inputs_raise():
+    with pytest.raises(lc.InvalidInputError, match="force"):
+        lc.ContactSolver(HALF_SPACE, 16, 16, 1e-5).solve_force(lc.Indenter.sphere(0.01), -1.0)
+    with pytest.raises(lc.InvalidInputError, match="heights"):
+        lc.Indenter.height_map(np.full((4, 4), np.nan), 1e-5)
+    with pytest.raises(lc.InvalidInputError):
+        lc.ContactSolver(HALF_SPACE, 0, 16, 1e-5)
+    with pytest.raises(TypeError):
+        lc.Indenter.height_map(np.zeros(5), 1e-5)
