@@ -34,9 +34,44 @@
 //! * Bad input is a typed [`Error`] at construction; no function panics or
 //!   returns NaN on valid input.
 //!
-//! See [`doc::conventions`] for the long form.
+//! See [`doc::conventions`] for the long form (grids, field arrays and their
+//! coordinates, names).
 //!
-//! # Example
+//! # Using it
+//!
+//! ```toml
+//! [dependencies]
+//! layered-contact = { git = "<this repository>" }
+//! # or, without the command-line tool's dependencies:
+//! # layered-contact = { git = "<this repository>", default-features = false, features = ["serde", "parallel"] }
+//! ```
+//!
+//! A sphere pressed into a rubber film on glass, by the boundary-element
+//! solver, checked against the exact axisymmetric solution:
+//!
+//! ```
+//! use layered_contact::analytic::Axisymmetric;
+//! use layered_contact::indenter::Paraboloid;
+//! use layered_contact::solver::{ContactSolver, SolverParams};
+//! use layered_contact::{Boundary, Grid, Material, Substrate};
+//!
+//! let film = Substrate::layer_on_rigid_base(Material::new(0.324e6, 0.48)?, 5e-3)?;
+//! // 128 x 128 cells of 50 um around the axis.
+//! let grid = Grid::new(128, 128, 50e-6)?;
+//! let mut solver = ContactSolver::new(&film, &grid, Boundary::Isolated, SolverParams::default())?;
+//! let ball = Paraboloid::new(0.05)?;
+//! let (solution, _) = solver.solve_depth(&ball, 0.1e-3, None, &mut ())?;
+//!
+//! let exact = Axisymmetric::new(&film, 1.0)?.paraboloid(0.05, 0.0)?.at_depth(0.1e-3)?.unwrap();
+//! assert!((solution.force / exact.force - 1.0).abs() < 0.01);
+//! Ok::<(), layered_contact::Error>(())
+//! ```
+//!
+//! Whole experiments (a loading cycle with adhesion, grid sized from the
+//! contact) are [`scene::Scene`]s; they also run from TOML files with the
+//! `layered-contact` command-line tool and from Python (`python/`).
+//!
+//! # Example: a closed form
 //!
 //! The stiffness of a 5 mm flat punch on a 5 mm rubber film on glass, from the
 //! series of Lyashenko, Popov & Borysiuk (2023):

@@ -6,7 +6,8 @@
 //!
 //! The surface normal displacement of the coated body under a unit normal
 //! point force has the Fourier (Hankel) transform `u_z(q) = 2 R(q h) / (E1* q)`,
-//! with (SPEC section 2; `G = mu1/mu2`, `G = 0` for a rigid base)
+//! with (Perriot & Barthel 2004, J. Mater. Res. 19, 600; Lyashenko, Popov &
+//! Borysiuk 2023, Lubricants 11, 84; `G = mu1/mu2`, `G = 0` for a rigid base)
 //!
 //! ```text
 //! R(t) = N(t) / D(t)
@@ -16,7 +17,7 @@
 //! ```
 //!
 //! and `Lambda_g(t) = 1 - R(t)`; for a rigid base `Lambda_g` is the `Lambda(u)`
-//! of SPEC section 3 (Lyashenko, Popov & Borysiuk 2023, Lubricants 11, 84).
+//! of Lyashenko, Popov & Borysiuk (2023).
 //!
 //! Written as above, `N` and `D` lose all digits to cancellation at small `t`
 //! (`R ~ 2t^3/3` for an incompressible layer on a rigid base, `D ~ 4t^4/3`
@@ -290,7 +291,7 @@ impl CoatingFunctions {
     }
 
     /// The functions of a layer with Poisson ratio `nu` on a rigid base; then
-    /// `Lambda_g` is the `Lambda(u)` of SPEC section 3.
+    /// `Lambda_g` is the `Lambda(u)` of Lyashenko, Popov & Borysiuk (2023).
     ///
     /// # Errors
     /// [`Error::InvalidPoissonRatio`] if `nu` is outside `[0, 0.5]`.
@@ -371,7 +372,7 @@ impl CoatingFunctions {
 
     /// `Lambda_g(t) = 1 - R(t)`, evaluated directly so that its exponentially
     /// small tail keeps its relative precision; for a rigid base it is the
-    /// `Lambda(u)` of SPEC section 3, with `Lambda(0) = 1`.
+    /// `Lambda(u)` of Lyashenko, Popov & Borysiuk (2023), with `Lambda(0) = 1`.
     pub fn lambda(&self, t: f64) -> f64 {
         let t = t.abs();
         if t > T_NEGLIGIBLE {

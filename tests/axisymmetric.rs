@@ -45,7 +45,7 @@ fn half_space_is_exact() {
     );
 }
 
-/// Against the series of SPEC section 3 (nu = 0.48): the difference shrinks
+/// Against the series of Lyashenko, Popov & Borysiuk (2023) (nu = 0.48): the difference shrinks
 /// like `eps^5` (ratio 2^5 = 32 per halving; measured 30 and 27), and is 4 %
 /// at `eps = 1`, as documented for the series.
 #[test]

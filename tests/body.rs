@@ -6,7 +6,7 @@ use layered_contact::substrate::{Base, CoatingFunctions};
 use layered_contact::{Error, Material, Substrate};
 use proptest::prelude::*;
 
-/// SPEC section 3, written exactly as printed. For a rigid base every term of
+/// Lyashenko, Popov & Borysiuk (2023), written exactly as printed. For a rigid base every term of
 /// numerator and denominator has the sign of `L < 0`, so this naive form has
 /// no cancellation and is an independent reference at full precision.
 fn lambda_spec(u: f64, nu: f64) -> f64 {
@@ -97,7 +97,7 @@ fn substrate_limits_reduce_exactly() {
     }
 }
 
-/// `Lambda` against the printed SPEC formula (see `lambda_spec`), relative
+/// `Lambda` against the printed formula of Lyashenko et al. (2023) (see `lambda_spec`), relative
 /// error below 4 ulp wherever the reference has not underflowed; exact
 /// `Lambda(0) = 1`; no NaN or overflow out to `u = 1e300`.
 #[test]
@@ -219,7 +219,7 @@ proptest! {
         prop_assert!(f.lambda(t).abs() <= bound);
     }
 
-    /// A base with `E2 = 1e100 E1` is the rigid base to 1e-9 (SPEC section 1).
+    /// A base with `E2 = 1e100 E1` is the rigid base to 1e-9 (the rigid-base limit).
     #[test]
     fn stiff_base_is_rigid_base(nu1 in nu_strategy(), nu2 in 0.0f64..=0.5, log_t in -8.0f64..3.0) {
         let layer = Material::new(1.0, nu1).unwrap();

@@ -6,7 +6,7 @@ use std::f64::consts::PI;
 use std::num::NonZeroUsize;
 
 use gauss_quad::legendre::GaussLegendre;
-use layered_contact::analytic::{Cone, FlatPunch, Hertz, JkrFlatPunch, JkrSphere};
+use layered_contact::analytic::{BoussinesqPunch, Hertz, JkrFlatPunch, JkrSphere, SneddonCone};
 use layered_contact::{Error, Material};
 
 fn rubber() -> Material {
@@ -61,7 +61,7 @@ fn hertz_force_is_integral_of_pressure() {
 /// (`r = a sin(theta)` again).
 #[test]
 fn flat_punch_pressure_integrates_to_force() {
-    let punch = FlatPunch::new(&rubber(), 2e-3).unwrap();
+    let punch = BoussinesqPunch::new(&rubber(), 2e-3).unwrap();
     let force = punch.force(1e-4);
     assert!((force - 2.0 * 2e-3 * rubber().contact_modulus() * 1e-4).abs() < 1e-15);
     let a = 2e-3;
@@ -154,7 +154,7 @@ fn jkr_sphere_extrema_and_energy_balance() {
 fn cone_force_is_integral_of_sneddon_pressure() {
     let material = Material::new(70e9, 0.17).unwrap();
     let half_angle = 70.3f64.to_radians();
-    let cone = Cone::new(&material, half_angle).unwrap();
+    let cone = SneddonCone::new(&material, half_angle).unwrap();
     let depth = 1e-7;
     let a = cone.contact_radius(depth);
     let amplitude = 0.5 * material.contact_modulus() / half_angle.tan();
@@ -186,11 +186,11 @@ fn closed_forms_reject_bad_input() {
         })
     ));
     assert!(matches!(
-        Cone::new(&m, 0.0),
+        SneddonCone::new(&m, 0.0),
         Err(Error::InvalidParameter {
             name: "half_angle",
             ..
         })
     ));
-    assert!(FlatPunch::new(&m, f64::INFINITY).is_err());
+    assert!(BoussinesqPunch::new(&m, f64::INFINITY).is_err());
 }

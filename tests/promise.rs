@@ -2,7 +2,9 @@
 //! answer. One test per finding of the hostile review (issue 12), each of
 //! which failed (hung, returned NaN or a wrong number) before its fix.
 
-use layered_contact::analytic::{Axisymmetric, Cone as ExactCone, Hertz, PunchStiffnessSeries};
+use layered_contact::analytic::{
+    Axisymmetric, Hertz, PunchStiffnessSeries, SneddonCone as ExactCone,
+};
 use layered_contact::indenter::{Cone, FlatPunch, HeightMap, Paraboloid, Sphere};
 use layered_contact::scene::{IndenterSpec, Protocol, Resolution, Scene};
 use layered_contact::solver::{ContactSolver, Fields, SolverParams};

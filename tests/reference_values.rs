@@ -86,7 +86,7 @@ fn crossing_of_1_2_at_h_5mm() {
         (found - expected_mm).abs() < 1e-6,
         "crossing at {found} mm, reference {expected_mm} mm"
     );
-    // SPEC: h/D = 3.2 there.
+    // The paper: h/D = 3.2 there.
     assert!((5.0 / found - 3.2).abs() < 0.01);
 }
 

@@ -16,9 +16,9 @@ use crate::material::Material;
 /// ```
 ///
 /// ```
-/// use layered_contact::{analytic::Cone, Material};
+/// use layered_contact::{analytic::SneddonCone, Material};
 ///
-/// let cone = Cone::new(&Material::new(1e9, 0.3)?, 70.3f64.to_radians())?;
+/// let cone = SneddonCone::new(&Material::new(1e9, 0.3)?, 70.3f64.to_radians())?;
 /// let d = 1e-6;
 /// let a = cone.contact_radius(d);
 /// let mean = cone.force(d) / (std::f64::consts::PI * a * a);
@@ -26,13 +26,13 @@ use crate::material::Material;
 /// Ok::<(), layered_contact::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Cone {
+pub struct SneddonCone {
     contact_modulus: f64,
     /// `cot(theta)`, the slope of the face.
     slope: f64,
 }
 
-impl Cone {
+impl SneddonCone {
     /// A cone of `half_angle` (radians, strictly between 0 and pi/2) on a
     /// half-space of `material`.
     ///
@@ -46,7 +46,7 @@ impl Cone {
                 expected: "in (0, pi/2) radians",
             });
         }
-        Ok(Cone {
+        Ok(SneddonCone {
             contact_modulus: material.contact_modulus(),
             slope: 1.0 / half_angle.tan(),
         })

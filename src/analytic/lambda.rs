@@ -1,7 +1,7 @@
 //! The kernel function `Lambda` of a layer and its moments `a_m`.
 //!
-//! For a layer (Poisson ratio `nu`, thickness `h`) on a rigid base, SPEC
-//! section 3 (after Lyashenko, Popov & Borysiuk 2023, Lubricants 11, 84):
+//! For a layer (Poisson ratio `nu`, thickness `h`) on a rigid base
+//! (Lyashenko, Popov & Borysiuk 2023, Lubricants 11, 84, section 2):
 //!
 //! ```text
 //! Lambda(u) = [2 L e^(-4u) - (L^2 + 1 + 4u + 4u^2) e^(-2u)]
@@ -20,8 +20,8 @@ use crate::error::{Error, Result};
 use crate::material::Material;
 use crate::substrate::{Base, CoatingFunctions};
 
-/// `Lambda(u)` for a layer with Poisson ratio `nu` on a rigid base (SPEC
-/// section 3). `Lambda(0) = 1`; it decays like `u^2 e^(-2u)` and is exactly 0
+/// `Lambda(u)` for a layer with Poisson ratio `nu` on a rigid base
+/// (Lyashenko, Popov & Borysiuk 2023). `Lambda(0) = 1`; it decays like `u^2 e^(-2u)` and is exactly 0
 /// beyond `u = 400`. For many evaluations build a [`CoatingFunctions`] once.
 ///
 /// ```
@@ -45,7 +45,7 @@ pub fn lambda(u: f64, nu: f64) -> Result<f64> {
 /// use layered_contact::{analytic::lambda_g, Base, Material};
 ///
 /// let layer = Material::new(1e6, 0.45)?;
-/// // On a rigid base it is Lambda of SPEC section 3:
+/// // On a rigid base it is the Lambda of a layer on a rigid base:
 /// let rigid = lambda_g(0.7, &layer, &Base::Rigid);
 /// assert!((rigid - layered_contact::analytic::lambda(0.7, 0.45)?).abs() < 1e-16);
 /// // On a base of the same material it vanishes:
@@ -64,7 +64,8 @@ const PANEL_WIDTH: f64 = 1.0;
 const PANEL_ORDER: usize = 24;
 
 /// The moment `a_m = (-1)^m / (2^(2m) (m!)^2) * Integral_0^inf Lambda(u) u^(2m) du`
-/// of SPEC section 3, for a layer with Poisson ratio `nu` on a rigid base.
+/// of Lyashenko, Popov & Borysiuk (2023), for a layer with Poisson ratio `nu`
+/// on a rigid base.
 ///
 /// Computed by composite 24-point Gauss-Legendre quadrature on unit panels,
 /// continued past the peak of the integrand until a panel adds less than

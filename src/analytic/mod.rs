@@ -3,14 +3,22 @@
 //!
 //! | group | what | source |
 //! |---|---|---|
-//! | [`lambda`](mod@lambda) | `Lambda(u)`, `Lambda_g(t)`, the moments `a_m` | SPEC sections 2-3 |
+//! | [`lambda`](mod@lambda) | `Lambda(u)`, `Lambda_g(t)`, the moments `a_m` | Perriot & Barthel (2004); Lyashenko, Popov & Borysiuk (2023) |
 //! | [`series`] | flat punch on a layer over a rigid base, Eq. (5) | Lyashenko, Popov & Borysiuk (2023) |
-//! | [`FlatPunch`], [`JkrFlatPunch`] | flat punch on a half-space, with Kendall adhesion | Boussinesq (1885); Kendall (1971) |
+//! | [`BoussinesqPunch`], [`JkrFlatPunch`] | flat punch on a half-space, with Kendall adhesion | Boussinesq (1885); Kendall (1971) |
 //! | [`Hertz`] | sphere (paraboloid) on a half-space | Hertz (1882); Johnson (1985) |
 //! | [`JkrSphere`] | adhesive sphere on a half-space | Johnson, Kendall & Roberts (1971) |
-//! | [`Cone`] | conical punch on a half-space | Sneddon (1965) |
+//! | [`SneddonCone`] | conical punch on a half-space | Sneddon (1965) |
 //! | [`Axisymmetric`] | exact flat punch and paraboloid (JKR) on a coated half-space, by contact radius, depth or force | Fredholm equation, [`doc::axisymmetric`](crate::doc::axisymmetric) |
 //! | [`LayeredJkrCycle`] | exact loading and unloading of a paraboloid with adhesion hysteresis | Johnson, Kendall & Roberts (1971); Maugis (2000) |
+//!
+//! The half-space solutions of the punch and the cone carry their authors'
+//! names ([`BoussinesqPunch`], [`SneddonCone`]) so that they are not
+//! confused with the indenter shapes [`indenter::FlatPunch`] and
+//! [`indenter::Cone`] that the solver presses.
+//!
+//! [`indenter::FlatPunch`]: crate::indenter::FlatPunch
+//! [`indenter::Cone`]: crate::indenter::Cone
 //!
 //! Every type here is built by a validating constructor (a typed
 //! [`Error`](crate::Error) for bad input) and then evaluated by infallible
@@ -28,12 +36,12 @@ mod layered_jkr;
 mod punch;
 
 pub use axisymmetric::{Axisymmetric, ContactState, LayeredFlatPunch, LayeredParaboloid, PullOff};
-pub use cone::Cone;
+pub use cone::SneddonCone;
 pub use hertz::Hertz;
 pub use jkr::JkrSphere;
 pub use lambda::{a_m, lambda, lambda_g};
 pub use layered_jkr::LayeredJkrCycle;
-pub use punch::{FlatPunch, JkrFlatPunch};
+pub use punch::{BoussinesqPunch, JkrFlatPunch};
 pub use series::{PunchStiffnessSeries, SeriesStiffness};
 
 /// `x` clamped at zero from below, with NaN kept NaN (`f64::max` would turn

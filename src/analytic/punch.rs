@@ -15,27 +15,27 @@ use crate::material::Material;
 /// ```
 ///
 /// ```
-/// use layered_contact::{analytic::FlatPunch, Material};
+/// use layered_contact::{analytic::BoussinesqPunch, Material};
 ///
-/// let punch = FlatPunch::new(&Material::new(1e6, 0.5)?, 1e-3)?;
+/// let punch = BoussinesqPunch::new(&Material::new(1e6, 0.5)?, 1e-3)?;
 /// assert!((punch.stiffness() - 2.0 * 1e-3 * 1e6 / 0.75).abs() < 1e-9);
 /// assert_eq!(punch.force(-1e-4), 0.0); // not in contact
 /// Ok::<(), layered_contact::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FlatPunch {
+pub struct BoussinesqPunch {
     contact_modulus: f64,
     radius: f64,
 }
 
-impl FlatPunch {
+impl BoussinesqPunch {
     /// A punch of `radius` (m) on a half-space of `material`.
     ///
     /// # Errors
     /// [`Error::InvalidParameter`](crate::Error::InvalidParameter) if `radius`
     /// is not positive and finite.
     pub fn new(material: &Material, radius: f64) -> Result<Self> {
-        Ok(FlatPunch {
+        Ok(BoussinesqPunch {
             contact_modulus: material.contact_modulus(),
             radius: positive_finite("radius", radius)?,
         })
@@ -94,7 +94,7 @@ impl FlatPunch {
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct JkrFlatPunch {
-    punch: FlatPunch,
+    punch: BoussinesqPunch,
     work_of_adhesion: f64,
 }
 
@@ -108,7 +108,7 @@ impl JkrFlatPunch {
     /// finite.
     pub fn new(material: &Material, radius: f64, work_of_adhesion: f64) -> Result<Self> {
         Ok(JkrFlatPunch {
-            punch: FlatPunch::new(material, radius)?,
+            punch: BoussinesqPunch::new(material, radius)?,
             work_of_adhesion: non_negative_finite("work_of_adhesion", work_of_adhesion)?,
         })
     }

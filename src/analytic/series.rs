@@ -1,8 +1,8 @@
 //! The stiffness series of a flat cylindrical punch on a layer bonded to a
 //! rigid base.
 //!
-//! With `eps = a/h` (punch radius over layer thickness), SPEC section 3 (Eq. 5
-//! of Lyashenko, Popov & Borysiuk 2023, Lubricants 11, 84):
+//! With `eps = a/h` (punch radius over layer thickness), Eq. 5 of Lyashenko,
+//! Popov & Borysiuk (2023, Lubricants 11, 84):
 //!
 //! ```text
 //! K / (2 a E*) = 1 + (2 eps a0/pi)(1 + 2 eps a0/pi) + (8 eps^3/pi)(a0^3/pi^2 + a1/3)

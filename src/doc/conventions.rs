@@ -36,6 +36,32 @@
 //! [`Substrate`](crate::Substrate) constructors return
 //! [`Substrate::HalfSpace`](crate::Substrate::HalfSpace) for these limits.
 //!
+//! ## Grids and fields
+//!
+//! A [`Grid`](crate::Grid) of `rows x columns` square cells of side `Delta`
+//! is centred on the indenter's axis: cell `(i, j)` has its centre at
+//! `x = (i + 1/2 - rows/2) Delta`, `y = (j + 1/2 - columns/2) Delta`. Every
+//! field ([`Solution::pressure`](crate::solver::Solution::pressure),
+//! `displacement`, `gap`, a [`HeightMap`](crate::indenter::HeightMap)'s
+//! heights) is an array of `rows x columns` values, `[i, j]` at that centre,
+//! stored row-major; the command-line tool writes them as `.npy` beside
+//! `x.npy` and `y.npy`, and the Python package returns them with `x` and `y`.
+//!
+//! An indenter's height `f(x, y)` is measured from its lowest point,
+//! positive away from the body; the gap at depth `d` is
+//! `g = f - d + u_z >= 0`.
+//!
+//! ## Names
+//!
+//! Indenter shapes live in [`indenter`](crate::indenter)
+//! ([`FlatPunch`](crate::indenter::FlatPunch),
+//! [`Cone`](crate::indenter::Cone), ...); the closed-form solutions for them
+//! on a half-space carry their authors' names in
+//! [`analytic`](crate::analytic)
+//! ([`BoussinesqPunch`](crate::analytic::BoussinesqPunch),
+//! [`SneddonCone`](crate::analytic::SneddonCone),
+//! [`Hertz`](crate::analytic::Hertz), [`JkrSphere`](crate::analytic::JkrSphere)).
+//!
 //! ## Errors
 //!
 //! Constructors validate their input and return a typed

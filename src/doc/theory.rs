@@ -4,7 +4,8 @@
 //!
 //! A unit normal point force on the surface of a layer (`E1`, `nu1`,
 //! thickness `h`) bonded to a base (`E2`, `nu2`, or rigid) displaces the
-//! surface by `u_z(q) = 2 R(q h) / (E1* q)` in Fourier space (SPEC section 2),
+//! surface by `u_z(q) = 2 R(q h) / (E1* q)` in Fourier space (Perriot & Barthel
+//! 2004, J. Mater. Res. 19, 600; Lyashenko, Popov & Borysiuk 2023),
 //! with the coating factor `R(t)` evaluated by
 //! [`CoatingFunctions`](crate::substrate::CoatingFunctions) in a
 //! cancellation-free form. Checked facts: `R = 1` for equal materials,

@@ -3,7 +3,7 @@
 //! An indenter is a rigid surface given by its height `f(x, y)` above its
 //! lowest point (on its axis, at `x = y = 0`), measured towards the body's
 //! outside. At depth `d` the gap between the indenter and the deformed
-//! surface is `g = f - d + u_z` (SPEC sign conventions). A point the
+//! surface is `g = f - d + u_z` (see [`doc::conventions`](crate::doc::conventions)). A point the
 //! indenter can never reach (outside a punch's face, beyond a sphere's
 //! equator) has height `+inf`.
 //!

@@ -4,8 +4,8 @@ use crate::substrate::{CoatingFunctions, Substrate};
 
 /// The surface normal displacement, in Fourier space, due to a unit normal
 /// point force: `u_z(q) = 2 / (E* q)` on a half-space and
-/// `u_z(q) = 2 R(q h) / (E1* q)` on a coated half-space (SPEC section 2, with
-/// `R` from [`CoatingFunctions`]). Units m/N times m^2, i.e. m^3/N.
+/// `u_z(q) = 2 R(q h) / (E1* q)` on a coated half-space (Perriot & Barthel 2004,
+/// J. Mater. Res. 19, 600; `R` from [`CoatingFunctions`]). Units m/N times m^2, i.e. m^3/N.
 ///
 /// At `q = 0` it is `+inf` on a half-space and on a layer over an elastic
 /// base, and the finite uniaxial-strain compliance

@@ -3,7 +3,7 @@
 //!
 //! With `Lambda_g(t) = 1 - R(t)` and `Lambda0 = Lambda_g(0) = 1 - E1*/E2*`
 //! (1 on a rigid base), the surface displacement due to a unit point force at
-//! distance `r` is the Hankel transform of `u_z(q)` (SPEC section 2):
+//! distance `r` is the Hankel transform of `u_z(q)` (Perriot & Barthel 2004):
 //!
 //! ```text
 //! w(r) = 1/(pi E1*) [ 1/r - Lambda0 / sqrt(r^2 + h^2) - g(r/h) / h ],

@@ -1,8 +1,8 @@
 //! Accuracy on demand: Richardson extrapolation over grid refinement, and
 //! scenes run until a quantity has converged to a requested accuracy.
 //!
-//! The BEM converges like `1/N` (`N` cells across the contact; SPEC
-//! section 2). Two resolutions `N1 < N2` with values `v1`, `v2` give the
+//! The BEM converges like `1/N` (`N` cells across the contact: the error of
+//! the staircase contact edge, measured in [`doc::accuracy`](crate::doc::accuracy)). Two resolutions `N1 < N2` with values `v1`, `v2` give the
 //! extrapolated value `v2 + (v2 - v1) / ((N2/N1)^p - 1)` (order `p = 1`) and
 //! the error estimate `|v2 - v1| / ((N2/N1)^p - 1)` for `v2`.
 

@@ -16,7 +16,8 @@ const REACH_FACTOR: f64 = 4.0;
 impl ContactSolver {
     /// Adhesive contact at `depth` (m) with one work of adhesion
     /// `work_of_adhesion` (J/m^2) for advancing and receding contact: the
-    /// JKR limit of SPEC section 2. See
+    /// JKR limit (Johnson, Kendall & Roberts 1971; the cell criterion of Pohrt
+    /// & Popov 2015). See
     /// [`solve_depth_hysteretic`](Self::solve_depth_hysteretic).
     ///
     /// # Errors
@@ -144,7 +145,7 @@ impl ContactSolver {
             }
             // Only cells connected to the boundary of the contact through
             // cells over the critical stress detach: the criterion stands for a
-            // crack at the contact edge (SPEC section 2); tension inside the
+            // crack at the contact edge (Pohrt & Popov 2015); tension inside the
             // contact never nucleates one in the JKR limit.
             let detach = edge_connected(&attached, columns, |c| pressure[c] < -sigma_c);
             let ws = &self.workspace;

@@ -124,11 +124,14 @@ pub struct Solution {
     pub coarse_iterations: usize,
     /// Final residual.
     pub residual: f64,
-    /// Cell pressures, if asked for in [`Fields`].
+    /// Cell pressures (Pa), if asked for in [`Fields`]: `rows x columns`,
+    /// `[i, j]` at the cell centre `x = (i + 1/2 - rows/2) Delta`,
+    /// `y = (j + 1/2 - columns/2) Delta` from the indenter's axis.
     pub pressure: Option<Array2<f64>>,
-    /// Surface displacements, if asked for.
+    /// Surface displacements (m, into the body) at the same cell centres,
+    /// if asked for.
     pub displacement: Option<Array2<f64>>,
-    /// Gaps, if asked for.
+    /// Gaps (m) at the same cell centres, if asked for.
     pub gap: Option<Array2<f64>>,
 }
 
