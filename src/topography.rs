@@ -97,7 +97,8 @@ impl SelfAffine {
         let (q_r, q_s) = (2.0 * PI / self.long_cutoff, 2.0 * PI / self.short_cutoff);
         let exponent = -(1.0 + self.hurst); // of the amplitude, sqrt(C)
         let mut rng = ChaCha8Rng::seed_from_u64(self.seed);
-        let mut spectrum = vec![num_complex::Complex::<f64>::default(); n0 * half];
+        let mut spectrum: Vec<num_complex::Complex<f64>> =
+            crate::error::zeroed(n0 * half, "rough-surface spectrum")?;
         for kx in 0..n0 {
             let qx = wavenumber(kx, n0, delta);
             for ky in 0..half {
@@ -170,7 +171,7 @@ impl SelfAffine {
             }
         }
         let rows = RealFftPlanner::<f64>::new().plan_fft_inverse(n1);
-        let mut heights = vec![0.0; n0 * n1];
+        let mut heights: Vec<f64> = crate::error::zeroed(n0 * n1, "rough-surface heights")?;
         for (row, out) in spectrum
             .chunks_exact_mut(half)
             .zip(heights.chunks_exact_mut(n1))

@@ -152,7 +152,7 @@ pub enum IndenterSpec {
         short_cutoff: f64,
         /// Seed of the random numbers.
         seed: u64,
-        /// Cells along each side, 2 to 65536.
+        /// Cells along each side, 2 to 16384.
         cells: usize,
         /// Cell side, m.
         spacing: f64,
@@ -217,8 +217,9 @@ impl Indenter for CustomIndenter {
     }
 }
 
-/// The widest synthesised rough surface, in cells along a side.
-const MAX_ROUGH_CELLS: usize = 65536;
+/// The widest synthesised rough surface, in cells along a side (the widest
+/// grid a scene builds).
+const MAX_ROUGH_CELLS: usize = 16384;
 
 /// A small tilt of the indenter, radians (see [`Tilted`]).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -311,7 +312,7 @@ impl IndenterSpec {
             return Err(Error::InvalidParameter {
                 name: "cells",
                 value: cells as f64,
-                expected: "between 2 and 65536 cells along a side",
+                expected: "between 2 and 16384 cells along a side",
             });
         }
         let grid = Grid::new(cells, cells, spacing)?;
