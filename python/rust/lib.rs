@@ -686,6 +686,18 @@ fn finite(name: &'static str, value: f64) -> lc::Result<f64> {
     }
 }
 
+fn non_negative(name: &'static str, value: f64) -> lc::Result<f64> {
+    if value >= 0.0 && value.is_finite() {
+        Ok(value)
+    } else {
+        Err(lc::Error::InvalidParameter {
+            name,
+            value,
+            expected: "non-negative and finite",
+        })
+    }
+}
+
 /// Hertz: force (N) of a paraboloid of tip radius `radius` pressed `depth`
 /// (m) into a half-space of `material`.
 #[pyfunction]
@@ -726,17 +738,7 @@ fn jkr_state<'py>(
     contact_radius: PyReadonlyArrayDyn<'py, f64>,
 ) -> PyResult<(Array<'py>, Array<'py>)> {
     let jkr = lc::analytic::JkrSphere::new(&material.inner, radius, work_of_adhesion).py_err()?;
-    let check = |a: f64| {
-        if a >= 0.0 && a.is_finite() {
-            Ok(a)
-        } else {
-            Err(lc::Error::InvalidParameter {
-                name: "contact_radius",
-                value: a,
-                expected: "non-negative and finite",
-            })
-        }
-    };
+    let check = |a: f64| non_negative("contact_radius", a);
     let force = map(py, contact_radius.clone(), |a| Ok(jkr.force(check(a)?)))?;
     let depth = map(py, contact_radius, |a| Ok(jkr.depth(check(a)?)))?;
     Ok((force, depth))
@@ -810,6 +812,65 @@ fn paraboloid_pull_off_force(
     .py_err()
 }
 
+/// The exact solutions on `substrate` for contact radii up to `largest` (m).
+fn exact_up_to(substrate: &lc::Substrate, largest: f64) -> lc::Result<lc::analytic::Axisymmetric> {
+    let eps = match substrate {
+        lc::Substrate::Coated(c) => largest / c.thickness(),
+        _ => 1.0,
+    };
+    lc::analytic::Axisymmetric::new(substrate, eps)
+}
+
+/// Exact `(force, depth)` (N, m) of a paraboloid of tip radius `radius` (m)
+/// on `substrate` with work of adhesion `work_of_adhesion` (J/m^2, 0 for
+/// none) at contact radius `contact_radius` (m): the JKR equilibrium on the
+/// coated body.
+#[pyfunction]
+fn paraboloid_state<'py>(
+    py: Python<'py>,
+    substrate: &Substrate,
+    radius: f64,
+    work_of_adhesion: f64,
+    contact_radius: PyReadonlyArrayDyn<'py, f64>,
+) -> PyResult<(Array<'py>, Array<'py>)> {
+    let radii: Vec<f64> = contact_radius.as_array().iter().copied().collect();
+    let largest = radii.iter().copied().fold(0.0f64, f64::max);
+    let substrate = substrate.inner;
+    let states = py
+        .detach(|| -> lc::Result<Vec<(f64, f64)>> {
+            let exact = exact_up_to(&substrate, largest)?;
+            let ball = exact.paraboloid(radius, work_of_adhesion)?;
+            radii
+                .iter()
+                .map(|&a| ball.at_contact_radius(a).map(|s| (s.force, s.depth)))
+                .collect()
+        })
+        .py_err()?;
+    let shape = contact_radius.shape().to_vec();
+    let force = PyArray1::from_vec(py, states.iter().map(|s| s.0).collect());
+    let depth = PyArray1::from_vec(py, states.iter().map(|s| s.1).collect());
+    Ok((force.reshape(shape.clone())?, depth.reshape(shape)?))
+}
+
+/// Exact pull-off force (N) of a bonded flat punch of radius `radius` (m) on
+/// `substrate` with work of adhesion `work_of_adhesion` (J/m^2): Kendall's on
+/// a half-space.
+#[pyfunction]
+fn flat_punch_pull_off_force(
+    py: Python<'_>,
+    substrate: &Substrate,
+    radius: f64,
+    work_of_adhesion: f64,
+) -> PyResult<f64> {
+    let substrate = substrate.inner;
+    py.detach(|| {
+        let punch = exact_up_to(&substrate, radius)?.flat_punch(radius)?;
+        non_negative("work_of_adhesion", work_of_adhesion)?;
+        Ok(punch.pull_off_force(work_of_adhesion))
+    })
+    .py_err()
+}
+
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
@@ -831,5 +892,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(jkr_pull_off_force, m)?)?;
     m.add_function(wrap_pyfunction!(flat_punch_stiffness, m)?)?;
     m.add_function(wrap_pyfunction!(paraboloid_pull_off_force, m)?)?;
+    m.add_function(wrap_pyfunction!(paraboloid_state, m)?)?;
+    m.add_function(wrap_pyfunction!(flat_punch_pull_off_force, m)?)?;
     Ok(())
 }

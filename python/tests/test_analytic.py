@@ -59,3 +59,27 @@ def test_errors_carry_the_library_message():
     with pytest.raises(lc.InvalidInputError, match="depth must be finite, got NaN"):
         lc.analytic.hertz_force(RUBBER, 0.01, [1e-6, float("nan")])
     assert issubclass(lc.InvalidInputError, lc.LayeredContactError)
+
+
+def test_exact_paraboloid_and_punch_on_a_half_space_are_jkr_and_kendall():
+    half_space = lc.Substrate.half_space(RUBBER)
+    a = np.array([1e-4, 3e-4, 1e-3])
+    force, depth = lc.analytic.paraboloid_state(half_space, 0.01, 0.05, a)
+    jkr_force, jkr_depth = lc.analytic.jkr_state(RUBBER, 0.01, 0.05, a)
+    np.testing.assert_allclose(force, jkr_force, rtol=1e-9)
+    np.testing.assert_allclose(depth, jkr_depth, rtol=1e-9)
+    kendall = -math.sqrt(8 * math.pi * 1e-3**3 * E_STAR * 0.05)
+    assert lc.analytic.flat_punch_pull_off_force(half_space, 1e-3, 0.05) == pytest.approx(kendall, rel=1e-9)
+    with pytest.raises(lc.InvalidInputError, match="work_of_adhesion"):
+        lc.analytic.flat_punch_pull_off_force(half_space, 1e-3, float("nan"))
+
+
+def test_exact_paraboloid_on_a_film_is_stiffer_than_hertz():
+    film = lc.Substrate.layer_on_rigid_base(lc.Material(0.324e6, 0.48), 5e-3)
+    a = np.array([1e-4, 3e-3])
+    force, depth = lc.analytic.paraboloid_state(film, 0.05, 0.0, a)
+    # Without adhesion the depth is Hertz's a^2/R for a << h: the film's
+    # correction is first order in a/h (14 % at a/h = 0.2, 1.4 % at 0.02).
+    assert depth[0] == pytest.approx(1e-8 / 0.05, rel=0.03)
+    hertz = lc.analytic.hertz_force(lc.Material(0.324e6, 0.48), 0.05, depth)
+    assert np.all(force > hertz)

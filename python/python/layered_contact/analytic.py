@@ -18,12 +18,14 @@ from ._native import Material, Substrate
 ArrayLike = Union[float, "np.typing.ArrayLike"]
 
 __all__ = [
+    "flat_punch_pull_off_force",
     "flat_punch_stiffness",
     "hertz_contact_radius",
     "hertz_force",
     "jkr_pull_off_force",
     "jkr_state",
     "paraboloid_pull_off_force",
+    "paraboloid_state",
 ]
 
 
@@ -73,3 +75,21 @@ def paraboloid_pull_off_force(
     """Exact load-controlled pull-off force (N) of a paraboloid of tip radius
     ``radius`` (m) on ``substrate`` (JKR's on a half-space)."""
     return _native.paraboloid_pull_off_force(substrate, radius, work_of_adhesion)
+
+
+def paraboloid_state(
+    substrate: Substrate, radius: float, work_of_adhesion: float, contact_radius: ArrayLike
+) -> Tuple[Any, Any]:
+    """Exact ``(force, depth)`` (N, m) of a paraboloid of tip radius
+    ``radius`` (m) on ``substrate`` at ``contact_radius`` (m), with work of
+    adhesion ``work_of_adhesion`` (J/m^2, 0 for none): Hertz and JKR on a
+    half-space, their exact counterparts on a coated body."""
+    force, depth = _native.paraboloid_state(substrate, radius, work_of_adhesion, _array(contact_radius))
+    return _out(force, contact_radius), _out(depth, contact_radius)
+
+
+def flat_punch_pull_off_force(substrate: Substrate, radius: float, work_of_adhesion: float) -> float:
+    """Exact pull-off force (N) of a bonded flat punch of radius ``radius``
+    (m) on ``substrate`` (Kendall's ``-sqrt(8 pi a^3 E* w)`` on a
+    half-space)."""
+    return _native.flat_punch_pull_off_force(substrate, radius, work_of_adhesion)
