@@ -138,6 +138,14 @@ pub enum Error {
         /// What went wrong (with the line for text files).
         detail: String,
     },
+    /// A scene file (or text) could not be read or parsed.
+    #[error("{source_name}: {detail}")]
+    SceneFile {
+        /// The file, or `TOML text` / `JSON text`.
+        source_name: String,
+        /// What went wrong, with the line, column and key where known.
+        detail: String,
+    },
     /// An iterative method stopped before reaching its tolerance.
     #[error("{method} did not converge after {iterations} iterations (residual {residual:e})")]
     NoConvergence {

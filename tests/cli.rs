@@ -62,8 +62,12 @@ fn a_typo_names_line_and_key() {
         let out = tool(&[command, "typo.toml"], &dir);
         assert_eq!(out.status.code(), Some(1));
         let message = text(&out.stderr);
-        assert!(message.starts_with("error: typo.toml: TOML parse error at line 7"));
-        assert!(message.contains("unknown field `radus`, expected `radius`"));
+        assert!(
+            message.starts_with(
+                "error: typo.toml: line 9, key `radus`: unknown field `radus`, expected `radius`"
+            ),
+            "{message}"
+        );
         assert!(!message.contains("panicked"));
     }
     // A library error reads as its message, with the value and the range.

@@ -45,6 +45,13 @@ fn seeds() -> Vec<(bool, String)> {
              [protocol]\nkind = \"force\"\nforce = 1e-3\n[tilt]\nangle_y = 1e-3\n\
              [solver]\nadhesion_method = \"mesh_criterion\"\n",
         ),
+        toml(
+            "boundary = \"periodic\"\n[substrate]\nkind = \"layer_on_rigid_base\"\n\
+             youngs_modulus = 1e6\npoisson_ratio = 0.5\nthickness = 1e-4\n\
+             [indenter]\nkind = \"rough_surface\"\nhurst = 0.8\namplitude = { rms_slope = 0.1 }\n\
+             long_cutoff = 32e-6\nshort_cutoff = 4e-6\nseed = 3\ncells = 32\nspacing = 1e-6\n\
+             [protocol]\nkind = \"force\"\nforce = 1e-4\n",
+        ),
     ]
 }
 
@@ -170,9 +177,9 @@ fn number_spans(text: &str) -> Vec<(usize, usize)> {
 /// Parses, validates and runs one scene text. Returns whether it ran.
 fn exercise(toml_text: bool, text: String) -> bool {
     let parsed: Option<Scene> = if toml_text {
-        toml::from_str(&text).ok()
+        Scene::from_toml(&text).ok()
     } else {
-        serde_json::from_str(&text).ok()
+        Scene::from_json(&text).ok()
     };
     let Some(mut scene) = parsed else {
         return false;
@@ -213,7 +220,7 @@ proptest! {
     /// Mutated scene files: a curve with finite numbers or a typed error.
     #[test]
     fn mutated_scene_files(
-        seed in 0usize..4,
+        seed in 0usize..5,
         mutations in proptest::collection::vec((any::<u8>(), any::<usize>(), any::<usize>()), 1..4),
     ) {
         let (toml_text, mut text) = seeds().swap_remove(seed);
@@ -231,12 +238,12 @@ proptest! {
 fn mutations_reach_parse_errors_validation_errors_and_runs() {
     let (mut parse_errors, mut invalid, mut valid) = (0, 0, 0);
     for k in 0..60usize {
-        let (toml_text, text) = seeds().swap_remove(k % 4);
-        let text = mutate(&text, (k / 4) as u8, k * 7919, k * 104_729);
+        let (toml_text, text) = seeds().swap_remove(k % 5);
+        let text = mutate(&text, (k / 5) as u8, k * 7919, k * 104_729);
         let parsed: Option<Scene> = if toml_text {
-            toml::from_str(&text).ok()
+            Scene::from_toml(&text).ok()
         } else {
-            serde_json::from_str(&text).ok()
+            Scene::from_json(&text).ok()
         };
         match parsed {
             None => parse_errors += 1,

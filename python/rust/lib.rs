@@ -49,7 +49,8 @@ fn to_py(error: lc::Error) -> PyErr {
         | lc::Error::InvalidGrid { .. }
         | lc::Error::ShapeMismatch { .. }
         | lc::Error::IndenterOutsideGrid { .. }
-        | lc::Error::HeightMapFile { .. } => InvalidInputError::new_err(message),
+        | lc::Error::HeightMapFile { .. }
+        | lc::Error::SceneFile { .. } => InvalidInputError::new_err(message),
         _ => LayeredContactError::new_err(message),
     }
 }
@@ -477,28 +478,12 @@ fn read_scene(py: Python<'_>, scene: &Bound<'_, PyAny>) -> PyResult<lc::scene::S
             .import("json")?
             .call_method1("dumps", (dict,))?
             .extract()?;
-        return serde_json::from_str(&json)
-            .map_err(|e| InvalidInputError::new_err(format!("scene: {e}")));
+        return lc::scene::Scene::from_json(&json).py_err();
     }
     let path: PathBuf = scene.extract().map_err(|_| {
         InvalidInputError::new_err("a scene is a dict or the path of a TOML or JSON file")
     })?;
-    let text = std::fs::read_to_string(&path)
-        .map_err(|e| InvalidInputError::new_err(format!("cannot read {}: {e}", path.display())))?;
-    let json = path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("json"));
-    let parsed: Result<lc::scene::Scene, String> = if json {
-        serde_json::from_str(&text).map_err(|e| e.to_string())
-    } else {
-        toml::from_str(&text).map_err(|e| e.to_string())
-    };
-    let mut scene =
-        parsed.map_err(|e| InvalidInputError::new_err(format!("{}: {e}", path.display())))?;
-    if let Some(folder) = path.parent() {
-        scene.resolve_paths(folder);
-    }
-    Ok(scene)
+    lc::scene::Scene::read(path).py_err()
 }
 
 /// A step as a dict.

@@ -49,6 +49,16 @@ def test_custom_indenter_in_a_scene():
     assert curve.force[0] == pytest.approx(reference.force[0], rel=0.02)
 
 
+def test_file_errors_name_line_and_key(tmp_path):
+    path = tmp_path / "typo.toml"
+    path.write_text('[substrate]\nkind = "half_space"\nyoungs_modulus = 1e6\npoisson_ratio = 0.5\n'
+                    '[indenter]\nkind = "sphere"\nradus = 0.01\n[protocol]\nkind = "depth"\ndepth = 1e-5\n')
+    with pytest.raises(lc.InvalidInputError, match=r"typo.toml: line 7, key `radus`: unknown field `radus`"):
+        lc.run_scene(path)
+    with pytest.raises(lc.InvalidInputError, match="No such file"):
+        lc.check_scene(tmp_path / "missing.toml")
+
+
 def test_errors():
     typo = dict(PUNCH, indenter={"kind": "flat_punch", "radus": 1e-3})
     with pytest.raises(lc.InvalidInputError, match="unknown field `radus`, expected `radius`"):

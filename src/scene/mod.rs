@@ -37,6 +37,8 @@
 mod accuracy;
 mod curve;
 mod energy;
+#[cfg(feature = "serde")]
+mod file;
 mod reference;
 mod runner;
 mod sizing;

@@ -13,7 +13,6 @@
 mod output;
 mod paper;
 mod progress;
-mod scene_file;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -80,9 +79,9 @@ fn main() -> ExitCode {
 
 fn dispatch(command: Command) -> Result<()> {
     match command {
-        Command::Run { scene, out } => run(&scene_file::read(&scene)?, &out),
-        Command::Check { scene } => check(&scene_file::read(&scene)?),
-        Command::Reference { scene } => reference(&scene_file::read(&scene)?),
+        Command::Run { scene, out } => run(&Scene::read(&scene)?, &out),
+        Command::Check { scene } => check(&Scene::read(&scene)?),
+        Command::Reference { scene } => reference(&Scene::read(&scene)?),
         Command::Paper { out, fine } => paper::run(&out, fine),
     }
 }
