@@ -157,7 +157,7 @@ impl Scene {
         if let Some(grid) = self.indenter.map_grid()? {
             return Ok(grid);
         }
-        self.validate()?;
+        self.indenter.build(self.tilt)?;
         let n = self.resolution.cells_across;
         if let IndenterSpec::FlatPunch { radius } = self.indenter {
             let cells = fft_friendly(n + 2);
