@@ -101,6 +101,24 @@ impl Grid {
         self.spacing * self.spacing
     }
 
+    /// The centre `(x, y)` (m) of cell `(i, j)`, the axis at the grid's
+    /// centre: `x = (i + 1/2) Delta - rows Delta / 2`,
+    /// `y = (j + 1/2) Delta - columns Delta / 2`. Field arrays hold the
+    /// value of cell `(i, j)` at `[i, j]`.
+    ///
+    /// ```
+    /// let grid = layered_contact::Grid::new(4, 2, 1e-3)?;
+    /// assert_eq!(grid.cell_centre(0, 1), (-1.5e-3, 0.5e-3));
+    /// Ok::<(), layered_contact::Error>(())
+    /// ```
+    pub fn cell_centre(&self, i: usize, j: usize) -> (f64, f64) {
+        let (lx, ly) = self.extent();
+        (
+            (i as f64 + 0.5) * self.spacing - 0.5 * lx,
+            (j as f64 + 0.5) * self.spacing - 0.5 * ly,
+        )
+    }
+
     /// The size of the gridded region `(rows Delta, columns Delta)`, m.
     pub fn extent(&self) -> (f64, f64) {
         (

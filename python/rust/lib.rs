@@ -280,12 +280,13 @@ impl Indenter {
     }
 }
 
-/// The cell centres along an axis of `n` cells: `(k + 1/2 - n/2) spacing`.
-fn centres(py: Python<'_>, n: usize, spacing: f64) -> Py<PyAny> {
-    let values: Vec<f64> = (0..n)
-        .map(|k| (k as f64 + 0.5 - 0.5 * n as f64) * spacing)
+/// The cell centres of `grid` along its rows (`x`) and columns (`y`), m.
+fn centres(py: Python<'_>, grid: &lc::Grid) -> (Py<PyAny>, Py<PyAny>) {
+    let x = (0..grid.rows()).map(|i| grid.cell_centre(i, 0).0).collect();
+    let y = (0..grid.columns())
+        .map(|j| grid.cell_centre(0, j).1)
         .collect();
-    PyArray1::from_vec(py, values).into_any().unbind()
+    (array(py, x), array(py, y))
 }
 
 /// A field as a `rows x columns` array.
@@ -337,6 +338,7 @@ struct Solution {
 
 impl Solution {
     fn new(py: Python<'_>, s: &lc::solver::Solution, grid: &lc::Grid) -> PyResult<Self> {
+        let (x, y) = centres(py, grid);
         Ok(Solution {
             depth: s.depth,
             force: s.force,
@@ -349,8 +351,8 @@ impl Solution {
             pressure: field(py, &s.pressure)?,
             displacement: field(py, &s.displacement)?,
             gap: field(py, &s.gap)?,
-            x: centres(py, grid.rows(), grid.spacing()),
-            y: centres(py, grid.columns(), grid.spacing()),
+            x,
+            y,
         })
     }
 }

@@ -231,13 +231,11 @@ impl ContactSolver {
     /// Returns the smallest height.
     fn sample_profile<I: Indenter + ?Sized>(&mut self, indenter: &I) -> Result<f64> {
         let grid = *self.operator.grid();
-        let delta = grid.spacing();
         let (lx, ly) = grid.extent();
         let columns = grid.columns();
         let mut lowest = f64::INFINITY;
         for (c, f) in self.workspace.profile.iter_mut().enumerate() {
-            let x = ((c / columns) as f64 + 0.5) * delta - 0.5 * lx;
-            let y = ((c % columns) as f64 + 0.5) * delta - 0.5 * ly;
+            let (x, y) = grid.cell_centre(c / columns, c % columns);
             let h = indenter.height(x, y);
             if h.is_nan() || h == f64::NEG_INFINITY {
                 return Err(Error::InvalidParameter {
@@ -279,9 +277,7 @@ impl ContactSolver {
     ) -> Solution {
         let grid = *self.operator.grid();
         let area = grid.cell_area();
-        let (lx, ly) = grid.extent();
         let columns = grid.columns();
-        let delta = grid.spacing();
         let (mut force, mut mx, mut my, mut cells) = (0.0, 0.0, 0.0, 0usize);
         let mut edge_contact = false;
         let isolated = self.operator.boundary() == Boundary::Isolated;
@@ -295,8 +291,7 @@ impl ContactSolver {
                 cells += 1;
                 edge_contact |= isolated && on_outer_ring(c, rows, columns);
             }
-            let x = ((c / columns) as f64 + 0.5) * delta - 0.5 * lx;
-            let y = ((c % columns) as f64 + 0.5) * delta - 0.5 * ly;
+            let (x, y) = grid.cell_centre(c / columns, c % columns);
             force += p * area;
             mx += p * x * area;
             my += p * y * area;

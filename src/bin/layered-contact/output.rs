@@ -3,7 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
-use ndarray::{Array1, Array2};
+use ndarray::Array1;
 use plotters::prelude::*;
 
 use layered_contact::scene::{Curve, Phase, Scene};
@@ -46,14 +46,22 @@ fn write_csv(curve: &Curve, path: &Path) -> Result<PathBuf> {
     Ok(path.to_path_buf())
 }
 
-/// The cell centres along one axis: `(k + 1/2 - n/2) Delta`, m.
-fn centres(n: usize, grid: &Grid) -> Array1<f64> {
-    Array1::from_iter((0..n).map(|k| (k as f64 + 0.5 - 0.5 * n as f64) * grid.spacing()))
+/// Writes `array` to `out/name` as `.npy`; its path.
+fn save<D: ndarray::Dimension>(
+    out: &Path,
+    name: &str,
+    array: &ndarray::Array<f64, D>,
+) -> Result<PathBuf> {
+    let path = out.join(name);
+    ndarray_npy::write_npy(&path, array)
+        .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    Ok(path)
 }
 
 /// The fields the scene asked for, at its most loaded step: `pressure.npy`
 /// (Pa), `displacement.npy` and `gap.npy` (m), each `rows x columns` with
-/// `[i, j]` at `x.npy[i]`, `y.npy[j]` (m, from the indenter's axis).
+/// `[i, j]` at `x.npy[i]`, `y.npy[j]` (the cell centres, m from the
+/// indenter's axis; [`Grid::cell_centre`]).
 fn write_fields(scene: &Scene, curve: &Curve, out: &Path) -> Result<Vec<PathBuf>> {
     let fields = scene.outputs.fields;
     if !(fields.pressure || fields.displacement || fields.gap) {
@@ -63,31 +71,20 @@ fn write_fields(scene: &Scene, curve: &Curve, out: &Path) -> Result<Vec<PathBuf>
         return Err("the scene asked for fields but none were kept".into());
     };
     let mut written = Vec::new();
-    let mut save = |name: &str, array: &Array2<f64>| -> Result<()> {
-        let path = out.join(name);
-        ndarray_npy::write_npy(&path, array)
-            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-        written.push(path);
-        Ok(())
-    };
     for (name, field) in [
         ("pressure.npy", &peak.pressure),
         ("displacement.npy", &peak.displacement),
         ("gap.npy", &peak.gap),
     ] {
         if let Some(array) = field {
-            save(name, array)?;
+            written.push(save(out, name, array)?);
         }
     }
-    for (name, axis) in [
-        ("x.npy", centres(curve.grid.rows(), &curve.grid)),
-        ("y.npy", centres(curve.grid.columns(), &curve.grid)),
-    ] {
-        let path = out.join(name);
-        ndarray_npy::write_npy(&path, &axis)
-            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-        written.push(path);
-    }
+    let grid: &Grid = &curve.grid;
+    let x = Array1::from_iter((0..grid.rows()).map(|i| grid.cell_centre(i, 0).0));
+    let y = Array1::from_iter((0..grid.columns()).map(|j| grid.cell_centre(0, j).1));
+    written.push(save(out, "x.npy", &x)?);
+    written.push(save(out, "y.npy", &y)?);
     Ok(written)
 }
 
