@@ -173,8 +173,35 @@ pub(crate) fn zeroed<T: Clone + Default>(len: usize, what: &'static str) -> Resu
     Ok(v)
 }
 
-/// Checks that `value` is positive and finite.
-pub(crate) fn positive_finite(name: &'static str, value: f64) -> Result<f64> {
+/// `value` if it is finite, else [`Error::InvalidParameter`] naming it
+/// (for front-ends and bindings that take values the library's infallible
+/// methods would turn into NaN).
+///
+/// ```
+/// let error = layered_contact::error::finite("depth", f64::NAN).unwrap_err();
+/// assert_eq!(error.to_string(), "depth must be finite, got NaN");
+/// ```
+///
+/// # Errors
+/// [`Error::InvalidParameter`] for NaN and infinities.
+pub fn finite(name: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::InvalidParameter {
+            name,
+            value,
+            expected: "finite",
+        })
+    }
+}
+
+/// `value` if it is positive and finite, else [`Error::InvalidParameter`]
+/// naming it.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] otherwise.
+pub fn positive_finite(name: &'static str, value: f64) -> Result<f64> {
     if value > 0.0 && value.is_finite() {
         Ok(value)
     } else {
@@ -186,8 +213,12 @@ pub(crate) fn positive_finite(name: &'static str, value: f64) -> Result<f64> {
     }
 }
 
-/// Checks that `value` is non-negative and finite.
-pub(crate) fn non_negative_finite(name: &'static str, value: f64) -> Result<f64> {
+/// `value` if it is non-negative and finite, else
+/// [`Error::InvalidParameter`] naming it.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] otherwise.
+pub fn non_negative_finite(name: &'static str, value: f64) -> Result<f64> {
     if value >= 0.0 && value.is_finite() {
         Ok(value)
     } else {

@@ -661,30 +661,6 @@ fn map<'py>(
     PyArray1::from_vec(py, out).reshape(values.shape().to_vec())
 }
 
-fn finite(name: &'static str, value: f64) -> lc::Result<f64> {
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(lc::Error::InvalidParameter {
-            name,
-            value,
-            expected: "finite",
-        })
-    }
-}
-
-fn non_negative(name: &'static str, value: f64) -> lc::Result<f64> {
-    if value >= 0.0 && value.is_finite() {
-        Ok(value)
-    } else {
-        Err(lc::Error::InvalidParameter {
-            name,
-            value,
-            expected: "non-negative and finite",
-        })
-    }
-}
-
 /// Hertz: force (N) of a paraboloid of tip radius `radius` pressed `depth`
 /// (m) into a half-space of `material`.
 #[pyfunction]
@@ -695,7 +671,9 @@ fn hertz_force<'py>(
     depth: PyReadonlyArrayDyn<'py, f64>,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
     let hertz = lc::analytic::Hertz::new(&material.inner, radius).py_err()?;
-    map(py, depth, |d| Ok(hertz.force(finite("depth", d)?)))
+    map(py, depth, |d| {
+        Ok(hertz.force(lc::error::finite("depth", d)?))
+    })
 }
 
 /// Hertz: contact radius (m) at `depth` (m).
@@ -707,7 +685,9 @@ fn hertz_contact_radius<'py>(
     depth: PyReadonlyArrayDyn<'py, f64>,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
     let hertz = lc::analytic::Hertz::new(&material.inner, radius).py_err()?;
-    map(py, depth, |d| Ok(hertz.contact_radius(finite("depth", d)?)))
+    map(py, depth, |d| {
+        Ok(hertz.contact_radius(lc::error::finite("depth", d)?))
+    })
 }
 
 /// A NumPy array of any shape.
@@ -725,7 +705,7 @@ fn jkr_state<'py>(
     contact_radius: PyReadonlyArrayDyn<'py, f64>,
 ) -> PyResult<(Array<'py>, Array<'py>)> {
     let jkr = lc::analytic::JkrSphere::new(&material.inner, radius, work_of_adhesion).py_err()?;
-    let check = |a: f64| non_negative("contact_radius", a);
+    let check = |a: f64| lc::error::non_negative_finite("contact_radius", a);
     let force = map(py, contact_radius.clone(), |a| Ok(jkr.force(check(a)?)))?;
     let depth = map(py, contact_radius, |a| Ok(jkr.depth(check(a)?)))?;
     Ok((force, depth))
@@ -755,15 +735,11 @@ fn flat_punch_stiffness<'py>(
             .iter()
             .copied()
             .fold(0.0f64, |m, r| if r.is_finite() { m.max(r) } else { m });
-    let eps = match &substrate.inner {
-        lc::Substrate::Coated(c) => largest / c.thickness(),
-        _ => 1.0,
-    };
     let substrate = substrate.inner;
     let radii: Vec<f64> = radius.as_array().iter().copied().collect();
     let stiffness = py
         .detach(|| -> lc::Result<Vec<f64>> {
-            let exact = lc::analytic::Axisymmetric::new(&substrate, eps.max(1e-6))?;
+            let exact = lc::analytic::Axisymmetric::up_to_contact_radius(&substrate, largest)?;
             radii
                 .iter()
                 .map(|&a| Ok(exact.flat_punch(a)?.stiffness()))
@@ -784,28 +760,14 @@ fn paraboloid_pull_off_force(
 ) -> PyResult<f64> {
     let substrate = substrate.inner;
     py.detach(|| -> lc::Result<f64> {
-        let modulus = substrate.surface_material().contact_modulus();
-        let jkr = (9.0 * std::f64::consts::PI * work_of_adhesion * radius * radius
-            / (8.0 * modulus))
-            .cbrt();
-        let eps = match &substrate {
-            lc::Substrate::Coated(c) => 3.0 * jkr / c.thickness(),
-            _ => 1.0,
-        };
-        let exact = lc::analytic::Axisymmetric::new(&substrate, eps)?;
+        let jkr =
+            lc::analytic::JkrSphere::new(substrate.surface_material(), radius, work_of_adhesion)?
+                .pull_off_contact_radius();
+        let exact = lc::analytic::Axisymmetric::up_to_contact_radius(&substrate, 3.0 * jkr)?;
         let pull_off = exact.paraboloid(radius, work_of_adhesion)?.pull_off()?;
         Ok(pull_off.load_control.force)
     })
     .py_err()
-}
-
-/// The exact solutions on `substrate` for contact radii up to `largest` (m).
-fn exact_up_to(substrate: &lc::Substrate, largest: f64) -> lc::Result<lc::analytic::Axisymmetric> {
-    let eps = match substrate {
-        lc::Substrate::Coated(c) => largest / c.thickness(),
-        _ => 1.0,
-    };
-    lc::analytic::Axisymmetric::new(substrate, eps)
 }
 
 /// Exact `(force, depth)` (N, m) of a paraboloid of tip radius `radius` (m)
@@ -825,7 +787,7 @@ fn paraboloid_state<'py>(
     let substrate = substrate.inner;
     let states = py
         .detach(|| -> lc::Result<Vec<(f64, f64)>> {
-            let exact = exact_up_to(&substrate, largest)?;
+            let exact = lc::analytic::Axisymmetric::up_to_contact_radius(&substrate, largest)?;
             let ball = exact.paraboloid(radius, work_of_adhesion)?;
             radii
                 .iter()
@@ -851,8 +813,9 @@ fn flat_punch_pull_off_force(
 ) -> PyResult<f64> {
     let substrate = substrate.inner;
     py.detach(|| {
-        let punch = exact_up_to(&substrate, radius)?.flat_punch(radius)?;
-        non_negative("work_of_adhesion", work_of_adhesion)?;
+        let punch = lc::analytic::Axisymmetric::up_to_contact_radius(&substrate, radius)?
+            .flat_punch(radius)?;
+        lc::error::non_negative_finite("work_of_adhesion", work_of_adhesion)?;
         Ok(punch.pull_off_force(work_of_adhesion))
     })
     .py_err()

@@ -324,6 +324,22 @@ impl Axisymmetric {
         }
     }
 
+    /// Solutions on `substrate` for contact radii up to `max_contact_radius`
+    /// (m): [`Axisymmetric::new`] with `max_contact_radius / h` (any range on
+    /// a half-space).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] if `max_contact_radius` is not positive and
+    /// finite, and as [`Axisymmetric::new`].
+    pub fn up_to_contact_radius(substrate: &Substrate, max_contact_radius: f64) -> Result<Self> {
+        let radius = positive_finite("max_contact_radius", max_contact_radius)?;
+        let eps = match substrate {
+            Substrate::Coated(coating) => radius / coating.thickness(),
+            Substrate::HalfSpace(_) => 1.0,
+        };
+        Self::new(substrate, eps)
+    }
+
     /// The flat cylindrical punch of `radius` (m), bonded or not.
     ///
     /// # Errors

@@ -2,7 +2,7 @@
 //! axisymmetric solutions of [`analytic::Axisymmetric`] for an untilted flat
 //! punch, paraboloid or sphere on an isolated half-space or coated body.
 
-use crate::analytic::Axisymmetric;
+use crate::analytic::{Axisymmetric, JkrSphere};
 use crate::error::Result;
 use crate::grid::Boundary;
 use crate::substrate::Substrate;
@@ -118,9 +118,8 @@ impl Scene {
                         max_force: force, ..
                     } => (0.75 * force * radius / modulus).cbrt(),
                 };
-                let jkr = (9.0 * std::f64::consts::PI * receding * radius * radius
-                    / (8.0 * modulus))
-                    .cbrt();
+                let jkr = JkrSphere::new(substrate.surface_material(), radius, receding)?
+                    .pull_off_contact_radius();
                 let Some(exact) = exact_to(&substrate, (2.0 * hertz).max(3.0 * jkr))? else {
                     return Ok(out);
                 };
@@ -176,12 +175,12 @@ impl Scene {
 /// The exact solutions on `substrate` for contacts up to `radius`, `None`
 /// beyond [`REFERENCE_MAX_EPS`] layer thicknesses.
 fn exact_to(substrate: &Substrate, radius: f64) -> Result<Option<Axisymmetric>> {
-    let eps = match substrate {
-        Substrate::Coated(coating) => radius / coating.thickness(),
-        Substrate::HalfSpace(_) => 1.0,
+    let within = match substrate {
+        Substrate::Coated(coating) => radius / coating.thickness() <= REFERENCE_MAX_EPS,
+        Substrate::HalfSpace(_) => true,
     };
-    if !(eps > 0.0 && eps <= REFERENCE_MAX_EPS) {
+    if !(within && radius > 0.0 && radius.is_finite()) {
         return Ok(None);
     }
-    Axisymmetric::new(substrate, eps).map(Some)
+    Axisymmetric::up_to_contact_radius(substrate, radius).map(Some)
 }

@@ -101,9 +101,9 @@ impl Scene {
             return None;
         }
         let substrate = self.substrate.build().ok()?;
-        let surface = substrate.surface_material().contact_modulus();
-        let scale =
-            (9.0 * std::f64::consts::PI * receding * radius * radius / (8.0 * surface)).cbrt();
+        let scale = crate::analytic::JkrSphere::new(substrate.surface_material(), radius, receding)
+            .ok()?
+            .pull_off_contact_radius();
         // The exact solution is tabulated over the contact radii it may need:
         // the pull-off's (a few JKR scales) and the peak's (about twice the
         // non-adhesive estimate); its cost grows with the range.

@@ -404,14 +404,4 @@ pub(super) fn neighbours(c: usize, rows: usize, columns: usize) -> [Option<usize
     ]
 }
 
-pub(crate) fn check_finite(name: &'static str, value: f64) -> Result<f64> {
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(Error::InvalidParameter {
-            name,
-            value,
-            expected: "finite",
-        })
-    }
-}
+pub(crate) use crate::error::finite as check_finite;
