@@ -43,11 +43,38 @@ const CONVERGED: f64 = 1e-11;
 /// this.
 const ROUNDING_FLOOR: f64 = 1e-8;
 
-/// The cosine transform `k(y)` of `Lambda_g`, and its derivative, tabulated.
+/// The cosine transform `k(y)` of `Lambda_g`, and its derivative, tabulated
+/// as a sum of pieces, one per length scale of the body (one for a layer,
+/// one per interface of a stack): `k(y) = sum_k s_k k_k(s_k y)` with
+/// `s_k = h/z_k`, `z_k` the piece's length and `k_k` the cosine transform
+/// of its part of `Lambda_g` in units of `z_k`.
 #[derive(Debug)]
 struct CosineKernel {
+    pieces: Vec<CosinePiece>,
+}
+
+#[derive(Debug)]
+struct CosinePiece {
+    /// `h / z_k`.
+    scale: f64,
     value: OctaveTable,
     slope: OctaveTable,
+}
+
+impl CosineKernel {
+    fn value(&self, y: f64) -> f64 {
+        self.pieces
+            .iter()
+            .map(|piece| piece.scale * piece.value.eval(piece.scale * y))
+            .sum()
+    }
+
+    fn slope(&self, y: f64) -> f64 {
+        self.pieces
+            .iter()
+            .map(|piece| piece.scale * piece.scale * piece.slope.eval(piece.scale * y))
+            .sum()
+    }
 }
 
 /// Exact axisymmetric contact solutions on one substrate: flat punches and
@@ -110,14 +137,13 @@ impl Nystrom {
 
     /// `(eps/pi) [k(eps (xi - s)) + k(eps (xi + s))]`.
     fn kernel_at(kernel: &CosineKernel, eps: f64, xi: f64, s: f64) -> f64 {
-        eps / PI * (kernel.value.eval(eps * (xi - s).abs()) + kernel.value.eval(eps * (xi + s)))
+        eps / PI * (kernel.value(eps * (xi - s).abs()) + kernel.value(eps * (xi + s)))
     }
 
     /// `d/dxi` of [`Nystrom::kernel_at`].
     fn kernel_slope(kernel: &CosineKernel, eps: f64, xi: f64, s: f64) -> f64 {
         let sign = if xi >= s { 1.0 } else { -1.0 };
-        eps * eps / PI
-            * (sign * kernel.slope.eval(eps * (xi - s).abs()) + kernel.slope.eval(eps * (xi + s)))
+        eps * eps / PI * (sign * kernel.slope(eps * (xi - s).abs()) + kernel.slope(eps * (xi + s)))
     }
 
     /// Solves at `order` points.
@@ -278,7 +304,7 @@ impl Axisymmetric {
             });
         }
         let contact_modulus = substrate.surface_material().contact_modulus();
-        let Substrate::Coated(coating) = substrate else {
+        let Some(h) = substrate.top_thickness() else {
             return Ok(Axisymmetric {
                 contact_modulus,
                 thickness: None,
@@ -286,21 +312,40 @@ impl Axisymmetric {
                 max_eps,
             });
         };
-        let functions = coating.functions();
-        let u_max = 40.0 + (1.0 + functions.lambda(0.0).abs()).ln();
         let rule = gauss(20);
-        let y_max = 2.0 * max_eps;
-        let value = OctaveTable::build(
-            0,
-            true,
-            |y| oscillatory_integral(|u| functions.lambda(u) * (u * y).cos(), y, u_max, &rule),
-            |end| end >= y_max,
-        );
-        let slope = value.derivative();
+        let pieces = substrate
+            .terms()
+            .into_iter()
+            .map(|term| {
+                let functions = &term.functions;
+                let scale = h / term.length;
+                let u_max = 40.0 + (1.0 + functions.lambda(0.0).abs()).ln();
+                let y_max = 2.0 * max_eps * scale;
+                let value = OctaveTable::build(
+                    0,
+                    true,
+                    |y| {
+                        oscillatory_integral(
+                            |u| functions.lambda(u) * (u * y).cos(),
+                            y,
+                            u_max,
+                            &rule,
+                        )
+                    },
+                    |end| end >= y_max,
+                );
+                let slope = value.derivative();
+                CosinePiece {
+                    scale,
+                    value,
+                    slope,
+                }
+            })
+            .collect();
         Ok(Axisymmetric {
             contact_modulus,
-            thickness: Some(coating.thickness()),
-            kernel: Some(Arc::new(CosineKernel { value, slope })),
+            thickness: Some(h),
+            kernel: Some(Arc::new(CosineKernel { pieces })),
             max_eps,
         })
     }
@@ -333,10 +378,9 @@ impl Axisymmetric {
     /// finite, and as [`Axisymmetric::new`].
     pub fn up_to_contact_radius(substrate: &Substrate, max_contact_radius: f64) -> Result<Self> {
         let radius = positive_finite("max_contact_radius", max_contact_radius)?;
-        let eps = match substrate {
-            Substrate::Coated(coating) => radius / coating.thickness(),
-            Substrate::HalfSpace(_) => 1.0,
-        };
+        let eps = substrate
+            .top_thickness()
+            .map_or(1.0, |thickness| radius / thickness);
         Self::new(substrate, eps)
     }
 
@@ -731,8 +775,8 @@ mod tests {
         let kernel = s.kernel.as_ref().unwrap();
         let h = 1e-6;
         for y in [0.1, 0.7, 1.3, 2.5] {
-            let fd = (kernel.value.eval(y + h) - kernel.value.eval(y - h)) / (2.0 * h);
-            assert!((kernel.slope.eval(y) - fd).abs() < 1e-9, "k'({y})");
+            let fd = (kernel.value(y + h) - kernel.value(y - h)) / (2.0 * h);
+            assert!((kernel.slope(y) - fd).abs() < 1e-9, "k'({y})");
         }
         for xi in [0.1, 0.5, 0.9] {
             for quadratic in [false, true] {

@@ -1,16 +1,19 @@
 //! The Fourier-space surface compliance `u_z(q)` of a substrate.
 
-use crate::substrate::{CoatingFunctions, Substrate};
+use crate::substrate::{CoatingFunctions, StackFunctions, Substrate};
 
 /// The surface normal displacement, in Fourier space, due to a unit normal
 /// point force: `u_z(q) = 2 / (E* q)` on a half-space and
 /// `u_z(q) = 2 R(q h) / (E1* q)` on a coated half-space (Perriot & Barthel 2004,
-/// J. Mater. Res. 19, 600; `R` from [`CoatingFunctions`]). Units m/N times m^2, i.e. m^3/N.
+/// J. Mater. Res. 19, 600; `R` from [`CoatingFunctions`], or from
+/// [`StackFunctions`] for a stack, `h` its top layer's thickness). Units m/N
+/// times m^2, i.e. m^3/N.
 ///
 /// At `q = 0` it is `+inf` on a half-space and on a layer over an elastic
 /// base, and the finite uniaxial-strain compliance
 /// `h (1 + nu1)(1 - 2 nu1) / (E1 (1 - nu1))` on a rigid base (0 for an
-/// incompressible layer): see [`FourierCompliance::at_zero`].
+/// incompressible layer; for a stack the sum over its layers): see
+/// [`FourierCompliance::at_zero`].
 ///
 /// ```
 /// use layered_contact::kernel::FourierCompliance;
@@ -27,35 +30,44 @@ use crate::substrate::{CoatingFunctions, Substrate};
 /// assert!((film.eval(q) * layer.contact_modulus() * q / 2.0 - 1.0).abs() < 1e-15);
 /// Ok::<(), layered_contact::Error>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct FourierCompliance {
     /// `E*` of the surface material (layer or half-space).
     contact_modulus: f64,
-    /// Layer thickness and functions, `None` for a half-space.
-    coating: Option<(f64, CoatingFunctions)>,
+    body: Body,
+}
+
+/// What lies under the surface material.
+#[derive(Debug, Clone)]
+enum Body {
+    HalfSpace,
+    /// A layer of this thickness and its functions.
+    Layer(f64, CoatingFunctions),
+    /// A stack, its top layer's thickness and its functions.
+    Stack(f64, StackFunctions),
 }
 
 impl FourierCompliance {
     /// The compliance of `substrate`.
     pub fn new(substrate: &Substrate) -> Self {
-        match substrate {
-            Substrate::HalfSpace(material) => FourierCompliance {
-                contact_modulus: material.contact_modulus(),
-                coating: None,
-            },
-            Substrate::Coated(coating) => FourierCompliance {
-                contact_modulus: coating.layer().contact_modulus(),
-                coating: Some((coating.thickness(), coating.functions())),
-            },
+        let body = match substrate {
+            Substrate::HalfSpace(_) => Body::HalfSpace,
+            Substrate::Coated(coating) => Body::Layer(coating.thickness(), coating.functions()),
+            Substrate::Stack(stack) => Body::Stack(stack.top().thickness(), stack.functions()),
+        };
+        FourierCompliance {
+            contact_modulus: substrate.surface_material().contact_modulus(),
+            body,
         }
     }
 
     /// `u_z(q)` for wavenumber `|q|` (rad/m), m^3/N.
     pub fn eval(&self, q: f64) -> f64 {
         let q = q.abs();
-        match &self.coating {
-            None => 2.0 / (self.contact_modulus * q),
-            Some((h, functions)) => 2.0 * h * functions.r_over_t(q * h) / self.contact_modulus,
+        match &self.body {
+            Body::HalfSpace => 2.0 / (self.contact_modulus * q),
+            Body::Layer(h, functions) => 2.0 * h * functions.r_over_t(q * h) / self.contact_modulus,
+            Body::Stack(h, functions) => 2.0 * h * functions.r_over_t(q * h) / self.contact_modulus,
         }
     }
 

@@ -56,26 +56,26 @@ pub struct InfluenceCoefficients {
 }
 
 /// The corner function `F(X, Y)` of the Green's function, without the
-/// factor `1/(pi E1*)` (see [`doc::theory`](crate::doc::theory)).
-enum CornerFunction {
-    HalfSpace,
-    Coated {
-        thickness: f64,
-        lambda0: f64,
-        remainder: RadialRemainder,
-    },
+/// factor `1/(pi E1*)` (see [`doc::theory`](crate::doc::theory)): Love's
+/// closed form, minus for a layered body one lifted Love term and one
+/// tabulated remainder per length scale (the layer's thickness, or each
+/// interface depth of a stack, see [`doc::multilayer`](crate::doc::multilayer)).
+struct CornerFunction {
+    terms: Vec<CornerTerm>,
+}
+
+struct CornerTerm {
+    length: f64,
+    lambda0: f64,
+    remainder: RadialRemainder,
 }
 
 impl CornerFunction {
     fn eval(&self, x: f64, y: f64) -> f64 {
-        match self {
-            CornerFunction::HalfSpace => love(x, y),
-            CornerFunction::Coated {
-                thickness: h,
-                lambda0,
-                remainder,
-            } => love(x, y) - lambda0 * lifted_love(x, y, *h) - h * remainder.corner(x / h, y / h),
-        }
+        self.terms.iter().fold(love(x, y), |total, term| {
+            let h = term.length;
+            total - term.lambda0 * lifted_love(x, y, h) - h * term.remainder.corner(x / h, y / h)
+        })
     }
 }
 
@@ -85,43 +85,42 @@ impl InfluenceCoefficients {
         let (rows, columns) = (grid.rows(), grid.columns());
         let delta = grid.spacing();
         let corner_at = |k: usize| (k as f64 + 0.5) * delta;
-        let (modulus, corner_function) = match substrate {
-            Substrate::HalfSpace(material) => {
-                (material.contact_modulus(), CornerFunction::HalfSpace)
-            }
-            Substrate::Coated(coating) => {
-                let h = coating.thickness();
-                let functions = coating.functions();
-                let r_max = corner_at(rows).hypot(corner_at(columns)) / h;
-                (
-                    coating.layer().contact_modulus(),
-                    CornerFunction::Coated {
-                        thickness: h,
-                        lambda0: functions.lambda(0.0),
-                        remainder: RadialRemainder::new(&functions, 0.5 * delta / h, r_max),
-                    },
-                )
-            }
+        let modulus = substrate.surface_material().contact_modulus();
+        let reach = corner_at(rows).hypot(corner_at(columns));
+        let corner_function = CornerFunction {
+            terms: substrate
+                .terms()
+                .into_iter()
+                .map(|term| {
+                    let h = term.length;
+                    CornerTerm {
+                        length: h,
+                        lambda0: term.functions.lambda(0.0),
+                        remainder: RadialRemainder::new(
+                            &term.functions,
+                            0.5 * delta / h,
+                            reach / h,
+                        ),
+                    }
+                })
+                .collect(),
         };
         // The tail error enters each corner at most as h (pi/2) |mismatch|,
         // a coefficient as four corners.
-        let tail = match &corner_function {
-            CornerFunction::HalfSpace => 0.0,
-            CornerFunction::Coated {
-                thickness,
-                remainder,
-                ..
-            } => {
+        let tail = corner_function
+            .terms
+            .iter()
+            .map(|term| {
                 // No mismatch, no error, whatever the thickness (at
                 // h = f64::MAX the product would be inf * 0 = NaN).
-                let mismatch = remainder.tail_mismatch();
+                let mismatch = term.remainder.tail_mismatch();
                 if mismatch == 0.0 {
                     0.0
                 } else {
-                    2.0 * PI * thickness * mismatch / (4.0 * love(0.5 * delta, 0.5 * delta))
+                    2.0 * PI * term.length * mismatch / (4.0 * love(0.5 * delta, 0.5 * delta))
                 }
-            }
-        };
+            })
+            .sum();
         // Corner values F((k + 1/2) Delta, (l + 1/2) Delta); F is symmetric in
         // its arguments, so square blocks are filled once.
         let mut corners = vec![0.0; rows * columns];

@@ -131,14 +131,13 @@ const MAX_SQUEEZE_SHARE: f64 = 0.01;
 /// # Errors
 /// [`Error::InvalidParameter`] naming `h / Delta` and the range.
 pub fn check_film(substrate: &Substrate, grid: &Grid) -> Result<()> {
-    let Substrate::Coated(coating) = substrate else {
+    let (Some(crate::substrate::Base::Rigid), Some(total)) =
+        (substrate.base(), substrate.total_thickness())
+    else {
         return Ok(());
     };
-    if !matches!(coating.base(), crate::substrate::Base::Rigid) {
-        return Ok(());
-    }
     // The limits hold to rounding: h = 1e-7 on Delta = 1e-4 is 1e-3.
-    let ratio = coating.thickness() / grid.spacing() * (1.0 + 1e-12);
+    let ratio = total / grid.spacing() * (1.0 + 1e-12);
     if ratio.is_nan() || ratio < MIN_THICKNESS_OVER_SPACING {
         return Err(Error::InvalidParameter {
             name: "h / Delta (layer thickness over cell size)",
@@ -149,6 +148,13 @@ pub fn check_film(substrate: &Substrate, grid: &Grid) -> Result<()> {
     if ratio >= VERIFIED_THICKNESS_OVER_SPACING {
         return Ok(());
     }
+    let Substrate::Coated(coating) = substrate else {
+        return Err(Error::InvalidParameter {
+            name: "h / Delta (stack thickness over cell size)",
+            value: ratio,
+            expected: "at least 0.5 for a stack on a rigid base (refine the grid)",
+        });
+    };
     let layer = coating.layer();
     let uniaxial = layer.uniaxial_strain_modulus();
     let film = ratio * layer.contact_modulus() / uniaxial;
@@ -197,8 +203,8 @@ impl ComplianceOperator {
             grid: *grid,
             boundary,
             influence: None,
-            layered: matches!(substrate, Substrate::Coated(_)),
-            rigid_base: matches!(substrate, Substrate::Coated(c) if matches!(c.base(), crate::substrate::Base::Rigid)),
+            layered: substrate.base().is_some(),
+            rigid_base: matches!(substrate.base(), Some(crate::substrate::Base::Rigid)),
             spectrum: Vec::new(),
             inverse_spectrum: Vec::new(),
             surface_modulus: substrate.surface_material().contact_modulus(),

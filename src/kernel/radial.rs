@@ -38,7 +38,7 @@
 use gauss_quad::legendre::GaussLegendre;
 
 use crate::numerics::{gauss, oscillatory_integral, OctaveTable};
-use crate::substrate::CoatingFunctions;
+use crate::substrate::Spectral;
 
 /// Gauss points per panel of the Hankel quadrature.
 const HANKEL_ORDER: usize = 20;
@@ -67,7 +67,7 @@ pub(crate) struct RadialRemainder {
 impl RadialRemainder {
     /// The remainder of `functions`, tabulated for `R` in `[r_min, r_max]`
     /// (units of `h`; `r_min > 0`).
-    pub(crate) fn new(functions: &CoatingFunctions, r_min: f64, r_max: f64) -> Self {
+    pub(crate) fn new(functions: &Spectral, r_min: f64, r_max: f64) -> Self {
         let lambda0 = functions.lambda(0.0);
         let taylor = functions
             .lambda_taylor()
@@ -109,7 +109,7 @@ impl RadialRemainder {
         remainder
     }
 
-    fn mismatch_at(&self, functions: &CoatingFunctions, lambda0: f64, r: f64) -> f64 {
+    fn mismatch_at(&self, functions: &Spectral, lambda0: f64, r: f64) -> f64 {
         let numeric = disc_integral(functions, lambda0, r, &gauss(HANKEL_ORDER));
         (numeric - self.asymptotic_at(r)).abs()
     }
@@ -190,7 +190,7 @@ impl RadialRemainder {
 }
 
 /// `Gc(R) = R Integral_0^inf (f(u)/u) J1(u R) du`.
-fn disc_integral(functions: &CoatingFunctions, lambda0: f64, r: f64, rule: &GaussLegendre) -> f64 {
+fn disc_integral(functions: &Spectral, lambda0: f64, r: f64, rule: &GaussLegendre) -> f64 {
     let integrand = |u: f64| {
         let f = functions.lambda(u) - lambda0 * (-u).exp();
         f / u * libm::j1(u * r)

@@ -175,10 +175,9 @@ impl Scene {
 /// The exact solutions on `substrate` for contacts up to `radius`, `None`
 /// beyond [`REFERENCE_MAX_EPS`] layer thicknesses.
 fn exact_to(substrate: &Substrate, radius: f64) -> Result<Option<Axisymmetric>> {
-    let within = match substrate {
-        Substrate::Coated(coating) => radius / coating.thickness() <= REFERENCE_MAX_EPS,
-        Substrate::HalfSpace(_) => true,
-    };
+    let within = substrate
+        .top_thickness()
+        .is_none_or(|thickness| radius / thickness <= REFERENCE_MAX_EPS);
     if !(within && radius > 0.0 && radius.is_finite()) {
         return Ok(None);
     }

@@ -20,15 +20,7 @@ impl Scene {
     /// sizing the grid.
     fn contact_radius_estimate(&self) -> Result<f64> {
         let substrate = self.substrate.build()?;
-        let softest = match &substrate {
-            crate::substrate::Substrate::HalfSpace(m) => m.contact_modulus(),
-            crate::substrate::Substrate::Coated(c) => match c.base() {
-                crate::substrate::Base::Elastic(b) => {
-                    b.contact_modulus().min(c.layer().contact_modulus())
-                }
-                crate::substrate::Base::Rigid => c.layer().contact_modulus(),
-            },
-        };
+        let softest = substrate.softest_contact_modulus();
         Ok(match (&self.indenter, self.protocol) {
             (IndenterSpec::FlatPunch { radius }, _) => *radius,
             (IndenterSpec::Custom(custom), _) => crate::indenter::Indenter::bounding_radius(custom),
@@ -52,17 +44,12 @@ impl Scene {
                 } else {
                     (radius * target).sqrt()
                 };
-                let estimate = match &substrate {
-                    crate::substrate::Substrate::Coated(coating) => exact_contact_radius(
-                        &substrate,
-                        coating.thickness(),
-                        radius,
-                        target,
-                        by_force,
-                        hertz,
-                    )
-                    .unwrap_or(1.5 * hertz),
-                    crate::substrate::Substrate::HalfSpace(_) => hertz,
+                let estimate = match substrate.top_thickness() {
+                    Some(thickness) => {
+                        exact_contact_radius(&substrate, thickness, radius, target, by_force, hertz)
+                            .unwrap_or(1.5 * hertz)
+                    }
+                    None => hertz,
                 };
                 estimate.min(radius)
             }
@@ -108,15 +95,15 @@ impl Scene {
         // the pull-off's (a few JKR scales) and the peak's (about twice the
         // non-adhesive estimate); its cost grows with the range.
         let reach = (3.0 * scale).max(2.0 * estimate);
-        let eps = match &substrate {
-            crate::substrate::Substrate::Coated(c) => {
-                let eps = reach / c.thickness();
+        let eps = match substrate.top_thickness() {
+            Some(thickness) => {
+                let eps = reach / thickness;
                 if eps > SIZING_MAX_EPS {
                     return None;
                 }
                 eps
             }
-            crate::substrate::Substrate::HalfSpace(_) => 1.0,
+            None => 1.0,
         };
         let exact = crate::analytic::Axisymmetric::new(&substrate, eps).ok()?;
         let ball = exact.paraboloid(radius, receding).ok()?;

@@ -180,7 +180,7 @@ impl ContactSolver {
             params,
             compliance: FourierCompliance::new(substrate),
             preconditioner: None,
-            substrate: *substrate,
+            substrate: substrate.clone(),
             coarse: None,
             surface_contact_modulus: substrate.surface_material().contact_modulus(),
             workspace: Workspace {

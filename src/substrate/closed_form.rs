@@ -1,8 +1,4 @@
-//! The elastic body: a homogeneous half-space, or an elastic layer bonded to a
-//! rigid base or to an elastic half-space, and the functions of `t = q h` that
-//! describe the coated body ([`CoatingFunctions`]).
-//!
-//! # The coating factor
+//! The coating factor of one layer on a base, in closed form.
 //!
 //! The surface normal displacement of the coated body under a unit normal
 //! point force has the Fourier (Hankel) transform `u_z(q) = 2 R(q h) / (E1* q)`,
@@ -45,169 +41,11 @@
 //! below `1e-15` on every reference point; a randomized scan over
 //! `t in [1e-6, 300]`, `G in [0, 1e7]`, `nu in [0, 0.5]` found at most `7e-16`.
 
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::material::Material;
 
-/// What the layer is bonded to.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Base {
-    /// A rigid base (glass under a rubber film, say): zero displacement at the
-    /// interface. A first-class case, not a large modulus.
-    Rigid,
-    /// An elastic half-space of the given material.
-    Elastic(Material),
-}
-
-/// An elastic layer of finite thickness bonded to a base. Built only through
-/// the validating constructors of [`Substrate`].
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Coating {
-    layer: Material,
-    thickness: f64,
-    base: Base,
-}
-
-impl Coating {
-    /// The layer material (`E1`, `nu1`).
-    pub fn layer(&self) -> &Material {
-        &self.layer
-    }
-
-    /// The layer thickness `h`, m (positive and finite).
-    pub fn thickness(&self) -> f64 {
-        self.thickness
-    }
-
-    /// What the layer is bonded to.
-    pub fn base(&self) -> &Base {
-        &self.base
-    }
-
-    /// The functions `R(t)` and `Lambda_g(t)` of this coating.
-    pub fn functions(&self) -> CoatingFunctions {
-        CoatingFunctions::new(&self.layer, &self.base)
-    }
-}
-
-/// The elastic body the indenter presses into.
-///
-/// The constructors reduce the exact limits to the homogeneous half-space, so
-/// that no layered machinery is built where none is needed: a layer of
-/// infinite thickness, or of the same material as its elastic base, is the
-/// layer's half-space; a layer of zero thickness on an elastic base is the
-/// base's half-space.
-///
-/// ```
-/// use layered_contact::{Base, Error, Material, Substrate};
-///
-/// let rubber = Material::new(0.324e6, 0.48)?;
-/// let film = Substrate::layer_on_rigid_base(rubber, 5e-3)?;
-/// assert!(matches!(film, Substrate::Coated(_)));
-/// // Limits that reduce exactly:
-/// let thick = Substrate::layer_on_rigid_base(rubber, f64::INFINITY)?;
-/// assert_eq!(thick, Substrate::HalfSpace(rubber));
-/// let same = Substrate::layer_on_elastic_base(rubber, 1e-3, rubber)?;
-/// assert_eq!(same, Substrate::HalfSpace(rubber));
-/// // Bad input is a typed error:
-/// assert!(matches!(
-///     Substrate::layer_on_rigid_base(rubber, -1e-3),
-///     Err(Error::InvalidThickness { .. })
-/// ));
-/// Ok::<(), Error>(())
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Substrate {
-    /// A homogeneous elastic half-space.
-    HalfSpace(Material),
-    /// A layer of finite positive thickness bonded to a base.
-    Coated(Coating),
-}
-
-/// The largest layer-to-base shear modulus ratio `mu1/mu2` accepted.
-pub const MAX_SHEAR_RATIO: f64 = 1e7;
-
-impl Substrate {
-    /// A homogeneous half-space of `material`.
-    pub fn half_space(material: Material) -> Self {
-        Substrate::HalfSpace(material)
-    }
-
-    /// A layer of `thickness` (m) bonded to a rigid base.
-    ///
-    /// `thickness = +inf` gives the layer's half-space.
-    ///
-    /// # Errors
-    /// [`Error::InvalidThickness`] if `thickness` is NaN, negative or zero (a
-    /// zero-thickness layer on a rigid base leaves no elastic body).
-    pub fn layer_on_rigid_base(layer: Material, thickness: f64) -> Result<Self> {
-        if thickness.is_nan() || thickness <= 0.0 {
-            return Err(Error::InvalidThickness {
-                value: thickness,
-                expected: "positive on a rigid base (or +inf for a half-space)",
-            });
-        }
-        Ok(Self::coated(layer, thickness, Base::Rigid))
-    }
-
-    /// A layer of `thickness` (m) bonded to an elastic half-space of `base`.
-    ///
-    /// `thickness = 0` gives the base's half-space, `thickness = +inf` or
-    /// `layer == base` the layer's half-space.
-    ///
-    /// # Errors
-    /// [`Error::InvalidThickness`] if `thickness` is NaN or negative;
-    /// [`Error::InvalidParameter`] if the base is more than `1e7` times
-    /// softer in shear than the layer (`mu1/mu2 > 1e7`): the base then
-    /// carries nothing the kernel can resolve (and at `mu1/mu2` beyond the
-    /// `f64` range the kernel's integrals would not end).
-    pub fn layer_on_elastic_base(layer: Material, thickness: f64, base: Material) -> Result<Self> {
-        if thickness.is_nan() || thickness < 0.0 {
-            return Err(Error::InvalidThickness {
-                value: thickness,
-                expected: "non-negative (or +inf for a half-space)",
-            });
-        }
-        let shear_ratio = layer.shear_modulus() / base.shear_modulus();
-        if thickness > 0.0
-            && thickness < f64::INFINITY
-            && (shear_ratio.is_nan() || shear_ratio > MAX_SHEAR_RATIO)
-        {
-            return Err(Error::InvalidParameter {
-                name: "shear modulus ratio mu1/mu2 (layer over base)",
-                value: shear_ratio,
-                expected: "at most 1e7 (a base 1e7 times softer than its layer carries nothing)",
-            });
-        }
-        if thickness == 0.0 {
-            return Ok(Substrate::HalfSpace(base));
-        }
-        if layer == base {
-            return Ok(Substrate::HalfSpace(layer));
-        }
-        Ok(Self::coated(layer, thickness, Base::Elastic(base)))
-    }
-
-    fn coated(layer: Material, thickness: f64, base: Base) -> Self {
-        if thickness == f64::INFINITY {
-            Substrate::HalfSpace(layer)
-        } else {
-            Substrate::Coated(Coating {
-                layer,
-                thickness,
-                base,
-            })
-        }
-    }
-
-    /// The material at the surface: the layer of a coated body, or the
-    /// half-space material.
-    pub fn surface_material(&self) -> &Material {
-        match self {
-            Substrate::HalfSpace(material) => material,
-            Substrate::Coated(coating) => &coating.layer,
-        }
-    }
-}
+use super::series::Series;
+use super::Base;
 
 /// Sum of `sinh(s) - s` as a power series, for `0 <= s < 2`.
 fn sinh_minus_identity_series(s: f64) -> f64 {
@@ -441,7 +279,7 @@ impl CoatingFunctions {
         (self.m * self.one_plus_lam * growth - self.m * cubic) / self.denominator(t)
     }
 
-    /// The first [`TAYLOR_TERMS`] Taylor coefficients of `Lambda_g(t)` at
+    /// The first [`TAYLOR_TERMS`](super::series::TAYLOR_TERMS) Taylor coefficients of `Lambda_g(t)` at
     /// `t = 0`, by truncated power-series arithmetic on the cancellation-free
     /// forms of `D` and `D - N` (so `D(0) = a b > 0` is exact).
     pub(crate) fn lambda_taylor(&self) -> Series {
@@ -471,89 +309,5 @@ impl CoatingFunctions {
                 .sub(&tail)
         };
         e2.mul(&inner).div(&d)
-    }
-}
-
-/// Number of Taylor coefficients kept by [`Series`].
-pub(crate) const TAYLOR_TERMS: usize = 9;
-
-/// A power series in `t` truncated after `t^(TAYLOR_TERMS - 1)`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Series(pub(crate) [f64; TAYLOR_TERMS]);
-
-impl Series {
-    fn constant(c: f64) -> Self {
-        let mut s = [0.0; TAYLOR_TERMS];
-        s[0] = c;
-        Series(s)
-    }
-
-    fn monomial(power: usize) -> Self {
-        let mut s = [0.0; TAYLOR_TERMS];
-        s[power] = 1.0;
-        Series(s)
-    }
-
-    /// `e^(c t)`.
-    pub(crate) fn exp(c: f64) -> Self {
-        let mut s = [0.0; TAYLOR_TERMS];
-        s[0] = 1.0;
-        for k in 1..TAYLOR_TERMS {
-            s[k] = s[k - 1] * c / k as f64;
-        }
-        Series(s)
-    }
-
-    /// `sinh t - t`.
-    fn sinh_minus_identity() -> Self {
-        let mut s = [0.0; TAYLOR_TERMS];
-        let mut factorial = 1.0;
-        for (k, value) in s.iter_mut().enumerate().skip(1) {
-            factorial *= k as f64;
-            if k % 2 == 1 && k >= 3 {
-                *value = 1.0 / factorial;
-            }
-        }
-        Series(s)
-    }
-
-    fn zip(&self, other: &Self, op: impl Fn(f64, f64) -> f64) -> Self {
-        let mut s = [0.0; TAYLOR_TERMS];
-        for (k, value) in s.iter_mut().enumerate() {
-            *value = op(self.0[k], other.0[k]);
-        }
-        Series(s)
-    }
-
-    pub(crate) fn add(&self, other: &Self) -> Self {
-        self.zip(other, |x, y| x + y)
-    }
-
-    pub(crate) fn sub(&self, other: &Self) -> Self {
-        self.zip(other, |x, y| x - y)
-    }
-
-    pub(crate) fn scale(&self, c: f64) -> Self {
-        Series(self.0.map(|x| x * c))
-    }
-
-    fn mul(&self, other: &Self) -> Self {
-        let mut s = [0.0; TAYLOR_TERMS];
-        for i in 0..TAYLOR_TERMS {
-            for j in 0..TAYLOR_TERMS - i {
-                s[i + j] += self.0[i] * other.0[j];
-            }
-        }
-        Series(s)
-    }
-
-    /// `self / other`, requiring `other.0[0] != 0`.
-    fn div(&self, other: &Self) -> Self {
-        let mut q = [0.0; TAYLOR_TERMS];
-        for k in 0..TAYLOR_TERMS {
-            let known: f64 = (0..k).map(|j| q[j] * other.0[k - j]).sum();
-            q[k] = (self.0[k] - known) / other.0[0];
-        }
-        Series(q)
     }
 }
