@@ -47,7 +47,9 @@ mod spec;
 pub use accuracy::{richardson, Converged, Quantity};
 pub use curve::{Curve, Phase, Step};
 pub use reference::Reference;
-pub use spec::{Adhesion, CustomIndenter, IndenterSpec, SubstrateSpec, Tilt};
+pub use spec::{
+    Adhesion, CustomIndenter, IndenterSpec, LayerSpec, MaterialSpec, SubstrateSpec, Tilt,
+};
 
 use crate::error::{positive_finite, Error, Result};
 use crate::grid::{Boundary, Grid};

@@ -12,7 +12,7 @@ use crate::substrate::Substrate;
 use crate::topography::{Amplitude, SelfAffine};
 
 /// The body, by its material constants (SI units).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(
     feature = "serde",
@@ -48,6 +48,49 @@ pub enum SubstrateSpec {
         /// `nu2`.
         base_poisson_ratio: f64,
     },
+    /// Bonded layers, top first, on a rigid base (`base` omitted) or an
+    /// elastic half-space; see [`Substrate::stack`].
+    ///
+    /// ```toml
+    /// [substrate]
+    /// kind = "stack"
+    /// layers = [
+    ///     { youngs_modulus = 300e9, poisson_ratio = 0.2, thickness = 2e-6 },
+    ///     { youngs_modulus = 140e9, poisson_ratio = 0.21, thickness = 0.3e-6 },
+    /// ]
+    /// base = { youngs_modulus = 210e9, poisson_ratio = 0.3 }
+    /// ```
+    Stack {
+        /// The layers, top first.
+        layers: Vec<LayerSpec>,
+        /// The elastic base; `None` (omitted) for a rigid base.
+        #[cfg_attr(feature = "serde", serde(default))]
+        base: Option<MaterialSpec>,
+    },
+}
+
+/// A material by its constants.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+pub struct MaterialSpec {
+    /// `E`, Pa.
+    pub youngs_modulus: f64,
+    /// `nu`.
+    pub poisson_ratio: f64,
+}
+
+/// One layer of a stack.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+pub struct LayerSpec {
+    /// `E`, Pa.
+    pub youngs_modulus: f64,
+    /// `nu`.
+    pub poisson_ratio: f64,
+    /// Thickness, m.
+    pub thickness: f64,
 }
 
 impl SubstrateSpec {
@@ -57,6 +100,28 @@ impl SubstrateSpec {
     /// The errors of [`Material::new`] and the [`Substrate`] constructors.
     pub fn build(&self) -> Result<Substrate> {
         match *self {
+            SubstrateSpec::Stack {
+                ref layers,
+                ref base,
+            } => {
+                let layers = layers
+                    .iter()
+                    .map(|l| {
+                        Ok((
+                            Material::new(l.youngs_modulus, l.poisson_ratio)?,
+                            l.thickness,
+                        ))
+                    })
+                    .collect::<Result<Vec<_>>>()?;
+                let base = match base {
+                    None => crate::substrate::Base::Rigid,
+                    Some(m) => crate::substrate::Base::Elastic(Material::new(
+                        m.youngs_modulus,
+                        m.poisson_ratio,
+                    )?),
+                };
+                Substrate::stack(&layers, base)
+            }
             SubstrateSpec::HalfSpace {
                 youngs_modulus,
                 poisson_ratio,

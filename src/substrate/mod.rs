@@ -105,6 +105,11 @@ pub const MAX_SHEAR_RATIO: f64 = 1e7;
 /// layer or elastic base below it: stiffer than that is a rigid base.
 pub const MIN_STACK_SHEAR_RATIO: f64 = 1e-60;
 
+/// The most layers a stack may have after merging: building its kernel
+/// costs about the square of the count (see
+/// [`doc::multilayer`](crate::doc::multilayer)).
+pub const MAX_STACK_LAYERS: usize = 64;
+
 /// The largest total thickness of a stack over its top layer's thickness:
 /// beyond, make the thick layer the (elastic) base.
 pub const MAX_STACK_DEPTH_RATIO: f64 = 1e12;
@@ -214,8 +219,9 @@ impl Substrate {
     /// stack on a rigid base that reduces to no layer;
     /// [`Error::InvalidParameter`] if the top layer is more than `1e7` times
     /// stiffer in shear than a layer or elastic base below it, or more than
-    /// `1e60` times softer (use a rigid base), or if the stack is more than
-    /// `1e12` times thicker than its top layer.
+    /// `1e60` times softer (use a rigid base), if the stack is more than
+    /// `1e12` times thicker than its top layer, or if more than
+    /// [`MAX_STACK_LAYERS`] layers remain after merging.
     pub fn stack(layers: &[(Material, f64)], base: Base) -> Result<Self> {
         for &(_, thickness) in layers {
             if thickness.is_nan() || thickness < 0.0 {
@@ -368,6 +374,13 @@ fn merge(layers: &[(Material, f64)], base: Base) -> (Vec<Layer>, Base) {
 
 /// The limits of [`Substrate::stack`] on moduli and thicknesses.
 pub(crate) fn check_stack(layers: &[Layer], base: &Base) -> Result<()> {
+    if layers.len() > MAX_STACK_LAYERS {
+        return Err(Error::InvalidParameter {
+            name: "number of layers (after merging)",
+            value: layers.len() as f64,
+            expected: "at most 64",
+        });
+    }
     let Some(top) = layers.first() else {
         return Ok(());
     };
