@@ -95,7 +95,7 @@ fn cases() -> Result<Vec<Case>> {
     cases.push(Case {
         name: "punch_half_space",
         scene: base(
-            half_space,
+            half_space.clone(),
             IndenterSpec::FlatPunch { radius: a },
             Adhesion::None,
             Protocol::Depth { depth: d },
@@ -253,7 +253,7 @@ fn sphere_pull_off_cases() -> Result<Vec<Case>> {
                 _ => "mesh",
             };
             let scene = Scene {
-                substrate,
+                substrate: substrate.clone(),
                 indenter: IndenterSpec::Paraboloid { radius: r },
                 adhesion: Adhesion::Constant {
                     work_of_adhesion: dgamma,

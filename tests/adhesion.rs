@@ -116,7 +116,7 @@ fn sphere_pull_off_on_a_half_space() {
         .unwrap()
         .pull_off_force();
     for cells in [16, 32, 64] {
-        let (scene, reference) = sphere_cycle(substrate, &exact, cells);
+        let (scene, reference) = sphere_cycle(substrate.clone(), &exact, cells);
         assert!((reference / closed_form - 1.0).abs() < 1e-9);
         let curve = scene.run(&mut |_| {}).unwrap();
         let error = pull_off(&curve) / closed_form - 1.0;
@@ -152,7 +152,7 @@ fn sphere_pull_off_on_layers() {
     ];
     for substrate in cases {
         let exact = Axisymmetric::new(&substrate.build().unwrap(), 20.0).unwrap();
-        let (scene, reference) = sphere_cycle(substrate, &exact, 64);
+        let (scene, reference) = sphere_cycle(substrate.clone(), &exact, 64);
         let curve = scene.run(&mut |_| {}).unwrap();
         let error = pull_off(&curve) / reference - 1.0;
         assert!(error.abs() < 0.005, "{substrate:?}: {error}");
@@ -299,7 +299,7 @@ fn flat_punch_pull_off_on_a_layer() {
         .pull_off_force(0.326);
     for cells in [32, 64] {
         let scene = Scene {
-            substrate,
+            substrate: substrate.clone(),
             indenter: IndenterSpec::FlatPunch { radius: a },
             adhesion: Adhesion::Hysteresis {
                 loading: 0.0175,

@@ -108,7 +108,8 @@ impl Material {
     }
 }
 
-/// The elastic body: a half-space, or a layer on a rigid or elastic base.
+/// The elastic body: a half-space, a layer, or a stack of bonded layers, on a
+/// rigid or elastic base.
 #[pyclass(module = "layered_contact._native", frozen)]
 #[derive(Clone)]
 struct Substrate {
@@ -140,6 +141,38 @@ impl Substrate {
             inner: lc::Substrate::layer_on_elastic_base(layer.inner, thickness, base.inner)
                 .py_err()?,
         })
+    }
+
+    /// Bonded `layers`, each `(material, thickness)` (m), top first, on an
+    /// elastic half-space of `base`, or on a rigid base when `base` is None.
+    /// Adjacent layers of one material merge; one layer left is a coating.
+    #[staticmethod]
+    #[pyo3(signature = (layers, base=None))]
+    fn stack(
+        layers: Vec<(PyRef<'_, Material>, f64)>,
+        base: Option<PyRef<'_, Material>>,
+    ) -> PyResult<Self> {
+        let layers: Vec<(lc::Material, f64)> = layers.iter().map(|(m, h)| (m.inner, *h)).collect();
+        let base = base.map_or(lc::Base::Rigid, |m| lc::Base::Elastic(m.inner));
+        Ok(Substrate {
+            inner: lc::Substrate::stack(&layers, base).py_err()?,
+        })
+    }
+
+    /// The number of layers (0 for a half-space).
+    #[getter]
+    fn layer_count(&self) -> usize {
+        match &self.inner {
+            lc::Substrate::HalfSpace(_) => 0,
+            lc::Substrate::Stack(stack) => stack.layers().len(),
+            _ => 1,
+        }
+    }
+
+    /// The total thickness of the layers (m); None for a half-space.
+    #[getter]
+    fn total_thickness(&self) -> Option<f64> {
+        self.inner.total_thickness()
     }
 
     fn __repr__(&self) -> String {
@@ -405,7 +438,7 @@ impl ContactSolver {
             fields: lc::solver::Fields::all(),
             ..lc::solver::SolverParams::default()
         };
-        let substrate = substrate.inner;
+        let substrate = substrate.inner.clone();
         let inner = py
             .detach(|| lc::solver::ContactSolver::new(&substrate, &grid, boundary, params))
             .py_err()?;
@@ -735,7 +768,7 @@ fn flat_punch_stiffness<'py>(
             .iter()
             .copied()
             .fold(0.0f64, |m, r| if r.is_finite() { m.max(r) } else { m });
-    let substrate = substrate.inner;
+    let substrate = substrate.inner.clone();
     let radii: Vec<f64> = radius.as_array().iter().copied().collect();
     let stiffness = py
         .detach(|| -> lc::Result<Vec<f64>> {
@@ -758,7 +791,7 @@ fn paraboloid_pull_off_force(
     radius: f64,
     work_of_adhesion: f64,
 ) -> PyResult<f64> {
-    let substrate = substrate.inner;
+    let substrate = substrate.inner.clone();
     py.detach(|| -> lc::Result<f64> {
         let jkr =
             lc::analytic::JkrSphere::new(substrate.surface_material(), radius, work_of_adhesion)?
@@ -784,7 +817,7 @@ fn paraboloid_state<'py>(
 ) -> PyResult<(Array<'py>, Array<'py>)> {
     let radii: Vec<f64> = contact_radius.as_array().iter().copied().collect();
     let largest = radii.iter().copied().fold(0.0f64, f64::max);
-    let substrate = substrate.inner;
+    let substrate = substrate.inner.clone();
     let states = py
         .detach(|| -> lc::Result<Vec<(f64, f64)>> {
             let exact = lc::analytic::Axisymmetric::up_to_contact_radius(&substrate, largest)?;
@@ -811,7 +844,7 @@ fn flat_punch_pull_off_force(
     radius: f64,
     work_of_adhesion: f64,
 ) -> PyResult<f64> {
-    let substrate = substrate.inner;
+    let substrate = substrate.inner.clone();
     py.detach(|| {
         let punch = lc::analytic::Axisymmetric::up_to_contact_radius(&substrate, radius)?
             .flat_punch(radius)?;

@@ -1,6 +1,6 @@
 """Type stubs of the compiled extension (see the Rust sources in python/rust/lib.rs)."""
 
-from typing import Any, Callable, Optional, Tuple
+from typing import Any, Callable, Optional, Sequence, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -25,6 +25,14 @@ class Substrate:
     def layer_on_rigid_base(layer: Material, thickness: float) -> Substrate: ...
     @staticmethod
     def layer_on_elastic_base(layer: Material, thickness: float, base: Material) -> Substrate: ...
+    @staticmethod
+    def stack(
+        layers: Sequence[tuple[Material, float]], base: Material | None = None
+    ) -> Substrate: ...
+    @property
+    def layer_count(self) -> int: ...
+    @property
+    def total_thickness(self) -> float | None: ...
 
 class Indenter:
     @staticmethod
