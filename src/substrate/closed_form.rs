@@ -132,7 +132,7 @@ impl CoatingFunctions {
     /// `Lambda_g` is the `Lambda(u)` of Lyashenko, Popov & Borysiuk (2023).
     ///
     /// # Errors
-    /// [`Error::InvalidPoissonRatio`] if `nu` is outside `[0, 0.5]`.
+    /// [`Error::InvalidPoissonRatio`](crate::Error::InvalidPoissonRatio) if `nu` is outside `[0, 0.5]`.
     pub fn rigid_base(nu: f64) -> Result<Self> {
         Ok(Self::from_constants(
             crate::error::poisson_ratio(nu)?,
