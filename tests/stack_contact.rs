@@ -172,6 +172,7 @@ fn paraboloid_on_stacks_matches_the_exact_solution() {
 /// reports against the exact stack solution. Measured: peak force
 /// +0.059 %, peak contact radius -0.81 %, pull-off -0.22 %; asserted 0.5 %,
 /// 1.5 % (one cell is 1.0 % of the peak radius) and 1 %.
+#[cfg(feature = "serde")]
 #[test]
 fn stack_scene_file_matches_the_exact_solution() {
     use layered_contact::scene::{Quantity, Scene};
