@@ -2,6 +2,8 @@
 //! operator against the dense O(N^2) sum, and the properties every compliance
 //! matrix must have (reciprocity, positive-definiteness).
 
+mod common;
+
 use std::f64::consts::PI;
 
 use gauss_quad::legendre::GaussLegendre;
@@ -20,15 +22,7 @@ fn coated(layer: Material, h: f64, base: Base) -> Substrate {
 /// `g(rho) = Integral_0^inf Lambda_g(u) J0(u rho) du` by direct quadrature
 /// (a different integrand, Bessel function and split from the library's).
 fn g_direct(f: &CoatingFunctions, rho: f64) -> f64 {
-    let rule = GaussLegendre::new(30.try_into().unwrap());
-    let width = (2.0 * PI / rho.max(1e-300)).min(0.5);
-    let panels = (60.0 / width).ceil() as usize;
-    (0..panels)
-        .map(|i| {
-            let a = i as f64 * width;
-            rule.integrate(a, a + width, |u| f.lambda(u) * libm::j0(u * rho))
-        })
-        .sum()
+    common::hankel_j0(|u| f.lambda(u), rho, 0.5)
 }
 
 /// Influence coefficients against an independent route: the layer's

@@ -2,6 +2,8 @@
 //! quadrature of the whole stack's Green's function, and the boundary-element
 //! solver against the exact axisymmetric solutions on three-layer stacks.
 
+mod common;
+
 use std::f64::consts::PI;
 
 use gauss_quad::legendre::GaussLegendre;
@@ -48,15 +50,7 @@ fn stacks() -> Vec<(&'static str, Substrate)> {
 /// direct quadrature (no split into interfaces, J0 instead of the disc
 /// integrals of J1).
 fn g_direct(f: &StackFunctions, rho: f64) -> f64 {
-    let rule = GaussLegendre::new(30.try_into().unwrap());
-    let width = (2.0 * PI / rho.max(1e-300)).min(0.25);
-    let panels = (60.0 / width).ceil() as usize;
-    (0..panels)
-        .map(|i| {
-            let a = i as f64 * width;
-            rule.integrate(a, a + width, |u| f.lambda(u) * libm::j0(u * rho))
-        })
-        .sum()
+    common::hankel_j0(|u| f.lambda(u), rho, 0.25)
 }
 
 /// Influence coefficients of both stacks against the top material's Love

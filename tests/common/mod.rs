@@ -46,3 +46,20 @@ pub fn bounded_case<T: Send + 'static>(label: &str, f: impl FnOnce() -> T + Send
         }
     }
 }
+
+/// `g(rho) = Integral_0^inf lambda(u) J0(u rho) du` by direct Gauss-Legendre
+/// quadrature on panels of at most `max_width` up to `u = 60` (where every
+/// tested `Lambda_g` is negligible): the independent route the kernel tests
+/// compare the influence coefficients' remainder with.
+#[allow(dead_code)]
+pub fn hankel_j0(lambda: impl Fn(f64) -> f64, rho: f64, max_width: f64) -> f64 {
+    let rule = gauss_quad::legendre::GaussLegendre::new(30.try_into().unwrap());
+    let width = (2.0 * std::f64::consts::PI / rho.max(1e-300)).min(max_width);
+    let panels = (60.0 / width).ceil() as usize;
+    (0..panels)
+        .map(|i| {
+            let a = i as f64 * width;
+            rule.integrate(a, a + width, |u| lambda(u) * libm::j0(u * rho))
+        })
+        .sum()
+}
