@@ -154,9 +154,10 @@
 //! * Building the kernels costs one single-layer table per interface, each
 //!   evaluation of `B_k` `k` layer steps: measured on this crate's 2-core
 //!   test machine for a 128 x 128 grid, alternating hard and soft layers on
-//!   steel: influence coefficients 0.083 s for one layer, 1.15 s for three,
-//!   3.9 s for six (criterion bench `stack_kernel`), 11 s for twelve and
-//!   39 s for 24 (single runs); the axisymmetric kernel (`a/h1` up to 5)
+//!   steel: influence coefficients 0.083 s for one layer, 0.77 s for three,
+//!   2.2 s for six (criterion bench `stack_kernel`); 11 s for twelve and
+//!   39 s for 24 in single runs before the per-layer factors were shared
+//!   between the two bodies of a term; the axisymmetric kernel (`a/h1` up to 5)
 //!   0.011 s, 0.25 s and 0.68 s for one, three and six; one value of `R(t)`
 //!   of a three-layer stack 0.33 microseconds.
 //! * Tests (`tests/stack.rs`, `tests/stack_contact.rs`): `R` and `Lambda_g`

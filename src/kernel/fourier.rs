@@ -64,11 +64,12 @@ impl FourierCompliance {
     /// `u_z(q)` for wavenumber `|q|` (rad/m), m^3/N.
     pub fn eval(&self, q: f64) -> f64 {
         let q = q.abs();
-        match &self.body {
-            Body::HalfSpace => 2.0 / (self.contact_modulus * q),
-            Body::Layer(h, functions) => 2.0 * h * functions.r_over_t(q * h) / self.contact_modulus,
-            Body::Stack(h, functions) => 2.0 * h * functions.r_over_t(q * h) / self.contact_modulus,
-        }
+        let (h, r_over_t) = match &self.body {
+            Body::HalfSpace => return 2.0 / (self.contact_modulus * q),
+            Body::Layer(h, functions) => (h, functions.r_over_t(q * h)),
+            Body::Stack(h, functions) => (h, functions.r_over_t(q * h)),
+        };
+        2.0 * h * r_over_t / self.contact_modulus
     }
 
     /// `u_z(0)`: finite only for a layer on a rigid base.

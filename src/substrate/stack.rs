@@ -290,20 +290,27 @@ fn right<S: Scalar>(p: &[M2<S>; 4], below: &M2<S>) -> M2<S> {
 /// map's fixed point) plus the congruence of the difference,
 /// `C_hs + e^(-2x) L^T (C - C_hs) R`, since the ratio's terms grow like `x`
 /// and cancel (3 digits lost at `x = 30`) while the congruence is damped by
-/// `e^(-2x)`.
-fn step<S: Scalar>(layer: &LayerShape, terms: &Terms<S>, below: &M2<S>) -> Split<S> {
-    let p = layer.propagator(terms);
+/// `e^(-2x)`. `p` is the layer's [`LayerShape::propagator`] and
+/// `right_below` its [`right`] factor of `below`, which the callers need
+/// too.
+fn step<S: Scalar>(
+    layer: &LayerShape,
+    terms: &Terms<S>,
+    p: &[M2<S>; 4],
+    below: &M2<S>,
+    right_below: &M2<S>,
+) -> Split<S> {
     if !terms.thick {
         return Split {
             half: [[0.0; 2]; 2],
-            deviation: mul(&add(&mul(&p[0], below), &p[1]), &right(&p, below)),
+            deviation: mul(&add(&mul(&p[0], below), &p[1]), right_below),
         };
     }
     let half: M2<S> = constant(&layer.half_space);
-    let left = right(&p, &half);
+    let left = right(p, &half);
     Split {
         half: layer.half_space,
-        deviation: congruence(terms.e2, &left, &sub(below, &half), &right(&p, below)),
+        deviation: congruence(terms.e2, &left, &sub(below, &half), right_below),
     }
 }
 
@@ -415,7 +422,11 @@ impl Shape {
         };
         for layer in self.layers[from..].iter().rev() {
             c = match terms(layer.tau) {
-                Some(t) => step(layer, &t, &c.whole()),
+                Some(t) => {
+                    let p = layer.propagator(&t);
+                    let below = c.whole();
+                    step(layer, &t, &p, &below, &right(&p, &below))
+                }
                 None => Split {
                     half: layer.half_space,
                     deviation: constant(&[[0.0; 2]; 2]),
@@ -465,16 +476,18 @@ impl Shape {
         // lies below it, Y the layer's own half-space.
         let mut y: M2<S> = constant(&layer.half_space);
         let p = layer.propagator(&t);
-        let mut d = congruence(t.e2, &right(&p, &y), &sub(&below, &y), &right(&p, &below));
-        let mut x = step(layer, &t, &below).whole();
+        let right_below = right(&p, &below);
+        let mut d = congruence(t.e2, &right(&p, &y), &sub(&below, &y), &right_below);
+        let mut x = step(layer, &t, &p, &below, &right_below).whole();
         for layer in self.layers[..k].iter().rev() {
             let Some(t) = terms(layer.tau) else {
                 return S::constant(0.0);
             };
             let p = layer.propagator(&t);
-            d = congruence(t.e2, &right(&p, &y), &d, &right(&p, &x));
-            y = step(layer, &t, &y).whole();
-            x = step(layer, &t, &x).whole();
+            let (right_y, right_x) = (right(&p, &y), right(&p, &x));
+            d = congruence(t.e2, &right_y, &d, &right_x);
+            y = step(layer, &t, &p, &y, &right_y).whole();
+            x = step(layer, &t, &p, &x, &right_x).whole();
         }
         d[1][1].scaled(1.0 / self.top_factor)
     }
