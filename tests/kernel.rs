@@ -6,7 +6,6 @@ mod common;
 
 use std::f64::consts::PI;
 
-use gauss_quad::legendre::GaussLegendre;
 use layered_contact::kernel::{ComplianceOperator, FourierCompliance, InfluenceCoefficients};
 use layered_contact::substrate::CoatingFunctions;
 use layered_contact::{Base, Boundary, Error, Grid, Material, Substrate};
@@ -41,7 +40,6 @@ fn coefficients_match_direct_quadrature() {
     let delta = 1e-4;
     let grid = Grid::new(8, 8, delta).unwrap();
     let half_space = InfluenceCoefficients::isolated(&Substrate::half_space(layer), &grid);
-    let rule = GaussLegendre::new(16.try_into().unwrap());
     for base in bases {
         let f = CoatingFunctions::new(&layer, &base);
         for h_over_delta in [0.5, 3.0, 100.0, 1e6] {
@@ -49,16 +47,7 @@ fn coefficients_match_direct_quadrature() {
             let k = InfluenceCoefficients::isolated(&coated(layer, h, base), &grid);
             for (di, dj) in [(0, 0), (1, 0), (2, 3), (7, 2)] {
                 let (x, y) = (di as f64 * delta, dj as f64 * delta);
-                let mut remainder = 0.0;
-                for x0 in [-0.5 * delta, 0.0] {
-                    for y0 in [-0.5 * delta, 0.0] {
-                        remainder += rule.integrate(x0, x0 + 0.5 * delta, |xi| {
-                            rule.integrate(y0, y0 + 0.5 * delta, |eta| {
-                                g_direct(&f, (x - xi).hypot(y - eta) / h)
-                            })
-                        });
-                    }
-                }
+                let remainder = common::cell_integral(|rho| g_direct(&f, rho), x, y, delta, h, 16);
                 let reference =
                     half_space.get(di, dj) - remainder / (PI * layer.contact_modulus() * h);
                 let error = (k.get(di, dj) - reference).abs() / half_space.get(0, 0);

@@ -63,3 +63,28 @@ pub fn hankel_j0(lambda: impl Fn(f64) -> f64, rho: f64, max_width: f64) -> f64 {
         })
         .sum()
 }
+
+/// `Integral over the cell of side delta centred on the origin of
+/// g(|(x, y) - p| / h) dp`, by `order x order` Gauss points on each quarter
+/// (the integrand's kink at the field point falls on the quarters' corners
+/// when the field point is the cell's centre).
+#[allow(dead_code)]
+pub fn cell_integral(
+    g: impl Fn(f64) -> f64,
+    x: f64,
+    y: f64,
+    delta: f64,
+    h: f64,
+    order: usize,
+) -> f64 {
+    let rule = gauss_quad::legendre::GaussLegendre::new(order.try_into().unwrap());
+    let mut total = 0.0;
+    for x0 in [-0.5 * delta, 0.0] {
+        for y0 in [-0.5 * delta, 0.0] {
+            total += rule.integrate(x0, x0 + 0.5 * delta, |xi| {
+                rule.integrate(y0, y0 + 0.5 * delta, |eta| g((x - xi).hypot(y - eta) / h))
+            });
+        }
+    }
+    total
+}
