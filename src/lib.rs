@@ -96,6 +96,7 @@ pub mod indenter;
 pub mod kernel;
 pub mod material;
 mod numerics;
+mod parallel;
 pub mod scene;
 pub mod solver;
 pub mod substrate;

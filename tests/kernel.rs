@@ -205,6 +205,15 @@ fn operator_matches_dense_sum() {
             let mut again = vec![0.0; grid.len()];
             operator.apply(&pressure, &mut again).unwrap();
             assert_eq!(u, again);
+            // Direct summation over every cell as a load: the dense sum's
+            // products added in the same order.
+            let influence = operator.influence().unwrap();
+            let loads: Vec<(usize, f64)> = pressure.iter().copied().enumerate().collect();
+            let mut direct = vec![0.0; grid.len()];
+            influence.add_loads(&loads, &mut direct);
+            for (a, b) in direct.iter().zip(&reference) {
+                assert!((a - b).abs() <= 1e-15 * scale, "{a:e} vs {b:e}");
+            }
         }
     }
 }
@@ -216,12 +225,16 @@ fn operator_matches_dense_sum() {
 #[test]
 fn periodic_operator_eigenvalues() {
     let layer = Material::new(1e6, 0.35).unwrap();
-    let (rows, columns, delta) = (12, 9, 1e-4);
-    let grid = Grid::new(rows, columns, delta).unwrap();
-    for substrate in [
-        Substrate::half_space(layer),
-        coated(layer, 2e-4, Base::Rigid),
+    // An odd and an even number of rows: the multipliers are stored for
+    // the non-negative row wavenumbers only and mirrored.
+    let delta = 1e-4;
+    for (rows, columns, substrate) in [
+        (12, 9, Substrate::half_space(layer)),
+        (12, 9, coated(layer, 2e-4, Base::Rigid)),
+        (9, 12, Substrate::half_space(layer)),
+        (9, 12, coated(layer, 2e-4, Base::Rigid)),
     ] {
+        let grid = Grid::new(rows, columns, delta).unwrap();
         let compliance = FourierCompliance::new(&substrate);
         let mut operator = ComplianceOperator::new(&substrate, &grid, Boundary::Periodic).unwrap();
         let (kx, ky) = (2.0, 3.0);

@@ -168,9 +168,11 @@ impl Convolution {
     }
 
     /// `output = IFFT2(multiplier * FFT2(input))` restricted to the data
-    /// cells, `input` zero-padded to the FFT grid; `multiplier` holds
-    /// `half x height` values (column-major over the half-spectrum), the
-    /// FFT normalisation included.
+    /// cells, `input` zero-padded to the FFT grid; the multiplier is even in
+    /// the row wavenumber (every multiplier here is: a function of `|q|`
+    /// times the cell's even filter) and given by its `height / 2 + 1` rows
+    /// of non-negative row wavenumbers for each of the `half` spectrum
+    /// columns (column-major), the FFT normalisation included.
     pub(super) fn apply(
         &mut self,
         input: &[f64],
@@ -233,11 +235,19 @@ impl Convolution {
                     line[rows..].fill(Complex::default());
                 }
                 forward.process_with_scratch(lines, &mut scratch.fft);
-                for (c, k) in lines
-                    .iter_mut()
-                    .zip(&multiplier[j0 * n0..(j0 + width) * n0])
+                // Row wavenumber index i > n0/2 has the multiplier of n0 - i.
+                let distinct = n0 / 2 + 1;
+                for (line, k) in lines
+                    .chunks_exact_mut(n0)
+                    .zip(multiplier[j0 * distinct..].chunks_exact(distinct))
                 {
-                    *c *= *k;
+                    let (low, high) = line.split_at_mut(distinct);
+                    for (c, k) in low.iter_mut().zip(k) {
+                        *c *= *k;
+                    }
+                    for (c, k) in high.iter_mut().zip(k[1..=n0 - distinct].iter().rev()) {
+                        *c *= *k;
+                    }
                 }
                 inverse.process_with_scratch(lines, &mut scratch.fft);
                 // Store the data rows as a row-major tile of `rows x width`.
@@ -288,11 +298,11 @@ impl Convolution {
         })
     }
 
-    /// The normalised real spectrum (`half x height`, column-major) of a
-    /// real kernel on the whole FFT grid that is even in the row index
-    /// (row `i` equals row `height - i`): `row(i, values)` fills row `i`
-    /// (`i <= height / 2`) of width `size.1`. The spectrum of an even kernel
-    /// is real; its imaginary rounding is dropped.
+    /// The normalised real spectrum of a real kernel on the whole FFT grid
+    /// that is even in the row index (row `i` equals row `height - i`),
+    /// laid out as [`Convolution::apply`] takes it: `row(i, values)` fills
+    /// row `i` (`i <= height / 2`) of width `size.1`. The spectrum of an
+    /// even kernel is real and even; its imaginary rounding is dropped.
     pub(super) fn even_kernel_spectrum(
         &mut self,
         row: impl Fn(usize, &mut [f64]),
@@ -309,15 +319,15 @@ impl Convolution {
                 .map_err(fft_error)?;
         }
         let normalisation = 1.0 / (n0 * n1) as f64;
-        let mut spectrum = zeroed(half * n0)?;
+        let mut spectrum = zeroed(half * distinct)?;
         let line = &mut scratch.lines[..n0];
-        for j in 0..half {
+        for (j, column) in spectrum.chunks_exact_mut(distinct).enumerate() {
             for (i, value) in line.iter_mut().enumerate() {
                 *value = row_spectra[i.min(n0 - i) * half + j];
             }
             self.column_forward
                 .process_with_scratch(line, &mut scratch.fft);
-            for (k, value) in spectrum[j * n0..(j + 1) * n0].iter_mut().zip(line.iter()) {
+            for (k, value) in column.iter_mut().zip(line.iter()) {
                 *k = value.re * normalisation;
             }
         }
@@ -336,9 +346,9 @@ pub(crate) fn wavenumber(index: usize, n: usize, delta: f64) -> f64 {
     2.0 * std::f64::consts::PI * k / (n as f64 * delta)
 }
 
-/// The multiplier `f(q_x, q_y)` at the wavevectors of an FFT grid of `size`
-/// with cells of side `delta`, divided by the FFT normalisation and laid out
-/// for [`Convolution::apply`].
+/// The multiplier `f(q_x, q_y)`, even in `q_x`, at the wavevectors of an FFT
+/// grid of `size` with cells of side `delta`, divided by the FFT
+/// normalisation and laid out for [`Convolution::apply`] (`q_x >= 0` only).
 ///
 /// # Errors
 /// [`Error::OutOfMemory`].
@@ -350,8 +360,9 @@ pub(super) fn multiplier(
     let (n0, n1) = size;
     let half = n1 / 2 + 1;
     let normalisation = 1.0 / (n0 * n1) as f64;
-    let mut values = zeroed(half * n0)?;
-    for (ky, column) in values.chunks_exact_mut(n0).enumerate() {
+    let distinct = n0 / 2 + 1;
+    let mut values = zeroed(half * distinct)?;
+    for (ky, column) in values.chunks_exact_mut(distinct).enumerate() {
         let qy = wavenumber(ky, n1, delta);
         for (kx, value) in column.iter_mut().enumerate() {
             *value = f(wavenumber(kx, n0, delta), qy) * normalisation;

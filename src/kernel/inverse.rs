@@ -17,6 +17,7 @@ use crate::error::Result;
 use super::convolution::{multiplier, wavenumber, zeroed, Convolution};
 use super::fourier::FourierCompliance;
 use super::operator::cell_filter;
+use crate::parallel::{for_each_row, map_rows};
 
 /// The approximate inverse on a box of a fixed size (plans, multiplier and
 /// box buffers), placed anywhere on a grid at each application.
@@ -78,7 +79,8 @@ impl BoxInverse {
     /// where `member` holds, with the box's first cell at grid cell
     /// `origin` (rows and columns, possibly negative: box cells off the grid
     /// are zero). Only members in the box are written: the box must hold
-    /// every member.
+    /// every member. Returns `(sum result, sum result * residual)` over the
+    /// members, added row by row in order (the same whatever the threads).
     ///
     /// # Errors
     /// As the FFT ([`Error::Internal`](crate::Error::Internal), a bug).
@@ -89,33 +91,68 @@ impl BoxInverse {
         member: &[bool],
         residual: &[f64],
         result: &mut [f64],
-    ) -> Result<()> {
+    ) -> Result<(f64, f64)> {
         let rows = residual.len() / columns.max(1);
         let (m0, m1) = self.size;
-        let cell = |bi: usize, bj: usize| -> Option<usize> {
-            let i = usize::try_from(origin.0 + bi as isize).ok()?;
-            let j = usize::try_from(origin.1 + bj as isize).ok()?;
-            (i < rows && j < columns).then_some(i * columns + j)
+        // The box columns on the grid, `first..last`, and the grid column
+        // of the first.
+        let first = usize::try_from(-origin.1).unwrap_or(0).min(m1);
+        let last = usize::try_from(columns as isize - origin.1)
+            .unwrap_or(0)
+            .clamp(first, m1);
+        let column = |bj: usize| (origin.1 + bj as isize) as usize;
+        // The grid row of box row `bi`, if on the grid.
+        let grid_row = |bi: usize| {
+            usize::try_from(origin.0 + bi as isize)
+                .ok()
+                .filter(|&i| i < rows)
         };
-        for bi in 0..m0 {
-            for bj in 0..m1 {
-                self.input[bi * m1 + bj] = match cell(bi, bj) {
-                    Some(c) if member[c] => residual[c],
-                    _ => 0.0,
-                };
-            }
-        }
-        self.convolution
-            .apply(&self.input, &mut self.output, &self.multiplier)?;
-        for bi in 0..m0 {
-            for bj in 0..m1 {
-                if let Some(c) = cell(bi, bj) {
-                    if member[c] {
-                        result[c] = self.output[bi * m1 + bj];
-                    }
+        for_each_row(&mut self.input, m1, |bi, line| {
+            line.fill(0.0);
+            if let Some(i) = grid_row(bi) {
+                let cells = i * columns + column(first)..i * columns + column(last);
+                for ((value, &m), &r) in line[first..last]
+                    .iter_mut()
+                    .zip(&member[cells.clone()])
+                    .zip(&residual[cells])
+                {
+                    *value = if m { r } else { 0.0 };
                 }
             }
-        }
-        Ok(())
+        });
+        self.convolution
+            .apply(&self.input, &mut self.output, &self.multiplier)?;
+        // Grid rows under the box.
+        let top = usize::try_from(origin.0).unwrap_or(0).min(rows);
+        let bottom = usize::try_from(origin.0 + m0 as isize)
+            .unwrap_or(0)
+            .clamp(top, rows);
+        let output = &self.output;
+        let sums = map_rows(
+            &mut result[top * columns..bottom * columns],
+            columns,
+            |r, row| {
+                let i = top + r;
+                let bi = (i as isize - origin.0) as usize;
+                let cells = column(first)..column(last);
+                let mut sums = (0.0, 0.0);
+                for (((out, &m), &r), &z) in row[cells.clone()]
+                    .iter_mut()
+                    .zip(&member[i * columns..][cells.clone()])
+                    .zip(&residual[i * columns..][cells])
+                    .zip(&output[bi * m1 + first..bi * m1 + last])
+                {
+                    if m {
+                        *out = z;
+                        sums.0 += z;
+                        sums.1 += z * r;
+                    }
+                }
+                sums
+            },
+        );
+        Ok(sums
+            .into_iter()
+            .fold((0.0, 0.0), |(s, d), (a, b)| (s + a, d + b)))
     }
 }

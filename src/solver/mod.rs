@@ -121,7 +121,8 @@ impl std::fmt::Debug for ContactSolver {
     }
 }
 
-/// Scratch vectors, one value per cell.
+/// Scratch vectors, one value per cell (empty when released).
+#[derive(Default)]
 struct Workspace {
     profile: Vec<f64>,
     displacement: Vec<f64>,
@@ -134,6 +135,21 @@ struct Workspace {
     target: Vec<f64>,
     /// Cells of the working set (in contact or overlapping).
     working: Vec<bool>,
+}
+
+impl Workspace {
+    fn new(n: usize) -> Result<Self> {
+        Ok(Workspace {
+            profile: cell_vector(n)?,
+            displacement: cell_vector(n)?,
+            gap: cell_vector(n)?,
+            direction: cell_vector(n)?,
+            response: cell_vector(n)?,
+            previous: cell_vector(n)?,
+            target: Vec::new(),
+            working: vec![false; n],
+        })
+    }
 }
 
 impl ContactSolver {
@@ -183,17 +199,16 @@ impl ContactSolver {
             substrate: substrate.clone(),
             coarse: None,
             surface_contact_modulus: substrate.surface_material().contact_modulus(),
-            workspace: Workspace {
-                profile: cell_vector(n)?,
-                displacement: cell_vector(n)?,
-                gap: cell_vector(n)?,
-                direction: cell_vector(n)?,
-                response: cell_vector(n)?,
-                previous: cell_vector(n)?,
-                target: Vec::new(),
-                working: vec![false; n],
-            },
+            workspace: Workspace::new(n)?,
         })
+    }
+
+    /// Frees the per-cell scratch vectors and the preconditioner (a coarse
+    /// solver between multi-resolution starts); the next solve allocates
+    /// them again.
+    fn release_scratch(&mut self) {
+        self.workspace = Workspace::default();
+        self.preconditioner = None;
     }
 
     /// The grid.
@@ -231,6 +246,9 @@ impl ContactSolver {
     /// Returns the smallest height.
     fn sample_profile<I: Indenter + ?Sized>(&mut self, indenter: &I) -> Result<f64> {
         let grid = *self.operator.grid();
+        if self.workspace.profile.len() != grid.len() {
+            self.workspace = Workspace::new(grid.len())?;
+        }
         let (lx, ly) = grid.extent();
         let columns = grid.columns();
         let mut lowest = f64::INFINITY;

@@ -49,6 +49,23 @@ pub(super) struct WorkingSet {
     pub(super) gap_sum: f64,
     /// Whether a member carries no pressure (new overlap).
     pub(super) overlap: bool,
+    /// The rows `(first, last)` and columns `(first, last)` of the members,
+    /// `None` if there are none.
+    pub(super) bounds: Option<Bounds>,
+}
+
+/// Rows `(first, last)` and columns `(first, last)` of a set of cells.
+pub(super) type Bounds = ((usize, usize), (usize, usize));
+
+/// The bounds of two sets' union.
+fn union(a: Option<Bounds>, b: Option<Bounds>) -> Option<Bounds> {
+    match (a, b) {
+        (Some(((r0, r1), (c0, c1))), Some(((s0, s1), (d0, d1)))) => {
+            Some(((r0.min(s0), r1.max(s1)), (c0.min(d0), c1.max(d1))))
+        }
+        (a, None) => a,
+        (None, b) => b,
+    }
 }
 
 /// `(sum of profile + u, count)` over the cells that carry pressure.
@@ -64,20 +81,27 @@ pub(super) fn contact_sum(profile: &[f64], displacement: &[f64], pressure: &[f64
 }
 
 /// Gaps `profile - reference + u` on reachable cells (0 elsewhere) and the
-/// working set: reachable cells in contact or overlapping.
+/// working set: reachable cells in contact or overlapping, on a row-major
+/// grid of `columns` columns.
+#[allow(clippy::too_many_arguments)]
 pub(super) fn gaps_and_working_set(
     profile: &[f64],
     displacement: &[f64],
     pressure: &[f64],
     reachable: &[bool],
     reference: f64,
+    columns: usize,
     gap: &mut [f64],
     working: &mut [bool],
 ) -> WorkingSet {
     let pass = |(k, (gap, working)): (usize, (&mut [f64], &mut [bool]))| {
         let mut set = WorkingSet::default();
+        let first = k * CHUNK;
+        // The row and column of cell `c`, kept by counting.
+        let (mut row, mut column) = (first / columns, first % columns);
+        let (mut rows, mut cols) = ((usize::MAX, 0), (usize::MAX, 0));
         for (i, (g, w)) in gap.iter_mut().zip(working.iter_mut()).enumerate() {
-            let c = k * CHUNK + i;
+            let c = first + i;
             *g = if reachable[c] {
                 profile[c] - reference + displacement[c]
             } else {
@@ -89,8 +113,16 @@ pub(super) fn gaps_and_working_set(
                 set.members += 1;
                 set.gap_sum += *g;
                 set.overlap |= open;
+                rows = (rows.0.min(row), row);
+                cols = (cols.0.min(column), cols.1.max(column));
+            }
+            column += 1;
+            if column == columns {
+                column = 0;
+                row += 1;
             }
         }
+        set.bounds = (set.members > 0).then_some((rows, cols));
         set
     };
     let parts: Vec<WorkingSet> = chunks_mut!(gap)
@@ -104,6 +136,7 @@ pub(super) fn gaps_and_working_set(
             members: a.members + b.members,
             gap_sum: a.gap_sum + b.gap_sum,
             overlap: a.overlap | b.overlap,
+            bounds: union(a.bounds, b.bounds),
         })
 }
 
@@ -163,8 +196,8 @@ pub(super) fn update_direction(
 /// What a step did.
 #[derive(Debug, Clone, Copy, Default)]
 pub(super) struct Step {
-    /// Whether clamping changed a pressure off the search direction.
-    pub(super) corrected: bool,
+    /// Cells where clamping changed a pressure off the search direction.
+    pub(super) corrected: usize,
     /// Sum of the absolute pressure changes.
     pub(super) change: f64,
     /// Sum of the new pressures.
@@ -209,7 +242,7 @@ pub(super) fn step(
             p[i] = new;
             u[i] -= step * response[c];
             corr[i] = new - stepped;
-            s.corrected |= corr[i] != 0.0;
+            s.corrected += usize::from(corr[i] != 0.0);
             s.change += (new - old).abs();
             s.size += new;
             s.contact += usize::from(new > 0.0);
@@ -224,11 +257,21 @@ pub(super) fn step(
         .map(pass)
         .collect();
     parts.into_iter().fold(Step::default(), |a, b| Step {
-        corrected: a.corrected | b.corrected,
+        corrected: a.corrected + b.corrected,
         change: a.change + b.change,
         size: a.size + b.size,
         contact: a.contact + b.contact,
     })
+}
+
+/// The nonzero values and their cells, in cell order.
+pub(super) fn nonzeros(values: &[f64]) -> Vec<(usize, f64)> {
+    map_chunks(values.len(), |r| {
+        r.filter(|&c| values[c] != 0.0)
+            .map(|c| (c, values[c]))
+            .collect::<Vec<_>>()
+    })
+    .concat()
 }
 
 /// `values += add`.

@@ -8,6 +8,7 @@ use crate::grid::{fft_friendly, Boundary, Grid};
 use crate::indenter::Indenter;
 use crate::kernel::BoxInverse;
 
+use super::passes::Bounds;
 use super::{
     check_finite, passes, ContactSolver, Fields, IterationInfo, Observer, Solution, SolverParams,
     WarmStart,
@@ -148,11 +149,14 @@ impl ContactSolver {
             self.coarse = Some(coarse);
         }
         let coarse = self.coarse.as_mut()?.as_mut()?;
-        let (solution, warm) = match control {
+        let solved = match control {
             Control::Depth(d) => coarse.solve_depth(indenter, d, None, &mut ()),
             Control::Force(w) => coarse.solve_force(indenter, w, None, &mut ()),
-        }
-        .ok()?;
+        };
+        // The coarse solver keeps its kernel and plans, not its scratch,
+        // while the finer solve runs.
+        coarse.release_scratch();
+        let (solution, warm) = solved.ok()?;
         let half = columns / 2;
         let pressure: Vec<f64> = (0..rows * columns)
             .map(|c| warm.pressure[(c / columns / 2) * half + (c % columns) / 2])
@@ -171,6 +175,7 @@ impl ContactSolver {
         observer: &mut dyn Observer,
     ) -> Result<(Solution, WarmStart)> {
         let n = self.grid().len();
+        let columns = self.grid().columns();
         let area = self.grid().cell_area();
         let reachable = self.reachable();
         let mut pressure = self.initial_pressure(control, warm, &reachable);
@@ -226,6 +231,7 @@ impl ContactSolver {
                 &pressure,
                 &reachable,
                 reference,
+                columns,
                 &mut ws.gap,
                 &mut ws.working,
             );
@@ -243,9 +249,8 @@ impl ContactSolver {
             // z = P M^-1 P r in `response`; under force control projected
             // too (its mean taken out of the direction; the product r.z is
             // unchanged as r has zero sum).
-            self.precondition_working_set()?;
+            let (z_sum, rz) = self.precondition_working_set(set.bounds)?;
             let ws = &mut self.workspace;
-            let (z_sum, rz) = passes::sum_and_dot(&ws.working, &ws.response, &ws.gap);
             let z_shift = if force_control {
                 z_sum / set.members as f64
             } else {
@@ -293,9 +298,18 @@ impl ContactSolver {
                 &mut ws.gap,
                 &mut ws.previous,
             );
-            if stats.corrected {
-                self.operator.apply(&ws.gap, &mut ws.response)?;
-                passes::add(&mut ws.displacement, &ws.response);
+            if stats.corrected > 0 {
+                match self.operator.influence() {
+                    // A few clamped cells: their displacements by direct
+                    // summation, cheaper than a convolution.
+                    Some(k) if self.operator.direct_sum_is_cheaper(stats.corrected) => {
+                        k.add_loads(&passes::nonzeros(&ws.gap), &mut ws.displacement);
+                    }
+                    _ => {
+                        self.operator.apply(&ws.gap, &mut ws.response)?;
+                        passes::add(&mut ws.displacement, &ws.response);
+                    }
+                }
             }
             if let Control::Force(w) = control {
                 let total = area * stats.size;
@@ -398,18 +412,18 @@ impl ContactSolver {
     /// ([`BoxInverse`]; the whole grid when periodic). The box is rebuilt
     /// only when the set outgrows it or shrinks to less than 1/2.25 of its
     /// area.
-    fn precondition_working_set(&mut self) -> Result<()> {
+    fn precondition_working_set(&mut self, bounds: Option<Bounds>) -> Result<(f64, f64)> {
         let grid = *self.grid();
         let (rows, columns) = (grid.rows(), grid.columns());
         let periodic = self.operator.boundary() == Boundary::Periodic;
         let ws = &mut self.workspace;
         if !self.params.precondition {
             ws.response.copy_from_slice(&ws.gap);
-            return Ok(());
+            return Ok(passes::sum_and_dot(&ws.working, &ws.response, &ws.gap));
         }
-        let Some(bounds) = bounding_box(&ws.working, columns) else {
+        let Some(bounds) = bounds else {
             ws.response.fill(0.0);
-            return Ok(());
+            return Ok((0.0, 0.0));
         };
         // A margin of a sixteenth of the extent (at least 4 cells) keeps
         // the box's periodic images apart; the stiffness decays like 1/r^3.
@@ -437,7 +451,7 @@ impl ContactSolver {
             )?);
         }
         let Some(inverse) = self.preconditioner.as_mut() else {
-            return Ok(());
+            return Ok((0.0, 0.0));
         };
         // The box centred on the working set (at the origin when periodic).
         let (m0, m1) = inverse.size();
@@ -499,21 +513,4 @@ fn rescale(values: &mut [f64], factor: f64) {
     for v in values {
         *v *= factor;
     }
-}
-
-/// The rows `(first, last)` and columns `(first, last)` of the cells where
-/// `member` holds on a row-major grid of `columns` columns, `None` if none.
-fn bounding_box(member: &[bool], columns: usize) -> Option<((usize, usize), (usize, usize))> {
-    let mut bounds: Option<((usize, usize), (usize, usize))> = None;
-    for (i, row) in member.chunks_exact(columns).enumerate() {
-        let Some(first) = row.iter().position(|m| *m) else {
-            continue;
-        };
-        let last = row.iter().rposition(|m| *m).unwrap_or(first);
-        bounds = Some(match bounds {
-            None => ((i, i), (first, last)),
-            Some(((r0, _), (c0, c1))) => ((r0, i), (c0.min(first), c1.max(last))),
-        });
-    }
-    bounds
 }
