@@ -94,30 +94,38 @@
 //! the solution on the grid of half the cells each way (recursively down to
 //! 64 cells). On the peers' Hertz benchmark (paraboloid on a half-space,
 //! contact radius a quarter of the grid, tolerance 1e-8) it takes 11 to 15
-//! iterations from N = 256 to N = 4096, each about one operator application
-//! (one padded `2N x 2N` FFT round trip) plus a periodic FFT round trip on
-//! the box and a few passes over the cells. Measured on this 2-core machine
-//! (one thread / two threads, force control, coarse solvers built):
+//! iterations from N = 256 to N = 4096. Each applies the operator once to
+//! the search direction (one padded `2N x 2N` FFT round trip), once more when
+//! clamping at zero moved pressures off that direction (by direct summation
+//! over the influence coefficients when few cells clamped, see
+//! [`InfluenceCoefficients::add_loads`](crate::kernel::InfluenceCoefficients::add_loads)),
+//! plus a periodic FFT round trip on the contact's box and a few passes over
+//! the cells: 1.8 to 2.3 operator applications per iteration at N = 1024
+//! (criterion, `benches/solver.rs`). Measured on this 2-core machine (one
+//! thread / two threads, force control, coarse solvers built; the machine
+//! ran slower than usual during this run):
 //!
 //! | N | iterations | time, 1 thread | time, 2 threads | peak memory |
 //! |---|---|---|---|---|
-//! | 256 | 13 | 0.05 s | 0.04 s | 17 MB |
-//! | 512 | 12 | 0.23 s | 0.13 s | 55 MB |
-//! | 1024 | 12 | 1.07 s | 0.60 s | 201 MB |
-//! | 2048 | 12 | 5.6 s | 3.6 s | 758 MB |
-//! | 4096 | 12 | 31 s | 16 s | 2986 MB |
+//! | 256 | 13 | 0.05 s | 0.04 s | 15 MB |
+//! | 512 | 12 | 0.23 s | 0.15 s | 44 MB |
+//! | 1024 | 12 | 0.99 s | 0.52 s | 157 MB |
+//! | 2048 | 12 | 6.4 s | 3.1 s | 595 MB |
+//! | 4096 | 12 | 41 s | 24 s | 2331 MB |
 //!
-//! A solver needs about 180-190 bytes per cell of the unpadded grid: the
-//! operator's two half-spectra of the grid's rows and its kernel spectrum
-//! (48 bytes), the influence coefficients (8), the solver's per-cell vectors
-//! (about 75), the preconditioner's box and the coarser solvers (a third
-//! more). [`kernel::memory_estimate`](crate::kernel::memory_estimate) gives
-//! the estimate a solver reserves before allocating.
+//! A solver needs about 150 bytes per cell of the unpadded grid from
+//! N = 1024 up: the operator's two half-spectra of the grid's rows (32
+//! bytes) and its kernel spectrum (8: it is even, and only its non-negative
+//! row wavenumbers are kept), the influence coefficients (8), the solver's
+//! per-cell vectors (about 75), and the preconditioner's box; the coarser
+//! solvers of the multi-resolution start keep only their kernels and plans
+//! between starts. [`kernel::memory_estimate`](crate::kernel::memory_estimate)
+//! gives the estimate a solver reserves before allocating.
 //!
 //! Rough contacts (a self-affine surface of Hurst exponent 0.8 down to four
 //! cells, on a film on a rigid base, force control, two threads) take more
 //! iterations, growing with the grid as the surface gains roughness: 44 at
-//! `N = 1024` (4.5 s), 60 at 2048 (26 s), 102 at 4096 (208 s, 3.6 GB, 228
+//! `N = 1024` (6.1 s), 60 at 2048 (34 s), 102 at 4096 (213 s, 2.8 GB, 177
 //! bytes per cell including the height map); a periodic `8192 x 8192` cell
 //! converges in 229 iterations (23 min, 10.8 GB). Tables in
 //! `BENCHMARKS.md`.

@@ -22,4 +22,7 @@ pub(crate) use convolution::wavenumber;
 pub use fourier::FourierCompliance;
 pub use influence::InfluenceCoefficients;
 pub(crate) use inverse::BoxInverse;
-pub use operator::{check_film, memory_estimate, ComplianceOperator, MIN_THICKNESS_OVER_SPACING};
+pub use operator::{
+    check_film, memory_estimate, ComplianceOperator, DIRECT_LOADS_PER_LOG2,
+    MIN_THICKNESS_OVER_SPACING,
+};
