@@ -411,7 +411,8 @@ impl ContactSolver {
     /// compliance's inverse on a periodic box around the working set
     /// ([`BoxInverse`]; the whole grid when periodic). The box is rebuilt
     /// only when the set outgrows it or shrinks to less than 1/2.25 of its
-    /// area.
+    /// area. Returns `(sum z, sum z gap)` over the working set; `bounds`
+    /// is the working set's bounding box (from the gap pass).
     fn precondition_working_set(&mut self, bounds: Option<Bounds>) -> Result<(f64, f64)> {
         let grid = *self.grid();
         let (rows, columns) = (grid.rows(), grid.columns());
