@@ -160,3 +160,34 @@ pub(crate) fn fft_friendly(n: usize) -> usize {
         })
         .unwrap_or(n)
 }
+
+/// The smallest even number of cells `>= n` whose half is
+/// [`fft_friendly`]: a real-to-complex FFT of an even length is a complex
+/// FFT of half the length, of an odd one a complex FFT of the whole (at
+/// 1024 cells' spacing, a periodic convolution on 625 x 625 cells took 2.2
+/// times as long as on 640 x 640).
+pub(crate) fn fft_friendly_even(n: usize) -> usize {
+    2 * fft_friendly(n.div_ceil(2))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{fft_friendly, fft_friendly_even};
+
+    /// Whether `m` has no prime factor above 7, by trial division.
+    fn smooth(m: usize) -> bool {
+        (2..=m).all(|p| m % p != 0 || p <= 7 || (2..p).any(|d| p % d == 0))
+    }
+
+    /// Against a brute-force search: the least admissible size at or above
+    /// `n`, for every `n` up to 1000.
+    #[test]
+    fn fft_friendly_sizes_are_the_least_admissible() {
+        for n in 1..=1000 {
+            let plain = (n..).find(|&m| smooth(m)).unwrap();
+            assert_eq!(fft_friendly(n), plain, "{n}");
+            let even = (n..).find(|&m| m % 2 == 0 && smooth(m / 2)).unwrap();
+            assert_eq!(fft_friendly_even(n), even, "{n}");
+        }
+    }
+}
