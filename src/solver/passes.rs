@@ -208,9 +208,45 @@ pub(super) struct Step {
 
 /// The step `p -= step t` on the working set, clamped at zero; `u -= step
 /// K t`; `correction` gets what the clamping added (to apply `K` to);
-/// `previous` the old pressures.
+/// `previous` the old pressures. Pressures, `previous` and the statistics
+/// only on `cells`, which must hold the working set and every pressure;
+/// `correction` is 0 outside them.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn step(
+    cells: Range<usize>,
+    working: &[bool],
+    direction: &[f64],
+    response: &[f64],
+    step: f64,
+    pressure: &mut [f64],
+    displacement: &mut [f64],
+    correction: &mut [f64],
+    previous: &mut [f64],
+) -> Step {
+    let (lo, hi) = (cells.start, cells.end);
+    for outside in [0..lo, hi..displacement.len()] {
+        axpy(
+            &mut displacement[outside.clone()],
+            -step,
+            &response[outside.clone()],
+        );
+        correction[outside].fill(0.0);
+    }
+    step_on(
+        &working[cells.clone()],
+        &direction[cells.clone()],
+        &response[cells.clone()],
+        step,
+        &mut pressure[cells.clone()],
+        &mut displacement[cells.clone()],
+        &mut correction[cells.clone()],
+        &mut previous[cells],
+    )
+}
+
+/// [`step`] on every cell of the slices.
+#[allow(clippy::too_many_arguments)]
+fn step_on(
     working: &[bool],
     direction: &[f64],
     response: &[f64],
@@ -264,29 +300,55 @@ pub(super) fn step(
     })
 }
 
-/// The nonzero values and their cells, in cell order.
-pub(super) fn nonzeros(values: &[f64]) -> Vec<(usize, f64)> {
+/// The nonzero values and their cells (`first` + index), in cell order.
+pub(super) fn nonzeros(values: &[f64], first: usize) -> Vec<(usize, f64)> {
     map_chunks(values.len(), |r| {
         r.filter(|&c| values[c] != 0.0)
-            .map(|c| (c, values[c]))
+            .map(|c| (first + c, values[c]))
             .collect::<Vec<_>>()
     })
     .concat()
 }
 
-/// `values += add`.
-pub(super) fn add(values: &mut [f64], add: &[f64]) {
+/// `values += factor * add`.
+pub(super) fn axpy(values: &mut [f64], factor: f64, add: &[f64]) {
     let pass = |(k, values): (usize, &mut [f64])| {
         for (i, v) in values.iter_mut().enumerate() {
-            *v += add[k * CHUNK + i];
+            *v += factor * add[k * CHUNK + i];
         }
     };
     chunks_mut!(values).enumerate().for_each(pass);
 }
 
+/// `values *= factor`.
+fn scale(values: &mut [f64], factor: f64) {
+    chunks_mut!(values).for_each(|chunk| chunk.iter_mut().for_each(|v| *v *= factor));
+}
+
 /// Scales `pressure` and `displacement` by `factor`; returns `(sum |p -
-/// previous|, sum p)` of the scaled pressure.
+/// previous|, sum p)` of the scaled pressure. The pressures only on
+/// `cells`, which must hold every pressure.
 pub(super) fn rescale(
+    cells: Range<usize>,
+    pressure: &mut [f64],
+    displacement: &mut [f64],
+    previous: &[f64],
+    factor: f64,
+) -> (f64, f64) {
+    let (lo, hi) = (cells.start, cells.end);
+    for outside in [0..lo, hi..displacement.len()] {
+        scale(&mut displacement[outside], factor);
+    }
+    rescale_on(
+        &mut pressure[cells.clone()],
+        &mut displacement[cells.clone()],
+        &previous[cells],
+        factor,
+    )
+}
+
+/// [`rescale`] on every cell of the slices.
+fn rescale_on(
     pressure: &mut [f64],
     displacement: &mut [f64],
     previous: &[f64],

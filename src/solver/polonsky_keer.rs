@@ -219,6 +219,11 @@ impl ContactSolver {
             Control::Force(_) => 0.0,
         };
         let mut residual = f64::INFINITY;
+        // The cells where the pressure and the search direction may be
+        // nonzero (whole rows): the passes that only concern the working
+        // set run on its rows.
+        let mut pressure_cells = 0..n;
+        let mut direction_cells = 0..0;
         // u = K p is kept up to date incrementally: one operator application
         // per iteration (K t), plus one only when clamping changed the
         // pressure off the search direction, and a full refresh every
@@ -236,8 +241,12 @@ impl ContactSolver {
             let reference = match control {
                 Control::Depth(d) => d,
                 Control::Force(_) => {
-                    let (sum, contact) =
-                        passes::contact_sum(&ws.profile, &ws.displacement, &pressure);
+                    let cells = pressure_cells.clone();
+                    let (sum, contact) = passes::contact_sum(
+                        &ws.profile[cells.clone()],
+                        &ws.displacement[cells.clone()],
+                        &pressure[cells],
+                    );
                     if contact == 0 {
                         return Err(Error::Internal {
                             what: "constrained conjugate gradients",
@@ -269,9 +278,15 @@ impl ContactSolver {
                 // depth a hair's breadth past first contact.
                 return self.converged(control, pressure, depth, iteration, 0.0);
             }
+            // The working set's rows (it has members, so bounds).
+            let working_cells = set.bounds.map_or(0..n, |((first, last), _)| {
+                first * columns..(last + 1) * columns
+            });
             if force_control {
                 // The gradient projected on loads of zero net force.
-                passes::shift_on(&ws.working, &mut ws.gap, set.gap_sum / set.members as f64);
+                let cells = working_cells.clone();
+                let shift = set.gap_sum / set.members as f64;
+                passes::shift_on(&ws.working[cells.clone()], &mut ws.gap[cells], shift);
             }
             // z = P M^-1 P r in `response`; under force control projected
             // too (its mean taken out of the direction; the product r.z is
@@ -297,10 +312,26 @@ impl ContactSolver {
                 rz / rz_old
             };
             rz_old = rz;
-            passes::update_direction(&ws.working, &ws.response, z_shift, beta, &mut ws.direction);
+            // The direction is zero off the working set: only the rows of
+            // the old and the new one are written.
+            let cells = direction_cells.start.min(working_cells.start)
+                ..direction_cells.end.max(working_cells.end);
+            passes::update_direction(
+                &ws.working[cells.clone()],
+                &ws.response[cells.clone()],
+                z_shift,
+                beta,
+                &mut ws.direction[cells],
+            );
+            direction_cells = working_cells.clone();
             self.operator.apply(&ws.direction, &mut ws.response)?;
-            let (numerator, denominator) =
-                passes::two_dots(&ws.working, &ws.gap, &ws.response, &ws.direction);
+            let cells = working_cells.clone();
+            let (numerator, denominator) = passes::two_dots(
+                &ws.working[cells.clone()],
+                &ws.gap[cells.clone()],
+                &ws.response[cells.clone()],
+                &ws.direction[cells],
+            );
             let step = if denominator > 0.0 {
                 numerator / denominator
             } else if numerator == 0.0 {
@@ -316,6 +347,7 @@ impl ContactSolver {
             // correction being what clamping added to p - step t (`gap`
             // holds it).
             let mut stats = passes::step(
+                working_cells.clone(),
                 &ws.working,
                 &ws.direction,
                 &ws.response,
@@ -325,16 +357,20 @@ impl ContactSolver {
                 &mut ws.gap,
                 &mut ws.previous,
             );
+            // Pressures are now zero off the working set.
+            pressure_cells = working_cells.clone();
             if stats.corrected > 0 {
                 match self.operator.influence() {
                     // A few clamped cells: their displacements by direct
                     // summation, cheaper than a convolution.
                     Some(k) if self.operator.direct_sum_is_cheaper(stats.corrected) => {
-                        k.add_loads(&passes::nonzeros(&ws.gap), &mut ws.displacement);
+                        let cells = working_cells.clone();
+                        let loads = passes::nonzeros(&ws.gap[cells.clone()], cells.start);
+                        k.add_loads(&loads, &mut ws.displacement);
                     }
                     _ => {
                         self.operator.apply(&ws.gap, &mut ws.response)?;
-                        passes::add(&mut ws.displacement, &ws.response);
+                        passes::axpy(&mut ws.displacement, 1.0, &ws.response);
                     }
                 }
             }
@@ -342,6 +378,7 @@ impl ContactSolver {
                 let total = area * stats.size;
                 if total > 0.0 {
                     (stats.change, stats.size) = passes::rescale(
+                        working_cells.clone(),
                         &mut pressure,
                         &mut ws.displacement,
                         &ws.previous,
