@@ -95,13 +95,20 @@
 //! 64 cells). On the peers' Hertz benchmark (paraboloid on a half-space,
 //! contact radius a quarter of the grid, tolerance 1e-8) it takes 11 to 15
 //! iterations from N = 256 to N = 4096. Each applies the operator once to
-//! the search direction (one padded `2N x 2N` FFT round trip), once more when
+//! the search direction (0.6 to 0.7 of a plain FFT round trip of the padded
+//! `2N x 2N` grid: only the data rows are transformed), once more when
 //! clamping at zero moved pressures off that direction (by direct summation
 //! over the influence coefficients when few cells clamped, see
 //! [`InfluenceCoefficients::add_loads`](crate::kernel::InfluenceCoefficients::add_loads)),
 //! plus a periodic FFT round trip on the contact's box and a few passes over
-//! the cells: 1.8 to 2.3 operator applications per iteration at N = 1024
-//! (criterion, `benches/solver.rs`). Measured on this 2-core machine (one
+//! the working set's rows. One thread, an iteration costs 1.11 (N = 512) and
+//! 1.04 (N = 1024) plain padded round trips from the multi-resolution
+//! start, 1.12 and 1.02 warm-started, and 1.50 and 1.52 without the
+//! multi-resolution start, when the contact set changes in most iterations
+//! (criterion, `benches/solver.rs`). A warm start goes through the coarse
+//! grids as well (see
+//! [`ContactSolver::solve_depth`](crate::solver::ContactSolver::solve_depth)). Whole solves on this
+//! 2-core machine (one
 //! thread / two threads, force control, coarse solvers built; the machine
 //! ran slower than usual during this run):
 //!

@@ -48,7 +48,14 @@ impl ContactSolver {
     ///
     /// A depth at which the indenter does not yet touch gives a solution
     /// without contact (force 0). `warm` starts the iteration from a previous
-    /// solution (any depth) on the same grid.
+    /// solution (any depth) on the same grid. On an even grid of at least
+    /// [`MULTIRESOLUTION_CELLS`] cells each way the start is corrected on
+    /// the grid of half the cells first (the coarse solve starts from the
+    /// warm pressures averaged over its cells, the fine one from the warm
+    /// pressures plus the coarse solve's change: Brandt 1977, Math. Comp.
+    /// 31, 333-390): the fine iterations then start with nearly the final
+    /// contact instead of clamping their way back from the overlap of the
+    /// new load.
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for a non-finite depth or an indenter
@@ -74,7 +81,7 @@ impl ContactSolver {
 
     /// Non-adhesive contact under total force `force` (N, `>= 0`); the depth
     /// is part of the solution. Zero force gives the first-contact depth and
-    /// no contact.
+    /// no contact. `warm` as in [`ContactSolver::solve_depth`].
     ///
     /// # Errors
     /// As [`ContactSolver::solve_depth`], and [`Error::InvalidParameter`] for
