@@ -107,18 +107,17 @@
 //! multi-resolution start, when the contact set changes in most iterations
 //! (criterion, `benches/solver.rs`). A warm start goes through the coarse
 //! grids as well (see
-//! [`ContactSolver::solve_depth`](crate::solver::ContactSolver::solve_depth)). Whole solves on this
-//! 2-core machine (one
-//! thread / two threads, force control, coarse solvers built; the machine
-//! ran slower than usual during this run):
+//! [`ContactSolver::solve_depth`](crate::solver::ContactSolver::solve_depth)).
+//! Whole solves on this 2-core machine (one thread / two threads, force
+//! control, coarse solvers built):
 //!
 //! | N | iterations | time, 1 thread | time, 2 threads | peak memory |
 //! |---|---|---|---|---|
-//! | 256 | 13 | 0.05 s | 0.04 s | 15 MB |
-//! | 512 | 12 | 0.23 s | 0.15 s | 44 MB |
-//! | 1024 | 12 | 0.99 s | 0.52 s | 157 MB |
-//! | 2048 | 12 | 6.4 s | 3.1 s | 595 MB |
-//! | 4096 | 12 | 41 s | 24 s | 2331 MB |
+//! | 256 | 13 | 0.04 s | 0.03 s | 14 MB |
+//! | 512 | 12 | 0.17 s | 0.10 s | 43 MB |
+//! | 1024 | 12 | 0.78 s | 0.42 s | 157 MB |
+//! | 2048 | 12 | 4.0 s | 2.2 s | 595 MB |
+//! | 4096 | 12 | 21.5 s | 11.4 s | 2331 MB |
 //!
 //! A solver needs about 150 bytes per cell of the unpadded grid from
 //! N = 1024 up: the operator's two half-spectra of the grid's rows (32

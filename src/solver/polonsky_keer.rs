@@ -3,6 +3,8 @@
 //! a box around the contact (Vollebregt 2014, J. Comput. Phys. 257,
 //! 333-351), with a multi-resolution start.
 
+use std::ops::Range;
+
 use crate::error::{Error, Result};
 use crate::grid::{fft_friendly_even, Boundary, Grid};
 use crate::indenter::Indenter;
@@ -164,6 +166,7 @@ impl ContactSolver {
                 .map(Box::new);
             self.coarse = Some(coarse);
         }
+        let coarse = self.coarse.as_mut()?.as_mut()?;
         // The coarse cell of fine cell `c`.
         let half = columns / 2;
         let block = |c: usize| (c / columns / 2) * half + (c % columns) / 2;
@@ -175,7 +178,6 @@ impl ContactSolver {
             let attached = pressure.iter().map(|p| *p > 0.0).collect();
             WarmStart { pressure, attached }
         });
-        let coarse = self.coarse.as_mut()?.as_mut()?;
         let start = restricted.as_ref();
         let solved = match control {
             Control::Depth(d) => coarse.solve_depth(indenter, d, start, &mut ()),
@@ -230,7 +232,7 @@ impl ContactSolver {
         // nonzero (whole rows): the passes that only concern the working
         // set run on its rows.
         let mut pressure_cells = 0..n;
-        let mut direction_cells = 0..0;
+        let mut direction_cells: Option<Range<usize>> = None;
         // u = K p is kept up to date incrementally: one operator application
         // per iteration (K t), plus one only when clamping changed the
         // pressure off the search direction, and a full refresh every
@@ -321,8 +323,9 @@ impl ContactSolver {
             rz_old = rz;
             // The direction is zero off the working set: only the rows of
             // the old and the new one are written.
-            let cells = direction_cells.start.min(working_cells.start)
-                ..direction_cells.end.max(working_cells.end);
+            let cells = direction_cells.map_or(working_cells.clone(), |d| {
+                d.start.min(working_cells.start)..d.end.max(working_cells.end)
+            });
             passes::update_direction(
                 &ws.working[cells.clone()],
                 &ws.response[cells.clone()],
@@ -330,7 +333,7 @@ impl ContactSolver {
                 beta,
                 &mut ws.direction[cells],
             );
-            direction_cells = working_cells.clone();
+            direction_cells = Some(working_cells.clone());
             self.operator.apply(&ws.direction, &mut ws.response)?;
             let cells = working_cells.clone();
             let (numerator, denominator) = passes::two_dots(
