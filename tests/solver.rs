@@ -3,7 +3,7 @@
 
 use layered_contact::analytic::{Hertz, JkrFlatPunch, JkrSphere, PunchStiffnessSeries};
 use layered_contact::indenter::{FlatPunch, Indenter, Paraboloid, Sphere, Tilted};
-use layered_contact::solver::{ContactSolver, Fields, IterationInfo, SolverParams};
+use layered_contact::solver::{ContactSolver, Fields, IterationInfo, Solution, SolverParams};
 use layered_contact::{Boundary, Error, Grid, Material, Substrate};
 
 fn rubber() -> Material {
@@ -516,6 +516,14 @@ fn periodic_contacts() {
     );
 }
 
+/// The largest difference of two solutions' cell pressures.
+fn largest_difference(a: &Solution, b: &Solution) -> f64 {
+    let (p, q) = (a.pressure.as_ref().unwrap(), b.pressure.as_ref().unwrap());
+    p.iter()
+        .zip(q)
+        .fold(0.0f64, |m, (p, q)| m.max((p - q).abs()))
+}
+
 /// The preconditioned iteration with its multi-resolution start converges to
 /// the same discrete solution as Polonsky and Keer's plain iteration (one
 /// solution exists; both stop at a relative pressure change of 1e-11 per
@@ -549,13 +557,7 @@ fn preconditioned_solve_equals_plain_polonsky_keer() {
         let (d, _) = plain.solve_force(&ball, b.force, None, &mut ()).unwrap();
         let peak = b.pressure.as_ref().unwrap().fold(0.0f64, |m, p| m.max(*p));
         for (x, y) in [(&a, &b), (&c, &d)] {
-            let difference = x
-                .pressure
-                .as_ref()
-                .unwrap()
-                .iter()
-                .zip(y.pressure.as_ref().unwrap())
-                .fold(0.0f64, |m, (p, q)| m.max((p - q).abs()));
+            let difference = largest_difference(x, y);
             assert!(difference < 1e-9 * peak, "{difference:e} of {peak:e}");
             assert_eq!(x.contact_cells, y.contact_cells);
             assert!(
@@ -627,13 +629,7 @@ fn warm_start_is_corrected_on_the_coarse_grids() {
                 solver.solve_depth(&ball, 0.2, Some(&by_depth), &mut observer)
             }
             .unwrap();
-            let difference = solution
-                .pressure
-                .as_ref()
-                .unwrap()
-                .iter()
-                .zip(reference.pressure.as_ref().unwrap())
-                .fold(0.0f64, |m, (p, q)| m.max((p - q).abs()));
+            let difference = largest_difference(&solution, &reference);
             assert!(difference < 1e-9 * peak, "{difference:e} of {peak:e}");
             assert_eq!(solution.contact_cells, reference.contact_cells);
             let last = reference.contact_cells as f64;

@@ -232,30 +232,14 @@ pub(super) fn step(
         );
         correction[outside].fill(0.0);
     }
-    step_on(
-        &working[cells.clone()],
-        &direction[cells.clone()],
-        &response[cells.clone()],
-        step,
+    // From here on, indices count from the first cell of `cells`.
+    let (working, direction) = (&working[cells.clone()], &direction[cells.clone()]);
+    let response = &response[cells.clone()];
+    let (pressure, displacement) = (
         &mut pressure[cells.clone()],
         &mut displacement[cells.clone()],
-        &mut correction[cells.clone()],
-        &mut previous[cells],
-    )
-}
-
-/// [`step`] on every cell of the slices.
-#[allow(clippy::too_many_arguments)]
-fn step_on(
-    working: &[bool],
-    direction: &[f64],
-    response: &[f64],
-    step: f64,
-    pressure: &mut [f64],
-    displacement: &mut [f64],
-    correction: &mut [f64],
-    previous: &mut [f64],
-) -> Step {
+    );
+    let (correction, previous) = (&mut correction[cells.clone()], &mut previous[cells]);
     type Chunk<'a> = (
         usize,
         (
@@ -339,21 +323,9 @@ pub(super) fn rescale(
     for outside in [0..lo, hi..displacement.len()] {
         scale(&mut displacement[outside], factor);
     }
-    rescale_on(
-        &mut pressure[cells.clone()],
-        &mut displacement[cells.clone()],
-        &previous[cells],
-        factor,
-    )
-}
-
-/// [`rescale`] on every cell of the slices.
-fn rescale_on(
-    pressure: &mut [f64],
-    displacement: &mut [f64],
-    previous: &[f64],
-    factor: f64,
-) -> (f64, f64) {
+    // From here on, indices count from the first cell of `cells`.
+    let (pressure, previous) = (&mut pressure[cells.clone()], &previous[cells.clone()]);
+    let displacement = &mut displacement[cells];
     let pass = |(k, (p, u)): (usize, (&mut [f64], &mut [f64]))| {
         let (mut change, mut size) = (0.0, 0.0);
         for i in 0..p.len() {
