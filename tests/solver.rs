@@ -645,3 +645,45 @@ fn warm_start_is_corrected_on_the_coarse_grids() {
         }
     }
 }
+
+/// Grids with an odd number of rows or columns start from coarser grids too
+/// (rounded up, the indenter shifted by half a fine cell along odd sides):
+/// the same solution as Polonsky and Keer's plain iteration (to 1e-9 of the
+/// peak pressure, as above) in as few iterations as on an even grid
+/// (measured: 18 to 20 fine iterations on 127 x 127, 127 x 128 and
+/// 128 x 127 cells, as on 128 x 128 above; plain: 68 to 86).
+#[test]
+fn odd_grids_start_from_coarser_grids() {
+    let substrate = Substrate::half_space(Material::new(1.0, 0.0).unwrap());
+    let ball = Paraboloid::new(1.0).unwrap();
+    let params = |accelerated: bool| SolverParams {
+        tolerance: 1e-11,
+        fields: Fields::all(),
+        precondition: accelerated,
+        multiresolution: accelerated,
+        ..SolverParams::default()
+    };
+    for (rows, columns) in [(127, 127), (127, 128), (128, 127)] {
+        let grid = Grid::new(rows, columns, 2.0 / 128.0).unwrap();
+        let mut fast =
+            ContactSolver::new(&substrate, &grid, Boundary::Isolated, params(true)).unwrap();
+        let mut plain =
+            ContactSolver::new(&substrate, &grid, Boundary::Isolated, params(false)).unwrap();
+        let (reference, _) = plain.solve_depth(&ball, 0.2, None, &mut ()).unwrap();
+        let (by_depth, _) = fast.solve_depth(&ball, 0.2, None, &mut ()).unwrap();
+        let (by_force, _) = fast
+            .solve_force(&ball, reference.force, None, &mut ())
+            .unwrap();
+        let peak = reference
+            .pressure
+            .as_ref()
+            .unwrap()
+            .fold(0.0f64, |m, p| m.max(*p));
+        for solution in [&by_depth, &by_force] {
+            let difference = largest_difference(solution, &reference);
+            assert!(difference < 1e-9 * peak, "{difference:e} of {peak:e}");
+            assert_eq!(solution.contact_cells, reference.contact_cells);
+            assert!(solution.coarse_iterations > 0 && solution.iterations <= 30);
+        }
+    }
+}

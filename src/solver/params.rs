@@ -48,8 +48,8 @@ pub struct SolverParams {
     pub precondition: bool,
     /// Start cold non-adhesive solves on grids of at least
     /// [`MULTIRESOLUTION_CELLS`](super::MULTIRESOLUTION_CELLS) cells each
-    /// way (and even) from the solution on the grid of half the cells,
-    /// recursively; `false` starts from zero pressure (or uniform, under
+    /// way from the solution on the grid of half the cells (rounded up),
+    /// recursively, and correct warm starts there; `false` starts from zero pressure (or uniform, under
     /// force control).
     pub multiresolution: bool,
 }

@@ -19,8 +19,8 @@ use super::{
 /// Iterations between full recomputations of `u = K p`.
 const REFRESH: usize = 50;
 
-/// Grids at least this many cells each way (and even) start from the
-/// solution on the grid of half the cells each way.
+/// Grids at least this many cells each way start from the solution on the
+/// grid of half the cells each way (rounded up).
 pub const MULTIRESOLUTION_CELLS: usize = 64;
 
 /// The tolerance of the coarse solves of a multi-resolution start (or the
@@ -50,7 +50,7 @@ impl ContactSolver {
     ///
     /// A depth at which the indenter does not yet touch gives a solution
     /// without contact (force 0). `warm` starts the iteration from a previous
-    /// solution (any depth) on the same grid. On an even grid of at least
+    /// solution (any depth) on the same grid. On a grid of at least
     /// [`MULTIRESOLUTION_CELLS`] cells each way the start is corrected on
     /// the grid of half the cells first (the coarse solve starts from the
     /// warm pressures averaged over its cells, the fine one from the warm
@@ -123,11 +123,14 @@ impl ContactSolver {
     }
 
     /// The multi-resolution start: the same problem solved on the grid of
-    /// half the cells each way (twice their size), itself started from the
-    /// next coarser grid, its pressures spread over the four cells each
-    /// coarse cell covers. `None` for grids smaller than
-    /// [`MULTIRESOLUTION_CELLS`] or with an odd number of rows or columns,
-    /// or if the coarse grid cannot resolve the substrate (a film too thin
+    /// half the cells each way (twice their size; an odd count rounded up,
+    /// the last coarse row or column then half off the grid), itself
+    /// started from the next coarser grid, its pressures spread over the
+    /// four cells each coarse cell covers. The coarse grid sees the
+    /// indenter shifted so that its cell centres fall on the centres of the
+    /// fine cells they cover (half a fine cell along an odd side). `None`
+    /// for grids smaller than [`MULTIRESOLUTION_CELLS`], or if the coarse
+    /// grid cannot resolve the substrate (a film too thin
     /// for its cells) or its solve fails: the fine solve then starts from
     /// `warm` or cold, and reports its own errors. Also the iterations
     /// spent.
@@ -149,16 +152,13 @@ impl ContactSolver {
     ) -> Option<(WarmStart, usize)> {
         let grid = *self.grid();
         let (rows, columns) = (grid.rows(), grid.columns());
-        if !self.params.multiresolution
-            || rows % 2 != 0
-            || columns % 2 != 0
-            || rows.min(columns) < MULTIRESOLUTION_CELLS
-        {
+        if !self.params.multiresolution || rows.min(columns) < MULTIRESOLUTION_CELLS {
             return None;
         }
+        let (coarse_rows, half) = (rows.div_ceil(2), columns.div_ceil(2));
         if self.coarse.is_none() {
             let params = coarse_params(&self.params);
-            let coarse = Grid::new(rows / 2, columns / 2, 2.0 * grid.spacing())
+            let coarse = Grid::new(coarse_rows, half, 2.0 * grid.spacing())
                 .and_then(|g| {
                     ContactSolver::new(&self.substrate, &g, self.operator.boundary(), params)
                 })
@@ -168,10 +168,9 @@ impl ContactSolver {
         }
         let coarse = self.coarse.as_mut()?.as_mut()?;
         // The coarse cell of fine cell `c`.
-        let half = columns / 2;
         let block = |c: usize| (c / columns / 2) * half + (c % columns) / 2;
         let restricted = warm.map(|w| {
-            let mut pressure = vec![0.0; rows / 2 * half];
+            let mut pressure = vec![0.0; coarse_rows * half];
             for (c, p) in w.pressure.iter().enumerate() {
                 pressure[block(c)] += 0.25 * p;
             }
@@ -179,6 +178,15 @@ impl ContactSolver {
             WarmStart { pressure, attached }
         });
         let start = restricted.as_ref();
+        // A coarse cell centre lies (rounded-up half count - half count)
+        // fine cells before the centre of the fine cells it covers.
+        let shift = |cells: usize| (cells.div_ceil(2) as f64 - 0.5 * cells as f64) * grid.spacing();
+        let shifted = Shifted {
+            inner: indenter,
+            by: (shift(rows), shift(columns)),
+        };
+        // As a trait object: every coarser level solves with the same type.
+        let indenter: &dyn Indenter = &shifted;
         let solved = match control {
             Control::Depth(d) => coarse.solve_depth(indenter, d, start, &mut ()),
             Control::Force(w) => coarse.solve_force(indenter, w, start, &mut ()),
@@ -583,6 +591,23 @@ impl ContactSolver {
                 .map(|r| if *r { 1.0 } else { 0.0 })
                 .collect(),
         }
+    }
+}
+
+/// An indenter moved by `-by` (heights at `(x, y)` are the inner
+/// indenter's at `(x, y) + by`).
+struct Shifted<'a, I: ?Sized> {
+    inner: &'a I,
+    by: (f64, f64),
+}
+
+impl<I: Indenter + ?Sized> Indenter for Shifted<'_, I> {
+    fn height(&self, x: f64, y: f64) -> f64 {
+        self.inner.height(x + self.by.0, y + self.by.1)
+    }
+
+    fn bounding_radius(&self) -> f64 {
+        self.inner.bounding_radius() + self.by.0.hypot(self.by.1)
     }
 }
 
