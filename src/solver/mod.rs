@@ -33,16 +33,19 @@
 //! preconditioned with the compliance's inverse on a periodic box around
 //! that set, after Vollebregt (2014, J. Comput. Phys. 257, 333): its
 //! iteration count hardly grows with the grid (11 to 15 for a Hertzian
-//! contact from 256 to 4096 cells across). A cold solve on a grid of at
-//! least [`MULTIRESOLUTION_CELLS`] cells each way starts from the same
-//! problem solved on the grid of half the cells (twice their size),
-//! recursively. [`SolverParams::precondition`] and
+//! contact from 256 to 4096 cells across). A solve on a grid of at least
+//! [`MULTIRESOLUTION_CELLS`] cells each way starts from the same problem
+//! solved on the grid of half the cells (twice their size), recursively; a
+//! warm start is corrected there first (Brandt's full approximation
+//! scheme). [`SolverParams::precondition`] and
 //! [`SolverParams::multiresolution`] turn either off.
 //!
-//! Each solve may start from the [`WarmStart`] of the previous one, so a
-//! quasi-static curve costs little more than its hardest step, and for
-//! adhesive contact the warm start carries the history (which cells are
-//! attached). Solves allocate only their output; scratch buffers live in the
+//! Each solve may start from the [`WarmStart`] of the previous one. For
+//! non-adhesive contact that only saves work (on the Hertz benchmark at
+//! 1024 x 1024 a step of 4 % in depth takes 13 fine iterations, as a cold
+//! solve does, and 42 instead of 47 on the coarse grids; a step of 0.04 %,
+//! 12 and 39); for adhesive contact the warm start carries the history
+//! (which cells are attached). Solves allocate only their output; scratch buffers live in the
 //! solver.
 //!
 //! The indenter's axis stands at the centre of the grid.
