@@ -305,7 +305,7 @@ pub(super) fn axpy(values: &mut [f64], factor: f64, add: &[f64]) {
 }
 
 /// `values *= factor`.
-fn scale(values: &mut [f64], factor: f64) {
+pub(super) fn scale(values: &mut [f64], factor: f64) {
     chunks_mut!(values).for_each(|chunk| chunk.iter_mut().for_each(|v| *v *= factor));
 }
 

@@ -225,7 +225,7 @@ impl ContactSolver {
         let mut pressure = self.initial_pressure(control, warm, &reachable);
         if let Control::Force(w) = control {
             let total = area * pressure.iter().sum::<f64>();
-            rescale(&mut pressure, w / total);
+            passes::scale(&mut pressure, w / total);
         }
         let force_control = matches!(control, Control::Force(_));
         let tolerance = self.params.tolerance;
@@ -408,7 +408,7 @@ impl ContactSolver {
                     for c in 0..n {
                         pressure[c] = if ws.working[c] { 1.0 } else { 0.0 };
                     }
-                    rescale(&mut pressure, w / (area * set.members as f64));
+                    passes::scale(&mut pressure, w / (area * set.members as f64));
                     rz_old = 0.0;
                     self.operator.apply(&pressure, &mut ws.displacement)?;
                     stats.size = pressure.iter().sum();
@@ -608,11 +608,5 @@ impl<I: Indenter + ?Sized> Indenter for Shifted<'_, I> {
 
     fn bounding_radius(&self) -> f64 {
         self.inner.bounding_radius() + self.by.0.hypot(self.by.1)
-    }
-}
-
-fn rescale(values: &mut [f64], factor: f64) {
-    for v in values {
-        *v *= factor;
     }
 }
