@@ -558,6 +558,9 @@ struct Curve {
     /// The most loaded step with the fields the scene asked for (None if it
     /// asked for none).
     peak: Option<Py<Solution>>,
+    /// Known limits of the method behind these numbers, as sentences
+    /// (empty when there are none): see `layered_contact::scene::Caveat`.
+    caveats: Vec<String>,
 }
 
 #[pymethods]
@@ -649,6 +652,7 @@ fn run_scene(
             curve.grid.spacing(),
         ),
         peak,
+        caveats: curve.caveats.iter().map(ToString::to_string).collect(),
     })
 }
 

@@ -67,6 +67,39 @@ pub struct Curve {
     /// The solution at the deepest (most loaded) step, with the fields the
     /// scene asked for; `None` if it asked for none.
     pub peak: Option<Solution>,
+    /// Where the numbers are known to be less than the method's accuracy
+    /// (empty when they are not): the tool prints them, Python returns
+    /// them as `Curve.caveats`.
+    pub caveats: Vec<Caveat>,
+}
+
+/// A known limit of the method that computed a [`Curve`], reported with it
+/// instead of being left for the reader to discover.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Caveat {
+    /// The energy-balance adhesion method balanced the energy release rate
+    /// averaged over the contact edge, along contact sets that are level
+    /// sets of the profile but not discs about the axis (or on a periodic
+    /// grid): the JKR-limit solution only for axisymmetric contacts. For a
+    /// tilted, elliptic or rectangular indenter or a height map the forces
+    /// may be off by several per cent ([`doc::adhesion`](crate::doc::adhesion));
+    /// the mesh-dependent criterion is the cell-by-cell alternative. See
+    /// [`AdhesiveBranches::edge_averaged`](crate::solver::AdhesiveBranches::edge_averaged).
+    EdgeAveragedAdhesion,
+}
+
+impl std::fmt::Display for Caveat {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Caveat::EdgeAveragedAdhesion => f.write_str(
+                "edge-averaged adhesion: the contact is not axisymmetric, so the energy \
+                 balance averages the energy release rate over the edge and its forces \
+                 may be off by several per cent (the JKR-limit solution only for \
+                 axisymmetric contacts on isolated grids)",
+            ),
+        }
+    }
 }
 
 impl Curve {

@@ -7,7 +7,7 @@ use crate::indenter::Indenter;
 use crate::solver::{AdhesiveBranches, BranchPoint, ContactSolver, Reach, SolverParams};
 
 use super::runner::Outcome;
-use super::{Curve, Phase, Protocol, Scene, Step, MAX_PROTOCOL_STEPS, MAX_PULL_DEPTHS};
+use super::{Caveat, Curve, Phase, Protocol, Scene, Step, MAX_PROTOCOL_STEPS, MAX_PULL_DEPTHS};
 
 /// Runs an adhesive `scene` with works `(advancing, receding)` on `solver`.
 pub(super) fn run(
@@ -32,7 +32,7 @@ pub(super) fn run(
         if depth <= solver.lowest_height(indenter)? {
             // The indenter never touches: every step is free.
             recorder.free(Phase::Loading, depth);
-            return Ok(done(solver, recorder.steps, None));
+            return Ok(done(solver, recorder.steps, None, false));
         }
     }
     let branches = match solver.adhesive_branches(indenter, reach, advancing, receding, &mut ()) {
@@ -62,18 +62,29 @@ pub(super) fn run(
         solver.set_params(params);
         Some(solution?)
     };
-    Ok(done(solver, recorder.steps, peak_solution))
+    Ok(done(
+        solver,
+        recorder.steps,
+        peak_solution,
+        branches.edge_averaged(),
+    ))
 }
 
 fn done(
     solver: &ContactSolver,
     steps: Vec<Step>,
     peak: Option<crate::solver::Solution>,
+    edge_averaged: bool,
 ) -> Outcome {
     Outcome::Done(Box::new(Curve {
         steps,
         grid: *solver.grid(),
         peak,
+        caveats: if edge_averaged {
+            vec![Caveat::EdgeAveragedAdhesion]
+        } else {
+            Vec::new()
+        },
     }))
 }
 

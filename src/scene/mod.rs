@@ -45,7 +45,7 @@ mod sizing;
 mod spec;
 
 pub use accuracy::{richardson, Converged, Quantity};
-pub use curve::{Curve, Phase, Step};
+pub use curve::{Caveat, Curve, Phase, Step};
 pub use reference::Reference;
 pub use spec::{
     Adhesion, CustomIndenter, IndenterSpec, LayerSpec, MaterialSpec, SubstrateSpec, Tilt,

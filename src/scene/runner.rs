@@ -169,6 +169,7 @@ impl<'a> Runner<'a> {
             steps: self.steps,
             grid: *self.solver.grid(),
             peak: self.peak,
+            caveats: Vec::new(),
         })))
     }
 

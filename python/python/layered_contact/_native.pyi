@@ -94,6 +94,7 @@ class Curve:
     pull_off: Optional[dict]
     grid: Tuple[int, int, float]
     peak: Optional[Solution]
+    caveats: list[str]
     def __len__(self) -> int: ...
 
 def run_scene(

@@ -103,6 +103,9 @@ fn run(scene: &Scene, out: &std::path::Path) -> Result<()> {
         curve.grid.columns(),
         curve.grid.spacing()
     );
+    for caveat in &curve.caveats {
+        println!("caveat: {caveat}");
+    }
     if let Some(k) = curve.stiffness() {
         println!("stiffness at the peak: {k:.6e} N/m");
     }

@@ -176,6 +176,9 @@ pub struct AdhesiveBranches {
     pub(super) order: Vec<usize>,
     pub(super) iterations: usize,
     pub(super) residual: f64,
+    /// Whether the balance is only edge-averaged (see
+    /// [`AdhesiveBranches::edge_averaged`]).
+    pub(super) edge_averaged: bool,
 }
 
 /// Which way a prescribed quantity is given.
@@ -229,6 +232,7 @@ impl AdhesiveBranches {
             order: Vec::new(),
             iterations: 0,
             residual: 0.0,
+            edge_averaged: true,
         };
         if branches.nodes.len() < 3 {
             return Err(Error::ContactReachesEdge {
@@ -247,6 +251,19 @@ impl AdhesiveBranches {
     /// The largest relative residual of the inner solves.
     pub fn residual(&self) -> f64 {
         self.residual
+    }
+
+    /// Whether the balance is only the edge-averaged one, and so not the
+    /// JKR-limit solution: true unless every set of the family is a digital
+    /// disc about the axis on an isolated grid (an axisymmetric profile),
+    /// the case where the energy release rate is the same all along the
+    /// edge and the balance is exact. Elsewhere (a tilted, elliptic or
+    /// rectangular indenter, a height map, any periodic grid) the real
+    /// contact is not a level set of the profile and the forces may be off
+    /// by several per cent (measured in [`doc::adhesion`](crate::doc::adhesion));
+    /// scenes report it as [`Caveat::EdgeAveragedAdhesion`](crate::scene::Caveat::EdgeAveragedAdhesion).
+    pub fn edge_averaged(&self) -> bool {
+        self.edge_averaged
     }
 
     /// The number of contact sets of the family.

@@ -115,9 +115,13 @@ impl ContactSolver {
         }
         .max(smallest_level);
         let delta = self.grid().spacing();
+        let periodic = self.operator.boundary() == crate::grid::Boundary::Periodic;
         for _ in 0..=MAX_WIDENINGS {
             let top = order.partition_point(|&(c, _)| self.workspace.profile[c] - lowest <= level);
             let (usable, kept) = self.usable_prefix(&order, top);
+            if usable < MIN_CELLS + 4 && periodic {
+                return Err(half_period_error());
+            }
             if usable < MIN_CELLS + 4 {
                 return Err(Error::ContactReachesEdge {
                     cells: usable,
@@ -135,7 +139,12 @@ impl ContactSolver {
                 &mut residual,
             )?;
             let mut branches =
-                AdhesiveBranches::new(&raw, delta, capped, lowest, advancing, receding)?;
+                match AdhesiveBranches::new(&raw, delta, capped, lowest, advancing, receding) {
+                    Err(Error::ContactReachesEdge { .. }) if periodic && !kept => {
+                        return Err(half_period_error())
+                    }
+                    other => other?,
+                };
             branches.iterations = iterations;
             branches.residual = residual;
             // The loading branch must reach its target HEADROOM cells of
@@ -152,7 +161,11 @@ impl ContactSolver {
                     };
             if fits {
                 branches.order = order[..usable].iter().map(|&(c, _)| c).collect();
+                branches.edge_averaged = periodic || !self.family_is_discs(&order[..usable]);
                 return Ok(branches);
+            }
+            if !kept && periodic {
+                return Err(half_period_error());
             }
             if !kept {
                 return Err(Error::ContactReachesEdge {
@@ -246,20 +259,56 @@ impl ContactSolver {
         order
     }
 
-    /// How many of the first `top` cells of `order` the family may use: it
-    /// stops before the first cell on the grid's outer ring (an isolated
-    /// contact must stay off the edge). Also says whether `top` was kept.
+    /// How many of the first `top` cells of `order` the family may use: on
+    /// an isolated grid it stops before the first cell on the grid's outer
+    /// ring (an isolated contact must stay off the edge); on a periodic grid
+    /// before the first cell that would make a set span more than half the
+    /// period along a row or a column (measured from the family's first
+    /// cell across the periodic boundary), so that no set meets its images.
+    /// Also says whether `top` was kept.
     fn usable_prefix(&self, order: &[(usize, f64)], top: usize) -> (usize, bool) {
         let grid = *self.grid();
         let (rows, columns) = (grid.rows(), grid.columns());
-        let periodic = self.operator.boundary() == crate::grid::Boundary::Periodic;
-        match order[..top]
-            .iter()
-            .position(|&(c, _)| !periodic && super::on_outer_ring(c, rows, columns))
-        {
+        let first = match self.operator.boundary() {
+            crate::grid::Boundary::Isolated => order[..top]
+                .iter()
+                .position(|&(c, _)| super::on_outer_ring(c, rows, columns)),
+            crate::grid::Boundary::Periodic => {
+                let start = order.first().map_or(0, |&(c, _)| c);
+                let mut span = Span::new(start, rows, columns);
+                order[..top].iter().position(|&(c, _)| !span.include(c))
+            }
+        };
+        match first {
             Some(first) => (first, false),
             None => (top, true),
         }
+    }
+
+    /// Whether the family's sets are digital discs about the axis: along
+    /// `order` (sorted by height, then distance from the axis) the distance
+    /// never decreases, and cells at the same distance have the same height.
+    /// Then every set is the contact of an axisymmetric indenter and the
+    /// edge-averaged energy balance is the exact one.
+    fn family_is_discs(&self, order: &[(usize, f64)]) -> bool {
+        let delta2 = self.grid().cell_area();
+        let profile = &self.workspace.profile;
+        let heights = || order.iter().map(|&(c, _)| profile[c]);
+        let (low, high) = heights()
+            .filter(|h| h.is_finite())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), h| {
+                (lo.min(h), hi.max(h))
+            });
+        let tolerance = 1e-9 * (high - low).abs().max(f64::MIN_POSITIVE);
+        order.windows(2).all(|w| {
+            let ((a, ra), (b, rb)) = (w[0], w[1]);
+            let same_distance = (rb - ra).abs() <= 1e-9 * delta2;
+            if same_distance {
+                (profile[a] - profile[b]).abs() <= tolerance || profile[a] == profile[b]
+            } else {
+                rb > ra
+            }
+        })
     }
 
     /// Solves the clamped flat-punch and shape problems on the sets of the
@@ -359,6 +408,56 @@ impl ContactSolver {
         }
         raw.reverse();
         Ok(raw)
+    }
+}
+
+/// The error of a periodic family whose sets would span more than half the
+/// period.
+fn half_period_error() -> Error {
+    Error::Unsupported {
+        feature: "the energy-balance adhesion method for a contact wider than half the period",
+        reason: "its contact sets would meet their periodic images, where the balance \
+                 is undefined; use the mesh-dependent criterion or a wider period",
+    }
+}
+
+/// The rows and columns a growing set spans on a periodic grid, as offsets
+/// from its first cell taken the short way round.
+struct Span {
+    start: (usize, usize),
+    shape: (usize, usize),
+    rows: (isize, isize),
+    columns: (isize, isize),
+}
+
+impl Span {
+    fn new(start: usize, rows: usize, columns: usize) -> Self {
+        Span {
+            start: (start / columns, start % columns),
+            shape: (rows, columns),
+            rows: (0, 0),
+            columns: (0, 0),
+        }
+    }
+
+    /// Adds cell `c`; false if the set would then span more than half the
+    /// period in either direction.
+    fn include(&mut self, c: usize) -> bool {
+        let offset = |index: usize, start: usize, period: usize| {
+            let forward = (index + period - start) % period;
+            if 2 * forward > period {
+                forward as isize - period as isize
+            } else {
+                forward as isize
+            }
+        };
+        let (rows, columns) = self.shape;
+        let di = offset(c / columns, self.start.0, rows);
+        let dj = offset(c % columns, self.start.1, columns);
+        self.rows = (self.rows.0.min(di), self.rows.1.max(di));
+        self.columns = (self.columns.0.min(dj), self.columns.1.max(dj));
+        let within = |(lo, hi): (isize, isize), period: usize| 2 * (hi - lo + 1) as usize <= period;
+        within(self.rows, rows) && within(self.columns, columns)
     }
 }
 
