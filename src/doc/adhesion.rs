@@ -78,10 +78,37 @@
 //! pull-off force.
 //!
 //! Limits: the balance is the edge-averaged one, exact when `G` is the same
-//! all along the edge (axisymmetric contacts) and an average otherwise (a
-//! tilted or elliptic indenter); a family whose sets split into separate
-//! patches (a rough surface) is refused with
-//! [`Error::Unsupported`](crate::Error::Unsupported). The shift is
+//! all along the edge (axisymmetric contacts) and an average otherwise.
+//! Where the real contact is not a level set of the profile the forces
+//! converge to a wrong value: measured (issue 23's survey of the code of
+//! 2026-11-22) on a half-space and a rubber film on glass, a 2:1 rectangular punch +4 %, a square punch +4 to +6 %, a disc
+//! punch tilted by a quarter of Kendall's critical depth +1 to +5 %, by half
+//! -3 %; elliptic paraboloids (`Ry/Rx` up to 4) within about 1 %. The method
+//! therefore says which case it is in:
+//!
+//! * [`AdhesiveBranches::edge_averaged`](crate::solver::AdhesiveBranches::edge_averaged)
+//!   is false only when every set of the family is a digital disc about the
+//!   axis on an isolated grid, read from the sampled profile (along the
+//!   family the distance from the axis never decreases, and cells at the
+//!   same distance have the same height), so a height map of a sphere
+//!   counts as axisymmetric and a sphere tilted by any angle does not;
+//! * a scene built on such branches carries
+//!   [`Caveat::EdgeAveragedAdhesion`](crate::scene::Caveat::EdgeAveragedAdhesion)
+//!   in [`Curve::caveats`](crate::scene::Curve::caveats); the tool prints it
+//!   (`caveat: ...`) and Python returns it in `Curve.caveats`;
+//! * on a periodic grid the family stops before a set spans more than half
+//!   the period along a row or a column, and a branch that needs more is
+//!   refused with [`Error::Unsupported`](crate::Error::Unsupported): its
+//!   sets would meet their periodic images (a wavy surface whose contacts
+//!   are strips across the period returned pull-off forces from `-2e25` N
+//!   to `+0.02` N where the exact value is about `-5e-3` N);
+//! * a family whose sets split into separate patches (a rough surface) is
+//!   refused with [`Error::Unsupported`](crate::Error::Unsupported).
+//!
+//! A local criterion that converges for any shape (the energy release rate
+//! balanced point by point along the edge) is not in the crate yet; for
+//! flagged contacts the mesh-dependent criterion below is the cell-by-cell
+//! alternative, with its own grid-orientation bias. The shift is
 //! calibrated where the layer is many cells thick (`h/Delta` above about
 //! 10); on films thinner than a few cells its correction is approximate.
 //!
@@ -100,7 +127,12 @@
 //! sphere comes out too strong by about `3/N` (`N` cells across the pull-off
 //! contact: 16 % at 16, 6 % at 32, 3 % at 64), at tens of times the cost of
 //! the energy balance; flat punches, whose edge does not move, fare better
-//! (0.2-0.5 % at 64 cells).
+//! (0.2-0.5 % at 64 cells). Its limit depends on how the edge lies on the
+//! grid: a cell on a straight edge along the grid carries the cell average
+//! of the square-root field, so there the criterion acts as if `dgamma`
+//! were about 1.66 times too large (same survey: a wavy surface with crests along the
+//! grid converges, at order 1.03, to a pull-off 37 % too strong; at 45
+//! degrees to within 1 %).
 //!
 //! The numbers, for both methods on a half-space and on layers, are in
 //! [`accuracy`](super::accuracy).

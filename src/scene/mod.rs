@@ -170,7 +170,9 @@ pub enum AdhesionMethod {
     /// contact and within 0.07 % from 64 (half-space and layers),
     /// displacement or force control, a whole cycle for the price of one
     /// family. The edge-averaged balance: exact for axisymmetric
-    /// contacts; refuses contacts that split into patches.
+    /// contacts, flagged as [`Caveat::EdgeAveragedAdhesion`] on the curve
+    /// for every other (forces may be off by several per cent); refuses
+    /// contacts that split into patches or span more than half a period.
     #[default]
     EnergyBalance,
     /// The mesh-dependent critical stress of Pohrt & Popov (2015), cell by
