@@ -119,7 +119,7 @@ impl ContactSolver {
         for _ in 0..=MAX_WIDENINGS {
             let top = order.partition_point(|&(c, _)| self.workspace.profile[c] - lowest <= level);
             let (usable, kept) = self.usable_prefix(&order, top);
-            if usable < MIN_CELLS + 4 && periodic {
+            if usable < MIN_CELLS + 4 && periodic && !kept {
                 return Err(half_period_error());
             }
             if usable < MIN_CELLS + 4 {
