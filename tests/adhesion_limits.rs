@@ -22,6 +22,30 @@ fn rubber() -> Material {
     Material::new(E, NU).unwrap()
 }
 
+/// `heights(x, y)` sampled at the cell centres of `grid`, and a solver for
+/// the rubber half-space on that grid.
+fn sampled(
+    grid: Grid,
+    boundary: Boundary,
+    heights: impl Fn(f64, f64) -> f64,
+) -> (HeightMap, ContactSolver) {
+    let columns = grid.columns();
+    let values = (0..grid.len())
+        .map(|c| {
+            let (x, y) = grid.cell_centre(c / columns, c % columns);
+            heights(x, y)
+        })
+        .collect();
+    let solver = ContactSolver::new(
+        &Substrate::half_space(rubber()),
+        &grid,
+        boundary,
+        SolverParams::default(),
+    )
+    .unwrap();
+    (HeightMap::new(grid, values).unwrap(), solver)
+}
+
 /// The energy-balance branches of `heights(x, y)` sampled at the cell
 /// centres of a 64 x 64 isolated grid 4 JKR pull-off radii wide (16 cells
 /// across the pull-off contact), pressed to 1.5 pull-off radii.
@@ -29,20 +53,7 @@ fn map_branches(heights: impl Fn(f64, f64) -> f64) -> (f64, f64, bool) {
     let jkr = JkrSphere::new(&rubber(), RADIUS, WORK).unwrap();
     let a = jkr.pull_off_contact_radius();
     let grid = Grid::square(64, 8.0 * a).unwrap();
-    let values = (0..grid.len())
-        .map(|c| {
-            let (x, y) = grid.cell_centre(c / 64, c % 64);
-            heights(x, y)
-        })
-        .collect();
-    let map = HeightMap::new(grid, values).unwrap();
-    let mut solver = ContactSolver::new(
-        &Substrate::half_space(rubber()),
-        &grid,
-        Boundary::Isolated,
-        SolverParams::default(),
-    )
-    .unwrap();
+    let (map, mut solver) = sampled(grid, Boundary::Isolated, heights);
     let depth = (1.5 * a).powi(2) / RADIUS;
     let branches = solver
         .adhesive_branches(&map, Reach::Depth(depth), WORK, WORK, &mut ())
@@ -149,20 +160,9 @@ fn periodic_contacts_wider_than_half_the_period_are_refused() {
     let period = 1e-3;
     for (n, h0) in [(32, 2e-5), (64, 2e-5), (32, 5e-6), (64, 5e-6), (128, 2e-5)] {
         let grid = Grid::square(n, period).unwrap();
-        let heights = (0..grid.len())
-            .map(|c| {
-                let (x, _) = grid.cell_centre(c / n, c % n);
-                h0 * (1.0 - (2.0 * PI * x / period).cos())
-            })
-            .collect();
-        let map = HeightMap::new(grid, heights).unwrap();
-        let mut solver = ContactSolver::new(
-            &Substrate::half_space(rubber()),
-            &grid,
-            Boundary::Periodic,
-            SolverParams::default(),
-        )
-        .unwrap();
+        let (map, mut solver) = sampled(grid, Boundary::Periodic, |x, _| {
+            h0 * (1.0 - (2.0 * PI * x / period).cos())
+        });
         let result = solver.adhesive_branches(&map, Reach::Depth(0.5 * h0), WORK, WORK, &mut ());
         assert!(
             matches!(result, Err(Error::Unsupported { .. })),

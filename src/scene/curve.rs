@@ -93,10 +93,10 @@ impl std::fmt::Display for Caveat {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Caveat::EdgeAveragedAdhesion => f.write_str(
-                "edge-averaged adhesion: the contact is not axisymmetric, so the energy \
-                 balance averages the energy release rate over the edge and its forces \
-                 may be off by several per cent (the JKR-limit solution only for \
-                 axisymmetric contacts on isolated grids)",
+                "edge-averaged adhesion: the contact sets are not discs about the grid's \
+                 axis (or the grid is periodic), so the energy balance averages the energy \
+                 release rate over the edge and its forces may be off by several per cent \
+                 (the JKR-limit solution only for axisymmetric contacts on isolated grids)",
             ),
         }
     }

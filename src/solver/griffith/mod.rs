@@ -293,18 +293,17 @@ impl ContactSolver {
     fn family_is_discs(&self, order: &[(usize, f64)]) -> bool {
         let delta2 = self.grid().cell_area();
         let profile = &self.workspace.profile;
-        let heights = || order.iter().map(|&(c, _)| profile[c]);
-        let (low, high) = heights()
-            .filter(|h| h.is_finite())
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), h| {
-                (lo.min(h), hi.max(h))
-            });
-        let tolerance = 1e-9 * (high - low).abs().max(f64::MIN_POSITIVE);
+        // The family holds only finite heights, sorted: the first is the
+        // lowest and the last the highest.
+        let range = match (order.first(), order.last()) {
+            (Some(&(low, _)), Some(&(high, _))) => profile[high] - profile[low],
+            _ => return true,
+        };
+        let tolerance = 1e-9 * range.max(f64::MIN_POSITIVE);
         order.windows(2).all(|w| {
             let ((a, ra), (b, rb)) = (w[0], w[1]);
-            let same_distance = (rb - ra).abs() <= 1e-9 * delta2;
-            if same_distance {
-                (profile[a] - profile[b]).abs() <= tolerance || profile[a] == profile[b]
+            if (rb - ra).abs() <= 1e-9 * delta2 {
+                profile[b] - profile[a] <= tolerance
             } else {
                 rb > ra
             }
