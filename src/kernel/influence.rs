@@ -6,7 +6,15 @@ use crate::grid::Grid;
 use crate::substrate::Substrate;
 
 use super::cell::{lifted_love, love};
-use super::radial::RadialRemainder;
+use super::radial::{RadialRemainder, TailTolerance};
+
+/// A tail error estimate (relative to the self-coefficient) this small ends
+/// the remainder's table: the estimate is pessimistic by two to four orders
+/// of magnitude against coefficients tabulated all the way out.
+const ENOUGH_TAIL_ERROR: f64 = 1e-10;
+/// The largest tail error estimate of usable coefficients (see
+/// [`InfluenceCoefficients::tail_error_estimate`]).
+pub const MAX_TAIL_ERROR: f64 = 1e-6;
 
 /// The displacement at the centre of a cell due to a unit uniform pressure on
 /// another cell, for every offset between two cells of a grid: the isolated
@@ -87,12 +95,25 @@ impl InfluenceCoefficients {
         let corner_at = |k: usize| (k as f64 + 0.5) * delta;
         let modulus = substrate.surface_material().contact_modulus();
         let reach = corner_at(rows).hypot(corner_at(columns));
+        // The tail error enters each corner at most as h (pi/2) |mismatch|,
+        // a coefficient as four corners; relative to the self-coefficient:
+        let self_love = 4.0 * love(0.5 * delta, 0.5 * delta);
+        let relative_tail = |h: f64, mismatch: f64| {
+            // No mismatch, no error, whatever the thickness (at h = f64::MAX
+            // the product would be inf * 0 = NaN).
+            if mismatch == 0.0 {
+                0.0
+            } else {
+                2.0 * PI * h * mismatch / self_love
+            }
+        };
         let corner_function = CornerFunction {
             terms: substrate
                 .terms()
                 .into_iter()
                 .map(|term| {
                     let h = term.length;
+                    let mismatch_for = |relative: f64| relative * self_love / (2.0 * PI * h);
                     CornerTerm {
                         length: h,
                         lambda0: term.functions.lambda(0.0),
@@ -100,26 +121,19 @@ impl InfluenceCoefficients {
                             &term.functions,
                             0.5 * delta / h,
                             reach / h,
+                            TailTolerance {
+                                enough: mismatch_for(ENOUGH_TAIL_ERROR),
+                                unusable: mismatch_for(MAX_TAIL_ERROR),
+                            },
                         ),
                     }
                 })
                 .collect(),
         };
-        // The tail error enters each corner at most as h (pi/2) |mismatch|,
-        // a coefficient as four corners.
         let tail = corner_function
             .terms
             .iter()
-            .map(|term| {
-                // No mismatch, no error, whatever the thickness (at
-                // h = f64::MAX the product would be inf * 0 = NaN).
-                let mismatch = term.remainder.tail_mismatch();
-                if mismatch == 0.0 {
-                    0.0
-                } else {
-                    2.0 * PI * term.length * mismatch / (4.0 * love(0.5 * delta, 0.5 * delta))
-                }
-            })
+            .map(|term| relative_tail(term.length, term.remainder.tail_mismatch()))
             .sum();
         // Corner values F((k + 1/2) Delta, (l + 1/2) Delta); F is symmetric in
         // its arguments, so square blocks are filled once.
@@ -224,9 +238,16 @@ impl InfluenceCoefficients {
 
     /// An estimate of the largest absolute error of a coefficient, relative to
     /// the layer half-space's self-coefficient, from where the tabulated
-    /// remainder hands over to its asymptotic expansion. Below `1e-13` for a
-    /// rigid base and moderate contrasts; it grows for very soft bases on
-    /// large grids, whose Green's functions vary on scales far beyond `h`.
+    /// remainder hands over to its asymptotic expansion. Below `1e-10` for a
+    /// rigid base and moderate contrasts; it grows for coatings much stiffer
+    /// than their base (contrasts of `1e3` and more) on grids that span many
+    /// thousand coating thicknesses: their Green's functions vary on the
+    /// coating's membrane and bending lengths, far beyond `h`, and the
+    /// coefficients are then wrong by orders of magnitude.
+    /// [`ComplianceOperator::new`](crate::kernel::ComplianceOperator::new)
+    /// refuses coefficients whose estimate exceeds [`MAX_TAIL_ERROR`]
+    /// (`1e-6`; against coefficients tabulated all the way out, the estimate
+    /// has been two to four orders of magnitude above the real error).
     pub fn tail_error_estimate(&self) -> f64 {
         self.tail_error
     }

@@ -20,7 +20,7 @@ mod radial;
 
 pub(crate) use convolution::wavenumber;
 pub use fourier::FourierCompliance;
-pub use influence::InfluenceCoefficients;
+pub use influence::{InfluenceCoefficients, MAX_TAIL_ERROR};
 pub(crate) use inverse::BoxInverse;
 pub use operator::{
     check_film, memory_estimate, ComplianceOperator, DIRECT_LOADS_PER_LOG2,

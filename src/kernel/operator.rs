@@ -179,12 +179,42 @@ pub fn check_film(substrate: &Substrate, grid: &Grid) -> Result<()> {
     Ok(())
 }
 
+/// Refuses influence coefficients whose remainder is not resolved out to
+/// the grid's reach (a coating much stiffer than its base on a grid that
+/// spans thousands of its thicknesses), see
+/// [`InfluenceCoefficients::tail_error_estimate`].
+fn check_tail(influence: &InfluenceCoefficients, substrate: &Substrate) -> Result<()> {
+    let tail = influence.tail_error_estimate();
+    if tail <= super::influence::MAX_TAIL_ERROR {
+        return Ok(());
+    }
+    let grid = influence.grid();
+    let thinnest = substrate
+        .terms()
+        .iter()
+        .map(|term| term.length)
+        .fold(f64::INFINITY, f64::min);
+    let reach = (grid.rows() as f64 + 0.5).hypot(grid.columns() as f64 + 0.5) * grid.spacing();
+    Err(Error::InvalidParameter {
+        name: "grid diagonal over coating thickness (isolated grid)",
+        value: reach / thinnest,
+        expected: "at most 8192 for a coating this much stiffer than its base: its Green's \
+                   function is not yet asymptotic further out, and the influence \
+                   coefficients would be wrong by orders of magnitude; use fewer or smaller \
+                   cells, a thicker coating, or a periodic grid",
+    })
+}
+
 impl ComplianceOperator {
     /// The operator of `substrate` on `grid` with `boundary`.
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for a layer on a rigid base thinner than
-    /// the grid can resolve (see [`check_film`]), or a cell whose compliance
+    /// the grid can resolve (see [`check_film`]), for isolated coefficients
+    /// whose tail error estimate exceeds `1e-6` (a coating much stiffer than
+    /// its base on a grid whose diagonal spans more than 8192 of its
+    /// thicknesses, see
+    /// [`InfluenceCoefficients::tail_error_estimate`]), or a cell whose compliance
     /// `Delta / E*` is not a normal `f64` number (cell size and modulus out of
     /// range together).
     pub fn new(substrate: &Substrate, grid: &Grid, boundary: Boundary) -> Result<Self> {
@@ -222,6 +252,7 @@ impl ComplianceOperator {
         operator.spectrum = match boundary {
             Boundary::Isolated => {
                 let influence = InfluenceCoefficients::isolated(substrate, grid);
+                check_tail(&influence, substrate)?;
                 let spectrum = operator.isolated_spectrum(&influence)?;
                 operator.influence = Some(influence);
                 spectrum

@@ -32,8 +32,13 @@
 //! For large `R` it follows the asymptotic expansion
 //! `Gc(R) = f_1 + f_2/R - 3 f_4/R^3 + 45 f_6/R^5 + ...` (from
 //! `Integral_0^inf u^(2n) J0(u rho) du = (-1)^n ((2n-1)!!)^2 / rho^(2n+1)`);
-//! the table stops where the two agree to `1e-14`, or at `R = 512`, recording
-//! the mismatch there.
+//! the table stops where the two agree to within the caller's tolerance, or
+//! at `R = 8192`, recording the mismatch there. A coating much stiffer than
+//! its base has Taylor coefficients that grow like powers of the contrast
+//! (its membrane and bending lengths are many thicknesses), so its
+//! asymptotics hold only far out: where they still disagree at `R = 8192`
+//! by more than the caller can accept, the table is not built at all and the
+//! mismatch is reported (the caller refuses such coefficients).
 
 use gauss_quad::legendre::GaussLegendre;
 
@@ -46,10 +51,26 @@ const HANKEL_ORDER: usize = 20;
 const ANGLE_ORDER: usize = 16;
 /// Smallest octave exponent tabulated.
 const MIN_OCTAVE: i32 = -40;
-/// The table never extends beyond this radius (units of `h`).
-const MAX_TABLE_RADIUS: f64 = 512.0;
-/// Agreement of table and asymptotics that ends the table.
+/// The table never extends beyond this radius (units of `h`): building it
+/// out to here costs a few seconds.
+const MAX_TABLE_RADIUS: f64 = 8192.0;
+/// Beyond this radius the table ends as soon as its tail error is below the
+/// caller's `enough`, not only at full agreement.
+const USUAL_TABLE_RADIUS: f64 = 512.0;
+/// Agreement of table and asymptotics, relative to `1 + |Gc(inf)|`, that
+/// ends the table whatever the caller accepts.
 const TAIL_AGREEMENT: f64 = 1e-14;
+
+/// How closely the asymptotic expansion must continue the table (absolute
+/// mismatches of `Gc`, units of `h`).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct TailTolerance {
+    /// A mismatch this small ends the table beyond `512 h`.
+    pub(crate) enough: f64,
+    /// A mismatch larger than this at the largest table radius makes the
+    /// table pointless: the remainder is returned without it.
+    pub(crate) unusable: f64,
+}
 
 /// `Gc(R)` of the module docs for one coated substrate, over a range of `R`.
 #[derive(Debug, Clone)]
@@ -66,8 +87,14 @@ pub(crate) struct RadialRemainder {
 
 impl RadialRemainder {
     /// The remainder of `functions`, tabulated for `R` in `[r_min, r_max]`
-    /// (units of `h`; `r_min > 0`).
-    pub(crate) fn new(functions: &Spectral, r_min: f64, r_max: f64) -> Self {
+    /// (units of `h`; `r_min > 0`) until the asymptotics continue it within
+    /// `tolerance`.
+    pub(crate) fn new(
+        functions: &Spectral,
+        r_min: f64,
+        r_max: f64,
+        tolerance: TailTolerance,
+    ) -> Self {
         let lambda0 = functions.lambda(0.0);
         let taylor = functions
             .lambda_taylor()
@@ -84,8 +111,17 @@ impl RadialRemainder {
             remainder.tail_mismatch = remainder.mismatch_at(functions, lambda0, top);
             return remainder;
         }
+        if r_max > top {
+            // The table would end at `top` at the latest: if the asymptotics
+            // do not hold there, no table makes the coefficients usable.
+            let last = remainder.mismatch_at(functions, lambda0, top);
+            if !(last <= tolerance.unusable) {
+                remainder.tail_mismatch = last;
+                return remainder;
+            }
+        }
         let first = (r_min.log2().floor() as i32).max(MIN_OCTAVE);
-        let scale = 1.0 + remainder.asymptotic[0].abs();
+        let agreement = TAIL_AGREEMENT * (1.0 + remainder.asymptotic[0].abs());
         let mut mismatch = 0.0;
         let table = OctaveTable::build(
             first,
@@ -97,7 +133,12 @@ impl RadialRemainder {
                 }
                 if end >= top || end >= 32.0 {
                     mismatch = remainder.mismatch_at(functions, lambda0, end);
-                    return end >= top || mismatch <= TAIL_AGREEMENT * scale;
+                    // Out to 512 h the table ends only at full agreement
+                    // (a few panels per node); beyond, once the tail is
+                    // as small as the caller needs.
+                    return end >= top
+                        || mismatch <= agreement
+                        || (end >= USUAL_TABLE_RADIUS && mismatch <= tolerance.enough);
                 }
                 false
             },
