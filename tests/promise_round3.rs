@@ -58,3 +58,43 @@ fn f1_thin_stiff_coatings_lie_between_their_materials_or_are_refused() {
         previous = force;
     }
 }
+
+/// Finding 2: a nearly incompressible film thinner than a cell on a support
+/// that acts as rigid but is not a rigid base (an elastic base 1e12 times
+/// stiffer, or a stiff layer under it in a stack on a rigid base) passed
+/// the film check, which looked only at a rigid base and a stack's total
+/// thickness, and returned 97 N and 864 N against the squeeze film's
+/// 1.4e-3 N. The check now weighs the film against its support's
+/// compliance at the cell's wavenumber, whatever the support. Reference: on
+/// a support a thousand times stiffer (still resolvable) the same film is
+/// accepted, and a punch on it carries the bare support's force: the film's
+/// squeeze-film compliance is about 1e-8 of the support's here, and the
+/// film spreads each cell's load over about `h`, which moves cell-centre
+/// collocation by `O(h / Delta) = 1e-3`.
+#[test]
+fn f2_incompressible_films_on_rigid_like_supports_are_refused() {
+    let rubber = Material::new(1e6, 0.5).unwrap();
+    let grid = Grid::new(16, 16, 1e-4).unwrap();
+    for ratio in [1e-2, 1e-3] {
+        let h = ratio * grid.spacing();
+        let hard = Material::new(1e18, 0.3).unwrap();
+        let bodies = [
+            Substrate::layer_on_elastic_base(rubber, h, hard).unwrap(),
+            Substrate::stack(&[(rubber, h), (hard, 1e-3)], Base::Rigid).unwrap(),
+        ];
+        for body in bodies {
+            match solver(&body, &grid) {
+                Err(Error::InvalidParameter { value, .. }) => {
+                    assert!((value / ratio - 1.0).abs() < 1e-9, "{value}")
+                }
+                other => panic!("{ratio}: {:?}", other.map(|_| ())),
+            }
+        }
+    }
+    let glassy = Material::new(1e9, 0.3).unwrap();
+    let film = Substrate::layer_on_elastic_base(rubber, 1e-7, glassy).unwrap();
+    let (radius, depth) = (5e-4, 1e-6);
+    let coated = punch_force(&film, &grid, radius, depth);
+    let bare = punch_force(&Substrate::half_space(glassy), &grid, radius, depth);
+    assert!((coated / bare - 1.0).abs() < 1e-3, "{coated} {bare}");
+}

@@ -124,56 +124,77 @@ const MIN_FILM_COMPLIANCE: f64 = 1e-4;
 /// below half a cell the coefficients settle by uniaxial strain alone.
 const MAX_SQUEEZE_SHARE: f64 = 0.01;
 
-/// Checks that a layer on a rigid base is thick enough, relative to the
-/// cells, for its influence coefficients to mean something. From half a
-/// cell up (`h / Delta >= 0.5`) they are verified for every `nu`. Thinner
-/// films, down to `h / Delta = 1e-3`, settle by uniaxial strain, `u = p h /
-/// M` (`M` the uniaxial-strain modulus), which is right only where that
-/// compliance is resolvable (at least `1e-4` of the cell's half-space
-/// compliance `Delta / E*`) and where the squeeze-film flow of a nearly
-/// incompressible film, whose compliance is `(h/Delta)^2 M / mu` times the
-/// uniaxial one, is negligible (below 1 %). A nearly incompressible film
-/// thinner than half a cell (`nu -> 0.5`, `M -> inf`) is refused: its
-/// coefficients would be rounding noise, not positive definite. Use a finer
-/// grid there.
+/// Checks that the top layer is thick enough, relative to the cells, for
+/// the influence coefficients to mean something. From half a cell up (`h /
+/// Delta >= 0.5`) they are verified for every `nu`. A thinner top layer is
+/// in series with its support (a rigid base, an elastic base, or the rest
+/// of a stack), whose compliance at the cell's wavelength the kernel
+/// resolves, and its own compliance settles by uniaxial strain, `u = p h /
+/// M` (`M` the uniaxial-strain modulus). That is right only where the two
+/// together are resolvable (at least `1e-4` of the cell's half-space
+/// compliance `Delta / E*` of the layer) and where the squeeze-film flow of
+/// a nearly incompressible layer, whose compliance is `(h/Delta)^2 M / mu`
+/// times the uniaxial one, is negligible against them (below 1 %). So a
+/// nearly incompressible layer thinner than half a cell is refused on every
+/// support that acts as rigid: a rigid base, an elastic base far stiffer
+/// than the layer, or a stiff layer under it in a stack. Its coefficients
+/// would be rounding noise, not positive definite. Use a finer grid there.
+/// A layer on a rigid base thinner than `1e-3` cells, and a stack on a
+/// rigid base thinner than half a cell, are refused whatever they are made
+/// of.
 ///
 /// # Errors
 /// [`Error::InvalidParameter`] naming `h / Delta` and the range.
 pub fn check_film(substrate: &Substrate, grid: &Grid) -> Result<()> {
-    let (Some(crate::substrate::Base::Rigid), Some(total)) =
-        (substrate.base(), substrate.total_thickness())
-    else {
+    let (Some(base), Some(total), Some(top), Some(support)) = (
+        substrate.base(),
+        substrate.total_thickness(),
+        substrate.top_thickness(),
+        substrate.support(),
+    ) else {
         return Ok(());
     };
     // The limits hold to rounding: h = 1e-7 on Delta = 1e-4 is 1e-3.
-    let ratio = total / grid.spacing() * (1.0 + 1e-12);
-    if ratio.is_nan() || ratio < MIN_THICKNESS_OVER_SPACING {
-        return Err(Error::InvalidParameter {
-            name: "h / Delta (layer thickness over cell size)",
-            value: ratio,
-            expected: "at least 1e-3 on a rigid base",
-        });
+    let cells = |thickness: f64| thickness / grid.spacing() * (1.0 + 1e-12);
+    if matches!(base, crate::substrate::Base::Rigid) {
+        let ratio = cells(total);
+        if ratio.is_nan() || ratio < MIN_THICKNESS_OVER_SPACING {
+            return Err(Error::InvalidParameter {
+                name: "h / Delta (layer thickness over cell size)",
+                value: ratio,
+                expected: "at least 1e-3 on a rigid base",
+            });
+        }
+        if ratio < VERIFIED_THICKNESS_OVER_SPACING && matches!(substrate, Substrate::Stack(_)) {
+            return Err(Error::InvalidParameter {
+                name: "h / Delta (stack thickness over cell size)",
+                value: ratio,
+                expected: "at least 0.5 for a stack on a rigid base (refine the grid)",
+            });
+        }
     }
+    let ratio = cells(top);
     if ratio >= VERIFIED_THICKNESS_OVER_SPACING {
         return Ok(());
     }
-    let Substrate::Coated(coating) = substrate else {
+    // Compliances relative to the layer's half-space at the cell's
+    // wavenumber q = pi / Delta, `u_z q E1* / 2`.
+    let layer = substrate.surface_material();
+    let q = std::f64::consts::PI / grid.spacing();
+    let beneath = support.map_or(0.0, |body| {
+        FourierCompliance::new(&body).eval(q) * layer.contact_modulus() * q / 2.0
+    });
+    let film = ratio * layer.contact_modulus() / layer.uniaxial_strain_modulus();
+    // (h/Delta)^2 M / mu times the uniaxial compliance, finite at nu = 0.5.
+    let squeeze = ratio * ratio * ratio * layer.contact_modulus() / layer.shear_modulus();
+    let resolved = film + beneath;
+    if !(resolved >= MIN_FILM_COMPLIANCE && squeeze <= MAX_SQUEEZE_SHARE * resolved) {
         return Err(Error::InvalidParameter {
-            name: "h / Delta (stack thickness over cell size)",
+            name: "h / Delta (top layer thickness over cell size)",
             value: ratio,
-            expected: "at least 0.5 for a stack on a rigid base (refine the grid)",
-        });
-    };
-    let layer = coating.layer();
-    let uniaxial = layer.uniaxial_strain_modulus();
-    let film = ratio * layer.contact_modulus() / uniaxial;
-    let squeeze = ratio * ratio * uniaxial / layer.shear_modulus();
-    if !(film >= MIN_FILM_COMPLIANCE && squeeze <= MAX_SQUEEZE_SHARE) {
-        return Err(Error::InvalidParameter {
-            name: "h / Delta (layer thickness over cell size)",
-            value: ratio,
-            expected: "at least 0.5 for this nearly incompressible film on a rigid base \
-                       (below, its squeeze-film compliance is not resolved; refine the grid)",
+            expected: "at least 0.5 for this nearly incompressible layer on a support that \
+                       acts as rigid (below, its squeeze-film compliance is not resolved; \
+                       refine the grid)",
         });
     }
     Ok(())

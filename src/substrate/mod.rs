@@ -274,6 +274,26 @@ impl Substrate {
         }
     }
 
+    /// What supports the top layer: `None` for a half-space (no layer),
+    /// `Some(None)` for a rigid base right under it, `Some(Some(body))`
+    /// otherwise (the elastic base, or the rest of a stack on its base).
+    pub(crate) fn support(&self) -> Option<Option<Substrate>> {
+        let base = self.base()?;
+        let rest: Vec<(Material, f64)> = match self {
+            Substrate::Stack(stack) => stack.layers()[1..]
+                .iter()
+                .map(|layer| (*layer.material(), layer.thickness()))
+                .collect(),
+            _ => Vec::new(),
+        };
+        Some(match (rest.is_empty(), base) {
+            (true, Base::Rigid) => None,
+            (true, Base::Elastic(material)) => Some(Substrate::HalfSpace(*material)),
+            // The rest of a valid stack is a valid stack.
+            (false, base) => Substrate::stack(&rest, base.clone()).ok(),
+        })
+    }
+
     /// The total thickness of the layers (m); `None` for a half-space.
     pub fn total_thickness(&self) -> Option<f64> {
         match self {
