@@ -9,6 +9,9 @@
 //! prints a summary; `--fine` doubles the resolution. See the module docs of
 //! `src/bin/layered-contact/paper/mod.rs` for the files.
 
+#[path = "../src/bin/layered-contact/say.rs"]
+#[macro_use]
+mod say;
 #[path = "../src/bin/layered-contact/paper/mod.rs"]
 mod paper;
 

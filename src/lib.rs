@@ -91,6 +91,7 @@
 pub mod analytic;
 pub mod doc;
 pub mod error;
+mod files;
 pub mod grid;
 pub mod indenter;
 pub mod kernel;

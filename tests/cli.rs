@@ -159,3 +159,41 @@ fn check_and_reference() {
         .unwrap();
     assert!((value / (2.0 * 1e6 / 0.75 * 1e-3) - 1.0).abs() < 1e-9);
 }
+
+/// Issue 24, finding 8: standard output that is closed or full made `check`,
+/// `reference` and `run` panic (exit 101). Each now ends with status 1 and
+/// says why.
+#[test]
+fn a_closed_or_full_stdout_is_an_error_not_a_panic() {
+    let dir = folder("stdout");
+    std::fs::write(dir.join("punch.toml"), PUNCH).unwrap();
+    for command in ["check", "reference", "run"] {
+        // A closed pipe: the reading end dropped before the tool writes.
+        let mut child = Command::new(env!("CARGO_BIN_EXE_layered-contact"))
+            .args([command, "punch.toml"])
+            .current_dir(&dir)
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        drop(child.stdout.take());
+        let out = child.wait_with_output().unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(1),
+            "{command}: {}",
+            text(&out.stderr)
+        );
+        assert!(text(&out.stderr).contains("cannot write to standard output"));
+        if Path::new("/dev/full").exists() {
+            let out = Command::new(env!("CARGO_BIN_EXE_layered-contact"))
+                .args([command, "punch.toml"])
+                .current_dir(&dir)
+                .stdout(std::fs::File::create("/dev/full").unwrap())
+                .output()
+                .unwrap();
+            assert_eq!(out.status.code(), Some(1), "{command}");
+            assert!(text(&out.stderr).contains("No space left"));
+        }
+    }
+}

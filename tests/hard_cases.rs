@@ -286,19 +286,25 @@ fn adhesion_extremes() {
         },
         ..Scene::default()
     };
-    match scene.run(&mut |_| {}) {
-        Err(Error::NoConvergence {
-            iterations,
-            residual,
-            ..
-        }) => {
-            // Two loading steps, then increments that double beyond -max_depth
-            // up to -20 max_depth: a few dozen evaluations, not 20 steps.
-            assert!(iterations < 40, "{iterations} steps");
-            assert!(residual < -1e-6);
-        }
-        other => panic!("expected NoConvergence, got {other:?}"),
-    }
+    // Two loading steps, then increments that double beyond -max_depth
+    // until past the exact jump-off (22 m above the surface with this
+    // absurd work of adhesion): a few dozen steps, and Kendall's pull-off
+    // within the 8-cell staircase's 2 %.
+    let curve = scene.run(&mut |_| {}).unwrap();
+    assert!(curve.steps.len() < 60, "{} steps", curve.steps.len());
+    let kendall = scene
+        .reference()
+        .unwrap()
+        .into_iter()
+        .find(|r| r.quantity == layered_contact::scene::Quantity::PullOffForce)
+        .unwrap()
+        .value;
+    let pull_off = curve.pull_off().unwrap().force;
+    assert!(
+        (pull_off / kendall - 1.0).abs() < 2e-2,
+        "{pull_off} {kendall}"
+    );
+    assert_eq!(curve.steps.last().unwrap().contact_area, 0.0);
 }
 
 /// A tolerance of 1e-14 either converges or is a typed error with a finite

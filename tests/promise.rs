@@ -71,14 +71,17 @@ fn f10_sticky_cycle_costs_a_few_dozen_unloading_steps() {
         },
         ..Scene::default()
     };
-    match scene.run(&mut |_| {}) {
-        Err(Error::NoConvergence { iterations, .. }) => {
-            // 100 001 loading steps, then at most 2 * 100 000 + log2(2e6)
-            // unloading evaluations (each free with the energy balance).
-            assert!(iterations < 100_001 + 200_030, "{iterations}");
-        }
-        other => panic!("expected NoConvergence, got {other:?}"),
-    }
+    // 100 001 loading steps, then 2 * 100 000 unloading steps down to
+    // -max_depth and a few dozen doublings to the exact jump-off, 22 m
+    // above the surface with this absurd work of adhesion (issue 24: it
+    // used to stop at -20 max_depth with NoConvergence).
+    let curve = scene.run(&mut |_| {}).unwrap();
+    assert!(
+        curve.steps.len() < 100_001 + 200_100,
+        "{}",
+        curve.steps.len()
+    );
+    assert_eq!(curve.steps.last().unwrap().contact_area, 0.0);
 }
 
 /// Finding 4: overflowing depths and heights returned `Ok` with a NaN force;

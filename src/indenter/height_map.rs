@@ -73,8 +73,27 @@ impl HeightMap {
             path: path.display().to_string(),
             detail,
         };
-        let array: ndarray::Array2<f64> =
-            ndarray_npy::read_npy(path).map_err(|e| file_error(e.to_string()))?;
+        let bytes =
+            crate::files::read_bounded(path, crate::files::MAX_NPY_BYTES).map_err(file_error)?;
+        // The header's shape must fit in the bytes that follow it before
+        // anything is allocated for it (a 160-byte file claiming 1e10
+        // values aborted the process).
+        let mut rest = bytes.as_slice();
+        let header = ndarray_npy::npy::header::Header::from_reader(&mut rest)
+            .map_err(|e| file_error(e.to_string()))?;
+        let claimed = header
+            .shape
+            .iter()
+            .try_fold(8usize, |total, &n| total.checked_mul(n));
+        if claimed.is_none_or(|claimed| claimed > rest.len()) {
+            return Err(file_error(format!(
+                "its header claims shape {:?} of 8-byte values, but {} bytes follow it",
+                header.shape,
+                rest.len()
+            )));
+        }
+        let array: ndarray::Array2<f64> = ndarray_npy::ReadNpyExt::read_npy(bytes.as_slice())
+            .map_err(|e| file_error(e.to_string()))?;
         let (rows, columns) = array.dim();
         let grid = Grid::new(rows, columns, spacing)?;
         HeightMap::new(grid, array.iter().copied().collect())
@@ -95,7 +114,8 @@ impl HeightMap {
             path: path.display().to_string(),
             detail,
         };
-        let text = std::fs::read_to_string(path).map_err(|e| file_error(e.to_string()))?;
+        let text = crate::files::read_text_bounded(path, crate::files::MAX_TEXT_MAP_BYTES)
+            .map_err(file_error)?;
         let (mut heights, mut columns, mut rows) = (Vec::new(), None, 0usize);
         for (number, line) in text.lines().enumerate() {
             let line = line.trim();

@@ -115,7 +115,7 @@ impl RadialRemainder {
             // The table would end at `top` at the latest: if the asymptotics
             // do not hold there, no table makes the coefficients usable.
             let last = remainder.mismatch_at(functions, lambda0, top);
-            if !(last <= tolerance.unusable) {
+            if last.is_nan() || last > tolerance.unusable {
                 remainder.tail_mismatch = last;
                 return remainder;
             }

@@ -32,12 +32,16 @@ pub fn richardson(coarse: (usize, f64), fine: (usize, f64), order: f64) -> f64 {
 pub enum Quantity {
     /// [`Curve::stiffness`], N/m.
     Stiffness,
-    /// The largest force of the curve, N.
+    /// The force at the peak, the last step of the loading phase (the
+    /// deepest point of a depth-driven protocol), N. For a non-adhesive
+    /// curve it is also the largest force; an adhesive contact a few
+    /// nanometres deep pulls at its peak, below the zero force of the free
+    /// steps.
     PeakForce,
     /// The pull-off force ([`Curve::pull_off`]), N.
     PullOffForce,
-    /// The contact radius (of equal area) at the largest force of the
-    /// curve, m.
+    /// The contact radius (of equal area) at the peak (the last step of
+    /// the loading phase), m.
     PeakContactRadius,
 }
 
@@ -57,15 +61,20 @@ impl Quantity {
     pub fn of(&self, curve: &Curve) -> Option<f64> {
         match self {
             Quantity::Stiffness => curve.stiffness(),
-            Quantity::PeakForce => curve.steps.iter().map(|s| s.force).reduce(f64::max),
+            Quantity::PeakForce => peak_step(curve).map(|s| s.force),
             Quantity::PullOffForce => curve.pull_off().map(|s| s.force),
-            Quantity::PeakContactRadius => curve
-                .steps
-                .iter()
-                .max_by(|a, b| a.force.total_cmp(&b.force))
-                .map(|s| s.contact_radius),
+            Quantity::PeakContactRadius => peak_step(curve).map(|s| s.contact_radius),
         }
     }
+}
+
+/// The last step of the loading phase.
+fn peak_step(curve: &Curve) -> Option<&super::Step> {
+    curve
+        .steps
+        .iter()
+        .rev()
+        .find(|s| s.phase == super::Phase::Loading)
 }
 
 /// The outcome of [`Scene::converge`].

@@ -30,6 +30,12 @@ pub(super) fn run(
     };
     if let Reach::Depth(depth) = reach {
         if depth <= solver.lowest_height(indenter)? {
+            // An indenter's lowest point is on its axis at height 0: past
+            // it, it touches (and a JKR contact jumps in), whether or not
+            // a cell centre does. A height map is its own samples.
+            if depth > 0.0 && !scene.indenter.is_map() {
+                return Ok(Outcome::MissesTip);
+            }
             // The indenter never touches: every step is free.
             recorder.free(Phase::Loading, depth);
             return Ok(done(solver, recorder.steps, None, false));
@@ -156,6 +162,9 @@ fn cycle(
     // Exact points of the receding branch: the least force if it lies on the
     // path (above the jump-off), and the jump-off.
     let mut exact = Vec::new();
+    // The contact is lost past the jump-off, which for a shallow cycle lies
+    // many loading depths above the surface (adhesion sets its scale).
+    let mut last_depth = -MAX_PULL_DEPTHS * max_depth;
     if area > 0.0 {
         let jump = branches.jump_off(area)?;
         let pull = branches.pull_off(area)?;
@@ -163,11 +172,14 @@ fn cycle(
             exact.push(pull);
         }
         exact.push(jump);
+        last_depth = last_depth.min(2.0 * jump.depth);
     }
     let mut exact = exact.into_iter().peekable();
     let mut depth = max_depth;
     let mut step = increment;
-    for _ in 0..MAX_PROTOCOL_STEPS {
+    // 2 steps increments reach -max_depth; doubling from there crosses any
+    // finite jump-off depth within the f64 exponent range.
+    for _ in 0..2 * steps + 2100 {
         if depth < -max_depth {
             step *= 2.0;
         }
@@ -181,14 +193,17 @@ fn cycle(
         if area == 0.0 {
             return Ok(peak);
         }
-        if depth < -MAX_PULL_DEPTHS * max_depth {
+        if depth < last_depth {
             break;
         }
     }
-    Err(Error::NoConvergence {
-        method: "unloading to contact loss (still attached 20 loading depths above the surface)",
-        iterations: recorder.steps.len(),
-        residual: depth,
+    Err(Error::Internal {
+        what: "the energy-balance unloading",
+        detail: format!(
+            "still attached at depth {depth:e} m, where the contact must be lost by \
+             {last_depth:e} m (twice the exact jump-off depth, or 20 loading depths above \
+             the surface)"
+        ),
     })
 }
 

@@ -19,10 +19,12 @@ impl Scene {
     pub fn read(path: impl AsRef<Path>) -> Result<Scene> {
         let path = path.as_ref();
         let name = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| Error::SceneFile {
-            source_name: name.clone(),
-            detail: e.to_string(),
-        })?;
+        let text = crate::files::read_text_bounded(path, crate::files::MAX_SCENE_BYTES).map_err(
+            |detail| Error::SceneFile {
+                source_name: name.clone(),
+                detail,
+            },
+        )?;
         let json = path
             .extension()
             .is_some_and(|e| e.eq_ignore_ascii_case("json"));

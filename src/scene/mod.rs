@@ -125,6 +125,19 @@ pub struct Resolution {
     pub margin: f64,
 }
 
+impl Protocol {
+    /// The name and value of what the protocol reaches for (a depth or a
+    /// force, as in the scene file), for error messages.
+    pub(crate) fn reach(&self) -> (&'static str, f64) {
+        match *self {
+            Protocol::Depth { depth } => ("depth", depth),
+            Protocol::Cycle { max_depth, .. } => ("max_depth", max_depth),
+            Protocol::Force { force } => ("force", force),
+            Protocol::ForceCycle { max_force, .. } => ("max_force", max_force),
+        }
+    }
+}
+
 impl Default for Resolution {
     fn default() -> Self {
         Resolution {
@@ -400,6 +413,25 @@ impl Scene {
                 Outcome::ReachedEdge => {
                     let grid = *active.grid();
                     let cells = fft_friendly((grid.rows() * 3).div_ceil(2));
+                    grown = Some(self.solver_on(&Grid::new(cells, cells, grid.spacing())?)?);
+                }
+                Outcome::MissesTip => {
+                    let grid = *active.grid();
+                    if grid.rows() % 2 == 1 && grid.columns() % 2 == 1 {
+                        // A cell centre already sits on the axis: the
+                        // lowest point is elsewhere (a tilted indenter).
+                        let (name, value) = self.protocol.reach();
+                        return Err(Error::InvalidParameter {
+                            name,
+                            value,
+                            expected: "deeper than the indenter's lowest cell centre \
+                                       (the indenter touches between cell centres: use \
+                                       a deeper load or more cells)",
+                        });
+                    }
+                    // One more cell puts a cell centre on the axis, where
+                    // the indenter touches first.
+                    let cells = grid.rows().max(grid.columns()) | 1;
                     grown = Some(self.solver_on(&Grid::new(cells, cells, grid.spacing())?)?);
                 }
             }

@@ -83,7 +83,10 @@ impl Scene {
                     value: punch.stiffness(),
                     source,
                 });
-                if let Some(depth) = self.peak_depth() {
+                // At depth <= 0 the punch makes no contact (force 0, no
+                // relative error to speak of); the bonded solution's
+                // tension would not be the problem solved.
+                if let Some(depth) = self.peak_depth().filter(|&d| d > 0.0) {
                     out.push(Reference {
                         quantity: Quantity::PeakForce,
                         value: punch.stiffness() * depth,

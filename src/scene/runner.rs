@@ -11,6 +11,9 @@ use super::{Curve, IndenterSpec, Phase, Protocol, Scene, Step, MAX_PULL_DEPTHS};
 pub(super) enum Outcome {
     Done(Box<Curve>),
     ReachedEdge,
+    /// The indenter touches at the scene's depth but no cell centre does:
+    /// its lowest point (on its axis) lies between cell centres.
+    MissesTip,
 }
 
 /// The state of one run of a scene.

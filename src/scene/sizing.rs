@@ -163,12 +163,7 @@ impl Scene {
             Some((peak, pull_off)) => (peak, peak.min(pull_off)),
             None => {
                 if !(peak.is_normal() && peak > 0.0) {
-                    let (name, value) = match self.protocol {
-                        Protocol::Depth { depth } => ("depth", depth),
-                        Protocol::Cycle { max_depth, .. } => ("max_depth", max_depth),
-                        Protocol::Force { force } => ("force", force),
-                        Protocol::ForceCycle { max_force, .. } => ("max_force", max_force),
-                    };
+                    let (name, value) = self.protocol.reach();
                     return Err(Error::InvalidParameter {
                         name,
                         value,

@@ -290,7 +290,7 @@ impl Substrate {
             (true, Base::Rigid) => None,
             (true, Base::Elastic(material)) => Some(Substrate::HalfSpace(*material)),
             // The rest of a valid stack is a valid stack.
-            (false, base) => Substrate::stack(&rest, base.clone()).ok(),
+            (false, base) => Substrate::stack(&rest, *base).ok(),
         })
     }
 

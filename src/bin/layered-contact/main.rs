@@ -10,6 +10,9 @@
 //! Errors are printed as sentences (a scene file's mistakes with line,
 //! column and key) and end the program with exit status 1.
 
+#[macro_use]
+mod say;
+
 mod output;
 mod paper;
 mod progress;
@@ -71,7 +74,7 @@ fn main() -> ExitCode {
     match dispatch(Cli::parse().command) {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
-            eprintln!("error: {error}");
+            tell!("error: {error}");
             ExitCode::FAILURE
         }
     }
@@ -96,7 +99,7 @@ fn run(scene: &Scene, out: &std::path::Path) -> Result<()> {
     let curve = curve?;
     std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
     let written = output::write_all(scene, &curve, out)?;
-    println!(
+    say!(
         "{} steps on a {} x {} grid of {:.4e} m cells",
         curve.steps.len(),
         curve.grid.rows(),
@@ -104,27 +107,31 @@ fn run(scene: &Scene, out: &std::path::Path) -> Result<()> {
         curve.grid.spacing()
     );
     for caveat in &curve.caveats {
-        println!("caveat: {caveat}");
+        say!("caveat: {caveat}");
     }
     if let Some(k) = curve.stiffness() {
-        println!("stiffness at the peak: {k:.6e} N/m");
+        say!("stiffness at the peak: {k:.6e} N/m");
     }
     if let Some(p) = curve.pull_off() {
-        println!("pull-off: {:.6e} N at depth {:.6e} m", p.force, p.depth);
+        say!("pull-off: {:.6e} N at depth {:.6e} m", p.force, p.depth);
     }
     for r in scene.reference()? {
         if let Some(bem) = r.quantity.of(&curve) {
-            println!(
-                "{}: {bem:.6e} (exact {:.6e}, {:+.3} %; {})",
+            let error = if r.value == 0.0 {
+                format!("difference {:.3e}", bem - r.value)
+            } else {
+                format!("{:+.3} %", 100.0 * (bem / r.value - 1.0))
+            };
+            say!(
+                "{}: {bem:.6e} (exact {:.6e}, {error}; {})",
                 r.quantity.name(),
                 r.value,
-                100.0 * (bem / r.value - 1.0),
                 r.source
             );
         }
     }
     for path in written {
-        println!("wrote {}", path.display());
+        say!("wrote {}", path.display());
     }
     Ok(())
 }
@@ -134,8 +141,8 @@ fn check(scene: &Scene) -> Result<()> {
     let grid = scene.grid()?;
     let (lx, ly) = grid.extent();
     let bytes = layered_contact::kernel::memory_estimate(&grid, scene.boundary);
-    println!("scene is valid");
-    println!(
+    say!("scene is valid");
+    say!(
         "grid: {} x {} cells of {:.4e} m ({lx:.4e} m x {ly:.4e} m), {}",
         grid.rows(),
         grid.columns(),
@@ -145,17 +152,17 @@ fn check(scene: &Scene) -> Result<()> {
             layered_contact::Boundary::Periodic => "periodic",
         }
     );
-    println!("memory: about {:.1} MB for the solve", bytes as f64 / 1e6);
+    say!("memory: about {:.1} MB for the solve", bytes as f64 / 1e6);
     Ok(())
 }
 
 fn reference(scene: &Scene) -> Result<()> {
     let references = scene.reference()?;
     if references.is_empty() {
-        println!("no exact values for this scene (they exist for an untilted flat punch, paraboloid or sphere on an isolated grid)");
+        say!("no exact values for this scene (they exist for an untilted flat punch, paraboloid or sphere on an isolated grid)");
     }
     for r in references {
-        println!("{}: {:.9e} ({})", r.quantity.name(), r.value, r.source);
+        say!("{}: {:.9e} ({})", r.quantity.name(), r.value, r.source);
     }
     Ok(())
 }

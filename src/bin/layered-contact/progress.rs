@@ -41,7 +41,7 @@ impl Progress {
     pub fn stage(&mut self, what: &str) {
         match &self.bar {
             Some(bar) => bar.set_message(what.to_string()),
-            None => eprintln!("[{:8.1} s] {what}", self.started.elapsed().as_secs_f64()),
+            None => tell!("[{:8.1} s] {what}", self.started.elapsed().as_secs_f64()),
         }
     }
 
@@ -61,7 +61,7 @@ impl Progress {
                     step.force
                 ));
             }
-            None => eprintln!(
+            None => tell!(
                 "[{:8.1} s] step {}: {}, depth {:.6e} m, force {:.6e} N, contact radius {:.6e} m, {} iterations",
                 self.started.elapsed().as_secs_f64(),
                 self.steps,
@@ -78,7 +78,7 @@ impl Progress {
     pub fn finish(&mut self) {
         match &self.bar {
             Some(bar) => bar.finish_and_clear(),
-            None => eprintln!(
+            None => tell!(
                 "[{:8.1} s] done, {} steps",
                 self.started.elapsed().as_secs_f64(),
                 self.steps

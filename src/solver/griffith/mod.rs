@@ -32,9 +32,13 @@ const NODE_RELATIVE_SPACING: f64 = 0.1;
 /// radius, or 35 % of the radius if that is more (about seven sets).
 const FIT_WINDOW: f64 = 4.0;
 const FIT_RELATIVE_WINDOW: f64 = 0.35;
-/// How many times the family may be widened when the loading branch does
-/// not fit in it.
-const MAX_WIDENINGS: usize = 4;
+/// How many times the family may be widened (its height level multiplied by
+/// four) when the loading branch does not fit in it. A JKR contact jumps in
+/// at first touch to a radius set by adhesion, not by the depth: a cycle a
+/// nanometre deep may need a level thousands of times its depth. The loop
+/// also ends once the level spans the whole profile (the family is capped),
+/// so this bound only guards against levels that never grow.
+const MAX_WIDENINGS: usize = 64;
 /// The staircase edge in cells: a set of `m` cells behaves, to first order in
 /// the cell size, like a disc of radius `sqrt(m / pi) - EDGE_SHIFT` cells.
 /// The piecewise-constant pressures miss part of the square-root edge
@@ -142,6 +146,12 @@ impl ContactSolver {
                 match AdhesiveBranches::new(&raw, delta, capped, lowest, advancing, receding) {
                     Err(Error::ContactReachesEdge { .. }) if periodic && !kept => {
                         return Err(half_period_error())
+                    }
+                    // Too few sets below a level the grid can still widen:
+                    // a shallow load whose contact jumps in far beyond it.
+                    Err(Error::ContactReachesEdge { .. }) if kept && !capped => {
+                        level *= 4.0;
+                        continue;
                     }
                     other => other?,
                 };

@@ -143,7 +143,7 @@ pub fn run(out: &Path, fine: bool) -> Result<()> {
     figures::sphere_curves(&out.join("sphere_curves.svg"), &sphere_runs, &config)?;
 
     summary(&stiffness, &punch_curves, &sphere_curves)?;
-    println!(
+    say!(
         "\nwrote {} in {:.1} s (wall time of the whole run)",
         out.display(),
         started.elapsed().as_secs_f64()
@@ -261,12 +261,12 @@ fn summary(stiffness: &[StiffnessRow], punches: &[PunchRun], spheres: &[SphereRu
             hi = mid;
         }
     }
-    println!("\n# Summary");
-    println!(
+    say!("\n# Summary");
+    say!(
         "series K/(2aE*) at h = D = 5 mm: {:.4} (paper: 1.9)",
         series.evaluate(2.5e-3)?.ratio
     );
-    println!(
+    say!(
         "h = 5 mm series reaches 1.2 at D = {:.4} mm (paper: 1.55 mm)",
         0.5 * (lo + hi) * 1e3
     );
@@ -275,14 +275,14 @@ fn summary(stiffness: &[StiffnessRow], punches: &[PunchRun], spheres: &[SphereRu
         .filter_map(|r| r.bem.map(|b| (b / r.exact - 1.0, r)))
         .max_by(|a, b| a.0.abs().total_cmp(&b.0.abs()));
     if let Some((error, row)) = worst {
-        println!(
+        say!(
             "largest BEM deviation from the exact stiffness: {:+.2} % (h = {} mm, D = {} mm)",
             100.0 * error,
             row.h_mm,
             row.d_mm
         );
     }
-    println!(
+    say!(
         "\nflat punch pull-off [mN], BEM / exact (dgamma1 = {}), error; loading branch error:",
         experiment::DGAMMA_PUNCH
     );
@@ -292,7 +292,7 @@ fn summary(stiffness: &[StiffnessRow], punches: &[PunchRun], spheres: &[SphereRu
         let error = bem / p.exact.1 - 1.0;
         worst_pull = worst_pull.max(error.abs());
         worst_loading = worst_loading.max(p.loading_error);
-        println!(
+        say!(
             "  h = {:>4} mm, D = {:>4} mm: {:9.2} / {:9.2}  {:+.2} %; loading {:.2} %",
             p.h,
             p.d,
@@ -302,13 +302,13 @@ fn summary(stiffness: &[StiffnessRow], punches: &[PunchRun], spheres: &[SphereRu
             100.0 * p.loading_error
         );
     }
-    println!("\nsphere pull-off [mN], BEM / exact JKR on the layer (load control), error; loading branch error:");
+    say!("\nsphere pull-off [mN], BEM / exact JKR on the layer (load control), error; loading branch error:");
     for s in spheres {
         let bem = experiment::pull_off(&s.curve);
         let error = bem / s.exact.1 - 1.0;
         worst_pull = worst_pull.max(error.abs());
         worst_loading = worst_loading.max(s.loading_error);
-        println!(
+        say!(
             "  R = {:>5} mm, h = {:>4} mm, dgamma1 = {:5.3}: {:9.2} / {:9.2}  {:+.2} %; loading {:.2} %",
             s.r,
             s.h,
@@ -319,7 +319,7 @@ fn summary(stiffness: &[StiffnessRow], punches: &[PunchRun], spheres: &[SphereRu
             100.0 * s.loading_error
         );
     }
-    println!(
+    say!(
         "\nworst pull-off error {:.2} %, worst loading-branch error {:.2} % (of the peak force)",
         100.0 * worst_pull,
         100.0 * worst_loading
