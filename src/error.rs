@@ -4,6 +4,25 @@
 //! the offending quantity and carries its value, so that a message such as
 //! `Poisson ratio must lie in [0, 0.5], got 0.7` tells the caller what to fix.
 
+/// A number as a person reads it: plain between `1e-4` and `1e7`, in
+/// scientific notation beyond (`1e-300`, not three hundred zeros).
+struct Readable(f64);
+
+impl std::fmt::Display for Readable {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let v = self.0;
+        if v == 0.0 || !v.is_finite() || (1e-4..1e7).contains(&v.abs()) {
+            write!(f, "{v}")
+        } else {
+            write!(f, "{v:e}")
+        }
+    }
+}
+
+fn readable(value: &f64) -> Readable {
+    Readable(*value)
+}
+
 /// Everything that can go wrong in `layered-contact`.
 ///
 /// The enum is `#[non_exhaustive]`: later versions may add variants, so match
@@ -12,20 +31,20 @@
 #[non_exhaustive]
 pub enum Error {
     /// Young's modulus is NaN or outside `[1e-150, 1e150]` Pa.
-    #[error("Young's modulus must lie in [1e-150, 1e150] Pa, got {value} Pa")]
+    #[error("Young's modulus must lie in [1e-150, 1e150] Pa, got {} Pa", readable(.value))]
     InvalidYoungsModulus {
         /// The rejected value, in Pa.
         value: f64,
     },
     /// Poisson's ratio is outside `[0, 0.5]` or NaN.
-    #[error("Poisson ratio must lie in [0, 0.5], got {value}")]
+    #[error("Poisson ratio must lie in [0, 0.5], got {}", readable(.value))]
     InvalidPoissonRatio {
         /// The rejected value.
         value: f64,
     },
     /// A layer thickness is negative or NaN, or zero on a rigid base (which
     /// would leave no elastic body at all).
-    #[error("layer thickness must be {expected}, got {value} m")]
+    #[error("layer thickness must be {expected}, got {} m", readable(.value))]
     InvalidThickness {
         /// The rejected value, in m.
         value: f64,
@@ -34,7 +53,7 @@ pub enum Error {
     },
     /// Any other scalar input outside its domain (a radius, an angle, a work
     /// of adhesion, an index, ...).
-    #[error("{name} must be {expected}, got {value}")]
+    #[error("{name} must be {expected}, got {}", readable(.value))]
     InvalidParameter {
         /// The name of the parameter, as in the documentation.
         name: &'static str,
@@ -66,7 +85,7 @@ pub enum Error {
     },
     /// The indenter cannot touch the surface anywhere on the grid (its height
     /// is `+inf` at every cell centre): the grid does not reach it.
-    #[error("the indenter (bounding radius {bounding_radius} m) does not reach any cell of a grid {grid_extent} m wide")]
+    #[error("the indenter (bounding radius {} m) does not reach any cell of a grid {} m wide", readable(.bounding_radius), readable(.grid_extent))]
     IndenterOutsideGrid {
         /// The indenter's bounding radius, m.
         bounding_radius: f64,
@@ -80,6 +99,13 @@ pub enum Error {
         feature: &'static str,
         /// Why not, and what to use instead.
         reason: &'static str,
+    },
+    /// The caller's interrupt check ([`ContactSolver::set_interrupt`](crate::solver::ContactSolver::set_interrupt))
+    /// asked to stop (Ctrl-C in Python).
+    #[error("{what} was interrupted")]
+    Interrupted {
+        /// What was running.
+        what: &'static str,
     },
     /// A failure inside the library that valid input should never cause;
     /// please report it.
@@ -103,7 +129,7 @@ pub enum Error {
     /// A computed quantity is not finite (overflow or underflow in the
     /// input's scales); no result is returned rather than a NaN or an
     /// infinity.
-    #[error("{what} produced a non-finite value ({value})")]
+    #[error("{what} produced a non-finite value ({})", readable(.value))]
     NonFinite {
         /// The computation.
         what: &'static str,
@@ -114,7 +140,9 @@ pub enum Error {
     /// an adhesive contact pulled beyond its pull-off force, or a pull on an
     /// indenter that is not in contact.
     #[error(
-        "no equilibrium at force {force} N: the least force the contact can hold is {least} N"
+        "no equilibrium at force {} N: the least force the contact can hold is {} N",
+        readable(.force),
+        readable(.least)
     )]
     NoEquilibrium {
         /// The requested force, N.

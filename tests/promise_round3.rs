@@ -316,3 +316,46 @@ fn f7_endless_files_are_refused_at_once() {
         }
     }
 }
+
+/// Still open from round two: `JkrFlatPunch::force(NaN)` and
+/// `LayeredFlatPunch::pressure(1e-6, NaN)` returned 0 instead of NaN. NaN
+/// in, NaN out, as `doc::reliability` promises for the closed forms.
+#[test]
+fn closed_forms_pass_nan_through() {
+    use layered_contact::analytic::{Axisymmetric, BoussinesqPunch, JkrFlatPunch};
+    let rubber = Material::new(1e6, 0.5).unwrap();
+    let kendall = JkrFlatPunch::new(&rubber, 1e-3, 0.05).unwrap();
+    assert!(kendall.force(f64::NAN).is_nan());
+    let punch = BoussinesqPunch::new(&rubber, 1e-3).unwrap();
+    assert!(punch.pressure(f64::NAN, 0.0).is_nan() && punch.pressure(1.0, f64::NAN).is_nan());
+    let film = Substrate::layer_on_rigid_base(rubber, 1e-3).unwrap();
+    let layered = Axisymmetric::new(&film, 2.0)
+        .unwrap()
+        .flat_punch(1e-3)
+        .unwrap();
+    assert!(layered.pressure(1e-6, f64::NAN).is_nan());
+    assert!(layered.pressure(f64::NAN, 0.0).is_nan());
+    // Outside the punch the pressure stays an exact 0.
+    assert_eq!(layered.pressure(1e-6, 2e-3), 0.0);
+}
+
+/// Also: error messages printed extreme values in full decimal ("got
+/// 0.000...0001 Pa" with three hundred digits). They read as a person
+/// writes them now.
+#[test]
+fn extreme_values_read_in_scientific_notation() {
+    let message = |e: f64| Material::new(e, 0.3).unwrap_err().to_string();
+    assert_eq!(
+        message(1e-300),
+        "Young's modulus must lie in [1e-150, 1e150] Pa, got 1e-300 Pa"
+    );
+    assert_eq!(
+        message(2.5e200),
+        "Young's modulus must lie in [1e-150, 1e150] Pa, got 2.5e200 Pa"
+    );
+    assert!(message(f64::NAN).ends_with("got NaN Pa"));
+    assert_eq!(
+        Material::new(1e6, 0.7).unwrap_err().to_string(),
+        "Poisson ratio must lie in [0, 0.5], got 0.7"
+    );
+}

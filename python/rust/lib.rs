@@ -3,7 +3,7 @@
 //! own messages; solves release the GIL.
 
 use std::path::PathBuf;
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 
 use numpy::{
     PyArray1, PyArrayDyn, PyArrayMethods, PyReadonlyArray2, PyReadonlyArrayDyn,
@@ -13,6 +13,7 @@ use pyo3::create_exception;
 use pyo3::exceptions::PyException;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
+use std::time::{Duration, Instant};
 
 use layered_contact as lc;
 
@@ -258,8 +259,10 @@ impl Indenter {
     fn height_map(heights: PyReadonlyArray2<'_, f64>, spacing: f64) -> PyResult<Self> {
         let shape = heights.shape();
         let (rows, columns) = (shape[0], shape[1]);
-        let values: Vec<f64> = heights.as_array().iter().copied().collect();
+        // The grid's limits first: a broadcast array of 2^31 values copied
+        // 16 GB before they were checked.
         let grid = lc::Grid::new(rows, columns, spacing).py_err()?;
+        let values: Vec<f64> = heights.as_array().iter().copied().collect();
         let map = lc::indenter::HeightMap::new(grid, values).py_err()?;
         Ok(Indenter::new(
             map,
@@ -293,6 +296,7 @@ impl Indenter {
                 y.shape()
             )));
         }
+        checked_len("x", x.shape())?;
         let values: Vec<f64> = x
             .as_array()
             .iter()
@@ -602,10 +606,36 @@ fn run_scene(
             shape.inner.clone(),
         )));
     }
-    // The first error the callback raises (or Ctrl-C) is raised after the run.
-    let mut raised: Option<PyErr> = None;
+    // The first error the callback raises, or Ctrl-C (checked every 10 ms
+    // inside the solves and after every step), stops the run and is raised.
+    let raised: Arc<Mutex<Option<PyErr>>> = Arc::default();
+    let interrupt: lc::solver::Interrupt = {
+        let raised = Arc::clone(&raised);
+        let last = Mutex::new(Instant::now());
+        Arc::new(move || {
+            let mut raised = raised.lock().unwrap_or_else(|e| e.into_inner());
+            if raised.is_some() {
+                return true;
+            }
+            let mut last = last.lock().unwrap_or_else(|e| e.into_inner());
+            if last.elapsed() < Duration::from_millis(10) {
+                return false;
+            }
+            *last = Instant::now();
+            match Python::attach(|py| py.check_signals()) {
+                Ok(()) => false,
+                Err(e) => {
+                    *raised = Some(e);
+                    true
+                }
+            }
+        })
+    };
     let curve = py.detach(|| {
-        scene.run(&mut |step| {
+        let mut solver = scene.solver()?;
+        solver.set_interrupt(Some(interrupt));
+        scene.run_on(&mut solver, &mut |step| {
+            let mut raised = raised.lock().unwrap_or_else(|e| e.into_inner());
             if raised.is_some() {
                 return;
             }
@@ -617,12 +647,12 @@ fn run_scene(
                     None => Ok(()),
                 });
                 if let Err(e) = outcome {
-                    raised = Some(e);
+                    *raised = Some(e);
                 }
             });
         })
     });
-    if let Some(e) = raised {
+    if let Some(e) = raised.lock().unwrap_or_else(|e| e.into_inner()).take() {
         return Err(e);
     }
     let curve = curve.py_err()?;
@@ -683,12 +713,28 @@ fn scene_reference<'py>(
     Ok(out)
 }
 
+/// The most values an array argument may hold (1 GiB of `f64`): the result
+/// has as many, and a broadcast view of one value can claim billions.
+const MAX_ARRAY_VALUES: usize = 1 << 27;
+
+/// The number of values of an array of `shape`, checked before anything is
+/// copied or allocated for it.
+fn checked_len(name: &str, shape: &[usize]) -> PyResult<usize> {
+    match shape.iter().try_fold(1usize, |n, &k| n.checked_mul(k)) {
+        Some(n) if n <= MAX_ARRAY_VALUES => Ok(n),
+        _ => Err(InvalidInputError::new_err(format!(
+            "{name} has shape {shape:?}: at most 2^27 values per call (split it)"
+        ))),
+    }
+}
+
 /// `f` applied to every element of `values`, same shape.
 fn map<'py>(
     py: Python<'py>,
     values: PyReadonlyArrayDyn<'py, f64>,
     f: impl Fn(f64) -> lc::Result<f64>,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    checked_len("the array", values.shape())?;
     let out: Vec<f64> = values
         .as_array()
         .iter()
@@ -766,6 +812,7 @@ fn flat_punch_stiffness<'py>(
     substrate: &Substrate,
     radius: PyReadonlyArrayDyn<'py, f64>,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    checked_len("radius", radius.shape())?;
     let largest =
         radius
             .as_array()
@@ -819,6 +866,7 @@ fn paraboloid_state<'py>(
     work_of_adhesion: f64,
     contact_radius: PyReadonlyArrayDyn<'py, f64>,
 ) -> PyResult<(Array<'py>, Array<'py>)> {
+    checked_len("contact_radius", contact_radius.shape())?;
     let radii: Vec<f64> = contact_radius.as_array().iter().copied().collect();
     let largest = radii.iter().copied().fold(0.0f64, f64::max);
     let substrate = substrate.inner.clone();

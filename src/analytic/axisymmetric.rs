@@ -440,7 +440,12 @@ fn pressure_profile(
 ) -> f64 {
     let a = radius;
     let r = r.abs();
-    if r.is_nan() || r >= a {
+    // NaN in, NaN out (the depth too: outside the contact the pressure is
+    // 0 whatever it is, but a NaN depth is no depth).
+    if r.is_nan() || depth.is_nan() {
+        return f64::NAN;
+    }
+    if r >= a {
         return 0.0;
     }
     let phi = |xi: f64| depth * solution.value(false, xi) - curvature * solution.value(true, xi);

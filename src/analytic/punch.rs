@@ -56,6 +56,9 @@ impl BoussinesqPunch {
     /// and on the rim, where the integrable edge singularity sits.
     pub fn pressure(&self, force: f64, r: f64) -> f64 {
         let a = self.radius;
+        if force.is_nan() || r.is_nan() {
+            return f64::NAN;
+        }
         if r.abs() < a {
             force / (2.0 * PI * a * ((a - r) * (a + r)).sqrt())
         } else {
@@ -121,7 +124,8 @@ impl JkrFlatPunch {
     /// The force at `depth`: `2 a E* d` while attached (`d >= d_c`), 0 once
     /// detached.
     pub fn force(&self, depth: f64) -> f64 {
-        if depth >= self.critical_depth() {
+        if depth.is_nan() || depth >= self.critical_depth() {
+            // NaN in, NaN out.
             self.stiffness() * depth
         } else {
             0.0

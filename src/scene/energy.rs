@@ -27,6 +27,7 @@ pub(super) fn run(
         steps: Vec::new(),
         progress,
         iterations: 0,
+        interrupt: solver.interrupt().cloned(),
     };
     if let Reach::Depth(depth) = reach {
         if depth <= solver.lowest_height(indenter)? {
@@ -37,7 +38,7 @@ pub(super) fn run(
                 return Ok(Outcome::MissesTip);
             }
             // The indenter never touches: every step is free.
-            recorder.free(Phase::Loading, depth);
+            recorder.free(Phase::Loading, depth)?;
             return Ok(done(solver, recorder.steps, None, false));
         }
     }
@@ -48,10 +49,10 @@ pub(super) fn run(
     recorder.iterations = branches.iterations();
     let peak = match scene.protocol {
         Protocol::Depth { depth } => {
-            recorder.record(Phase::Loading, branches.at_depth(depth, 0.0)?)
+            recorder.record(Phase::Loading, branches.at_depth(depth, 0.0)?)?
         }
         Protocol::Force { force } => {
-            recorder.record(Phase::Loading, branches.at_force(force, 0.0)?)
+            recorder.record(Phase::Loading, branches.at_force(force, 0.0)?)?
         }
         Protocol::Cycle { max_depth, steps } => cycle(&branches, &mut recorder, max_depth, steps)?,
         Protocol::ForceCycle { max_force, steps } => {
@@ -101,10 +102,12 @@ struct Recorder<'p> {
     /// Iterations not yet attributed to a step (the branches' cost goes to
     /// the first step).
     iterations: usize,
+    /// The solver's interrupt check, asked after every step.
+    interrupt: Option<crate::solver::Interrupt>,
 }
 
 impl Recorder<'_> {
-    fn record(&mut self, phase: Phase, point: BranchPoint) -> BranchPoint {
+    fn record(&mut self, phase: Phase, point: BranchPoint) -> Result<BranchPoint> {
         let step = Step {
             phase,
             depth: point.depth,
@@ -115,10 +118,15 @@ impl Recorder<'_> {
         };
         (self.progress)(&step);
         self.steps.push(step);
-        point
+        match &self.interrupt {
+            Some(check) if check() => Err(Error::Interrupted {
+                what: "the adhesive scene",
+            }),
+            _ => Ok(point),
+        }
     }
 
-    fn free(&mut self, phase: Phase, depth: f64) {
+    fn free(&mut self, phase: Phase, depth: f64) -> Result<BranchPoint> {
         self.record(
             phase,
             BranchPoint {
@@ -127,7 +135,7 @@ impl Recorder<'_> {
                 contact_area: 0.0,
                 contact_radius: 0.0,
             },
-        );
+        )
     }
 }
 
@@ -139,11 +147,11 @@ fn load(
     at: impl Fn(usize, f64) -> Result<BranchPoint>,
 ) -> Result<BranchPoint> {
     let mut peak = at(0, 0.0)?;
-    recorder.record(Phase::Loading, peak);
+    recorder.record(Phase::Loading, peak)?;
     for k in 1..=steps {
-        peak = recorder.record(Phase::Loading, at(k, peak.contact_area)?);
+        peak = recorder.record(Phase::Loading, at(k, peak.contact_area)?)?;
     }
-    recorder.record(Phase::Unloading, peak);
+    recorder.record(Phase::Unloading, peak)?;
     Ok(peak)
 }
 
@@ -186,10 +194,10 @@ fn cycle(
         depth -= step;
         let point = branches.at_depth(depth, area)?;
         while let Some(e) = exact.next_if(|e| e.depth > point.depth && e.contact_area <= area) {
-            recorder.record(Phase::Unloading, e);
+            recorder.record(Phase::Unloading, e)?;
         }
         area = point.contact_area;
-        recorder.record(Phase::Unloading, point);
+        recorder.record(Phase::Unloading, point)?;
         if area == 0.0 {
             return Ok(peak);
         }
@@ -225,11 +233,11 @@ fn force_cycle(
         match branches.at_force(force, area) {
             Ok(point) => {
                 area = point.contact_area;
-                recorder.record(Phase::Unloading, point);
+                recorder.record(Phase::Unloading, point)?;
             }
             Err(Error::NoEquilibrium { .. }) => {
-                let pull = recorder.record(Phase::Unloading, branches.pull_off(area)?);
-                recorder.free(Phase::Unloading, pull.depth);
+                let pull = recorder.record(Phase::Unloading, branches.pull_off(area)?)?;
+                recorder.free(Phase::Unloading, pull.depth)?;
                 return Ok(peak);
             }
             Err(e) => return Err(e),

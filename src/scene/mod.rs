@@ -125,6 +125,16 @@ pub struct Resolution {
     pub margin: f64,
 }
 
+impl Scene {
+    /// A solver on a `cells`-square grid of `solver`'s spacing, with its
+    /// interrupt check (a grid grown or re-centred during a run).
+    fn solver_like(&self, solver: &ContactSolver, cells: usize) -> Result<ContactSolver> {
+        let mut next = self.solver_on(&Grid::new(cells, cells, solver.grid().spacing())?)?;
+        next.set_interrupt(solver.interrupt().cloned());
+        Ok(next)
+    }
+}
+
 impl Protocol {
     /// The name and value of what the protocol reaches for (a depth or a
     /// force, as in the scene file), for error messages.
@@ -413,7 +423,7 @@ impl Scene {
                 Outcome::ReachedEdge => {
                     let grid = *active.grid();
                     let cells = fft_friendly((grid.rows() * 3).div_ceil(2));
-                    grown = Some(self.solver_on(&Grid::new(cells, cells, grid.spacing())?)?);
+                    grown = Some(self.solver_like(active, cells)?);
                 }
                 Outcome::MissesTip => {
                     let grid = *active.grid();
@@ -432,7 +442,7 @@ impl Scene {
                     // One more cell puts a cell centre on the axis, where
                     // the indenter touches first.
                     let cells = grid.rows().max(grid.columns()) | 1;
-                    grown = Some(self.solver_on(&Grid::new(cells, cells, grid.spacing())?)?);
+                    grown = Some(self.solver_like(active, cells)?);
                 }
             }
         }

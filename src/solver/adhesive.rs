@@ -116,6 +116,7 @@ impl ContactSolver {
         // Each round removes or adds at least one cell of a finite set, so
         // `4 n` rounds bound any sequence that does not cycle.
         for round in 1..=(4 * n + 4) {
+            self.check_interrupt("the mesh-dependent criterion's rounds")?;
             if !attached.contains(&true) {
                 return Ok(self.no_contact(depth));
             }
@@ -260,6 +261,10 @@ impl ContactSolver {
         ws.direction.copy_from_slice(&ws.previous);
         let mut iterations = 0;
         while r_norm.sqrt() > tolerance * b_norm {
+            super::interrupted(
+                &self.interrupt,
+                "the conjugate gradients on the attached cells",
+            )?;
             if iterations == self.params.max_iterations {
                 return Err(Error::NoConvergence {
                     method: "conjugate gradients on the attached cells",

@@ -113,6 +113,22 @@ pub struct ContactSolver {
     /// `E*` of the surface material, for the critical stress.
     surface_contact_modulus: f64,
     workspace: Workspace,
+    /// Asked after every iteration and every step: stop when it says so.
+    interrupt: Option<Interrupt>,
+}
+
+/// A check that a long computation should stop (Ctrl-C), asked after every
+/// solver iteration and every scene step: `true` stops it with
+/// [`Error::Interrupted`]. It must be cheap (it runs thousands of times a
+/// second) and may be called from the solving thread only.
+pub type Interrupt = std::sync::Arc<dyn Fn() -> bool + Send + Sync>;
+
+/// [`Error::Interrupted`] naming `what` if `check` asks to stop.
+pub(crate) fn interrupted(check: &Option<Interrupt>, what: &'static str) -> Result<()> {
+    match check {
+        Some(check) if check() => Err(Error::Interrupted { what }),
+        _ => Ok(()),
+    }
 }
 
 impl std::fmt::Debug for ContactSolver {
@@ -203,7 +219,39 @@ impl ContactSolver {
             coarse: None,
             surface_contact_modulus: substrate.surface_material().contact_modulus(),
             workspace: Workspace::new(n)?,
+            interrupt: None,
         })
+    }
+
+    /// Sets (or with `None` removes) the check asked after every iteration
+    /// of every solve, and by scenes after every step: when it returns
+    /// `true` the solve stops with [`Error::Interrupted`].
+    ///
+    /// ```
+    /// use layered_contact::indenter::Sphere;
+    /// use layered_contact::solver::{ContactSolver, SolverParams};
+    /// use layered_contact::{Boundary, Error, Grid, Material, Substrate};
+    ///
+    /// let body = Substrate::half_space(Material::new(1e6, 0.5)?);
+    /// let grid = Grid::new(32, 32, 1e-5)?;
+    /// let mut solver = ContactSolver::new(&body, &grid, Boundary::Isolated, SolverParams::default())?;
+    /// solver.set_interrupt(Some(std::sync::Arc::new(|| true)));
+    /// let stopped = solver.solve_depth(&Sphere::new(1e-2)?, 1e-6, None, &mut ());
+    /// assert!(matches!(stopped, Err(Error::Interrupted { .. })));
+    /// Ok::<(), layered_contact::Error>(())
+    /// ```
+    pub fn set_interrupt(&mut self, check: Option<Interrupt>) {
+        self.interrupt = check;
+    }
+
+    /// The check set by [`ContactSolver::set_interrupt`].
+    pub fn interrupt(&self) -> Option<&Interrupt> {
+        self.interrupt.as_ref()
+    }
+
+    /// [`Error::Interrupted`] if the interrupt check asks to stop.
+    pub(crate) fn check_interrupt(&self, what: &'static str) -> Result<()> {
+        interrupted(&self.interrupt, what)
     }
 
     /// Frees the per-cell scratch vectors and the preconditioner (a coarse

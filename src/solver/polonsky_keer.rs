@@ -276,6 +276,7 @@ impl ContactSolver {
         self.operator
             .apply(&pressure, &mut self.workspace.displacement)?;
         for iteration in 1..=self.params.max_iterations {
+            self.check_interrupt("the constrained conjugate gradients")?;
             if iteration % REFRESH == 0 {
                 self.operator
                     .apply(&pressure, &mut self.workspace.displacement)?;

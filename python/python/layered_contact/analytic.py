@@ -13,7 +13,7 @@ from typing import Any, Tuple, Union
 import numpy as np
 
 from . import _native
-from ._native import Material, Substrate
+from ._native import InvalidInputError, Material, Substrate
 
 ArrayLike = Union[float, "np.typing.ArrayLike"]
 
@@ -29,8 +29,18 @@ __all__ = [
 ]
 
 
+# The most values one call takes (as the native layer): a broadcast view of
+# one value can claim billions, and copying it would exhaust memory.
+_MAX_VALUES = 2**27
+
+
 def _array(x: ArrayLike) -> np.ndarray:
-    return np.ascontiguousarray(np.asarray(x, dtype=np.float64))
+    values = np.asarray(x, dtype=np.float64)
+    if values.size > _MAX_VALUES:
+        raise InvalidInputError(
+            f"the array has shape {values.shape}: at most 2^27 values per call (split it)"
+        )
+    return np.ascontiguousarray(values)
 
 
 def _out(result: np.ndarray, x: ArrayLike) -> Any:
