@@ -79,14 +79,11 @@ fn task_count(fft_cells: usize) -> usize {
 /// Runs `f` on every task, in parallel with the `parallel` feature.
 fn run_tasks<T: Send>(tasks: Vec<T>, f: impl Fn(T) -> Result<()> + Sync + Send) -> Result<()> {
     #[cfg(feature = "parallel")]
-    {
+    if tasks.len() > 1 {
         use rayon::prelude::*;
-        tasks.into_par_iter().try_for_each(f)
+        return tasks.into_par_iter().try_for_each(f);
     }
-    #[cfg(not(feature = "parallel"))]
-    {
-        tasks.into_iter().try_for_each(f)
-    }
+    tasks.into_iter().try_for_each(f)
 }
 
 /// A zeroed FFT buffer of `len` values, or [`Error::OutOfMemory`].

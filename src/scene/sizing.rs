@@ -13,7 +13,7 @@ use super::{Adhesion, AdhesionMethod, IndenterSpec, Protocol, Scene};
 const SIZING_MAX_EPS: f64 = 20.0;
 
 /// The widest grid a scene builds, in cells.
-const MAX_GRID_CELLS: usize = 16384;
+const MAX_GRID_CELLS: usize = 8192;
 
 impl Scene {
     /// The radius (m) of the largest contact the protocol should reach, for
@@ -187,7 +187,7 @@ impl Scene {
             return Err(Error::InvalidParameter {
                 name: "resolution.cells_across",
                 value: n as f64,
-                expected: "a grid of at most 16384 cells across the peak contact \
+                expected: "a grid of at most 8192 cells across the peak contact \
                            (the pull-off contact is much smaller than the peak's)",
             });
         }

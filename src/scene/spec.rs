@@ -217,7 +217,7 @@ pub enum IndenterSpec {
         short_cutoff: f64,
         /// Seed of the random numbers.
         seed: u64,
-        /// Cells along each side, 2 to 16384.
+        /// Cells along each side, 2 to 8192 (the grid holds at most 2^26 cells).
         cells: usize,
         /// Cell side, m.
         spacing: f64,
@@ -284,7 +284,7 @@ impl Indenter for CustomIndenter {
 
 /// The widest synthesised rough surface, in cells along a side (the widest
 /// grid a scene builds).
-const MAX_ROUGH_CELLS: usize = 16384;
+const MAX_ROUGH_CELLS: usize = 8192;
 
 /// A small tilt of the indenter, radians (see [`Tilted`]).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -377,7 +377,7 @@ impl IndenterSpec {
             return Err(Error::InvalidParameter {
                 name: "cells",
                 value: cells as f64,
-                expected: "between 2 and 16384 cells along a side",
+                expected: "between 2 and 8192 cells along a side (at most 2^26 cells in all)",
             });
         }
         let grid = Grid::new(cells, cells, spacing)?;
