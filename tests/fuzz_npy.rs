@@ -11,7 +11,7 @@
 
 mod common;
 
-use common::bounded_case;
+use common::{bounded_case, npy_file as npy};
 use layered_contact::indenter::HeightMap;
 use layered_contact::Error;
 use proptest::prelude::*;
@@ -21,24 +21,6 @@ fn fuzz_cases() -> u32 {
         .ok()
         .and_then(|v| v.parse().ok())
         .unwrap_or(96)
-}
-
-/// A version-1 `.npy` file: magic, header dictionary padded with spaces to
-/// a multiple of 64 bytes, then `data`.
-fn npy(descr: &str, fortran: bool, shape: &str, data: &[u8]) -> Vec<u8> {
-    let mut dict = format!(
-        "{{'descr': '{descr}', 'fortran_order': {}, 'shape': {shape}, }}",
-        if fortran { "True" } else { "False" }
-    );
-    while (10 + dict.len() + 1) % 64 != 0 {
-        dict.push(' ');
-    }
-    dict.push('\n');
-    let mut out = b"\x93NUMPY\x01\x00".to_vec();
-    out.extend_from_slice(&(dict.len() as u16).to_le_bytes());
-    out.extend_from_slice(dict.as_bytes());
-    out.extend_from_slice(data);
-    out
 }
 
 fn f64_bytes(values: &[f64], big_endian: bool) -> Vec<u8> {

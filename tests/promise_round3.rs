@@ -1,6 +1,8 @@
 //! The promise under attack, round three (issue 24): one test per finding,
 //! each of which returned a wrong number, aborted or hung before its fix.
 
+mod common;
+
 use layered_contact::indenter::FlatPunch;
 use layered_contact::solver::{ContactSolver, SolverParams};
 use layered_contact::substrate::Base;
@@ -273,15 +275,7 @@ fn f5_tiny_loads_are_refused_or_exact() {
 #[test]
 fn f6_an_npy_header_that_lies_is_a_typed_error() {
     use layered_contact::indenter::HeightMap;
-    let mut dict =
-        "{'descr': '<f8', 'fortran_order': False, 'shape': (100000, 100000), }".to_string();
-    while (10 + dict.len() + 1) % 64 != 0 {
-        dict.push(' ');
-    }
-    dict.push('\n');
-    let mut bytes = b"\x93NUMPY\x01\x00".to_vec();
-    bytes.extend_from_slice(&(dict.len() as u16).to_le_bytes());
-    bytes.extend_from_slice(dict.as_bytes());
+    let mut bytes = common::npy_file("<f8", false, "(100000, 100000)", &[]);
     bytes.resize(160, 0);
     let path = std::env::temp_dir().join(format!("lying-{}.npy", std::process::id()));
     std::fs::write(&path, &bytes).unwrap();
