@@ -7,6 +7,7 @@ use std::io::Read;
 use std::path::Path;
 
 /// The largest scene file read, bytes (scenes are a few hundred bytes).
+#[cfg(feature = "serde")]
 pub(crate) const MAX_SCENE_BYTES: u64 = 16 << 20;
 /// The largest `.npy` height map read, bytes: the grid's limit of `2^26`
 /// cells of 8 bytes, and room for the header.

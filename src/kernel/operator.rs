@@ -230,8 +230,8 @@ impl ComplianceOperator {
     /// The operator of `substrate` on `grid` with `boundary`.
     ///
     /// # Errors
-    /// [`Error::InvalidParameter`] for a layer on a rigid base thinner than
-    /// the grid can resolve (see [`check_film`]), for isolated coefficients
+    /// [`Error::InvalidParameter`] for a top layer thinner than the grid can
+    /// resolve on its support (see [`check_film`]), for isolated coefficients
     /// whose tail error estimate exceeds `1e-6` (a coating much stiffer than
     /// its base on a grid whose diagonal spans more than 8192 of its
     /// thicknesses, see

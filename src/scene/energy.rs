@@ -185,8 +185,8 @@ fn cycle(
     let mut exact = exact.into_iter().peekable();
     let mut depth = max_depth;
     let mut step = increment;
-    // 2 steps increments reach -max_depth; doubling from there crosses any
-    // finite jump-off depth within the f64 exponent range.
+    // 2 * steps increments reach -max_depth; doubling the increment from
+    // there crosses any finite jump-off depth within the exponent range.
     for _ in 0..2 * steps + 2100 {
         if depth < -max_depth {
             step *= 2.0;

@@ -125,16 +125,6 @@ pub struct Resolution {
     pub margin: f64,
 }
 
-impl Scene {
-    /// A solver on a `cells`-square grid of `solver`'s spacing, with its
-    /// interrupt check (a grid grown or re-centred during a run).
-    fn solver_like(&self, solver: &ContactSolver, cells: usize) -> Result<ContactSolver> {
-        let mut next = self.solver_on(&Grid::new(cells, cells, solver.grid().spacing())?)?;
-        next.set_interrupt(solver.interrupt().cloned());
-        Ok(next)
-    }
-}
-
 impl Protocol {
     /// The name and value of what the protocol reaches for (a depth or a
     /// force, as in the scene file), for error messages.
@@ -451,6 +441,16 @@ impl Scene {
             value: self.resolution.margin,
             expected: "a grid that holds the contact (it still reached the edge after growing)",
         })
+    }
+}
+
+impl Scene {
+    /// A solver on a `cells`-square grid of `solver`'s spacing, with its
+    /// interrupt check (a grid grown or re-centred during a run).
+    fn solver_like(&self, solver: &ContactSolver, cells: usize) -> Result<ContactSolver> {
+        let mut next = self.solver_on(&Grid::new(cells, cells, solver.grid().spacing())?)?;
+        next.set_interrupt(solver.interrupt().cloned());
+        Ok(next)
     }
 }
 
