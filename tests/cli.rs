@@ -168,16 +168,15 @@ fn a_closed_or_full_stdout_is_an_error_not_a_panic() {
     let dir = folder("stdout");
     std::fs::write(dir.join("punch.toml"), PUNCH).unwrap();
     for command in ["check", "reference", "run"] {
-        // A closed pipe: the reading end dropped before the tool writes.
-        let mut child = Command::new(env!("CARGO_BIN_EXE_layered-contact"))
+        // A closed pipe: its reading end dropped before the tool starts.
+        let (reader, writer) = std::io::pipe().unwrap();
+        drop(reader);
+        let out = Command::new(env!("CARGO_BIN_EXE_layered-contact"))
             .args([command, "punch.toml"])
             .current_dir(&dir)
-            .stdout(std::process::Stdio::piped())
-            .stderr(std::process::Stdio::piped())
-            .spawn()
+            .stdout(writer)
+            .output()
             .unwrap();
-        drop(child.stdout.take());
-        let out = child.wait_with_output().unwrap();
         assert_eq!(
             out.status.code(),
             Some(1),
