@@ -6,13 +6,6 @@
 use std::ops::Range;
 
 use crate::error::{Error, Result};
-
-/// The smallest load the solver takes, as a penetration over the cell size
-/// or a force over `E* Delta^2`: the constrained conjugate gradients square
-/// pressures and gaps, and below about `1e-150` of their natural scale the
-/// squares leave the normal `f64` range (depths of `1e-200` m did not
-/// converge, forces of `1e-200` N came out 7 % off).
-const MIN_LOAD_SCALE: f64 = 1e-100;
 use crate::grid::{fft_friendly_even, Boundary, Grid};
 use crate::indenter::Indenter;
 use crate::kernel::BoxInverse;
@@ -22,6 +15,13 @@ use super::{
     check_finite, passes, ContactSolver, Fields, IterationInfo, Observer, Solution, SolverParams,
     WarmStart,
 };
+
+/// The smallest load the solver takes, as a penetration over the cell size
+/// or a force over `E* Delta^2`: the constrained conjugate gradients square
+/// pressures and gaps, and below about `1e-150` of their natural scale the
+/// squares leave the normal `f64` range (depths of `1e-200` m did not
+/// converge, forces of `1e-200` N came out 7 % off).
+const MIN_LOAD_SCALE: f64 = 1e-100;
 
 /// Iterations between full recomputations of `u = K p`.
 const REFRESH: usize = 50;
