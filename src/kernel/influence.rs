@@ -9,8 +9,8 @@ use super::cell::{lifted_love, love};
 use super::radial::{RadialRemainder, TailTolerance};
 
 /// A tail error estimate (relative to the self-coefficient) this small ends
-/// the remainder's table: the estimate is pessimistic by two to four orders
-/// of magnitude against coefficients tabulated all the way out.
+/// the remainder's table: against coefficients tabulated all the way out,
+/// the estimate was 8 to 5e5 times the real error (contrasts 10 to 1e4).
 const ENOUGH_TAIL_ERROR: f64 = 1e-10;
 /// The largest tail error estimate of usable coefficients (see
 /// [`InfluenceCoefficients::tail_error_estimate`]).
@@ -247,7 +247,7 @@ impl InfluenceCoefficients {
     /// [`ComplianceOperator::new`](crate::kernel::ComplianceOperator::new)
     /// refuses coefficients whose estimate exceeds [`MAX_TAIL_ERROR`]
     /// (`1e-6`; against coefficients tabulated all the way out, the estimate
-    /// has been two to four orders of magnitude above the real error).
+    /// was 8 to 5e5 times the real error for contrasts from 10 to `1e4`).
     pub fn tail_error_estimate(&self) -> f64 {
         self.tail_error
     }
