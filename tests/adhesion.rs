@@ -13,16 +13,11 @@ use layered_contact::scene::{
     SubstrateSpec,
 };
 use layered_contact::solver::{ContactSolver, Reach, SolverParams, EDGE_SHIFT};
-use layered_contact::{Boundary, Error, Grid, Material, Substrate};
+use layered_contact::{Boundary, Error, Grid, Substrate};
 
-const E: f64 = 1e6;
-const NU: f64 = 0.48;
-const RADIUS: f64 = 0.01;
-const WORK: f64 = 0.05;
+mod common;
 
-fn rubber() -> Material {
-    Material::new(E, NU).unwrap()
-}
+use common::rubber_sphere::{rubber, E, NU, RADIUS, WORK};
 
 /// The exact JKR pull-off radius on a half-space of the rubber.
 fn half_space_pull_off_radius() -> f64 {

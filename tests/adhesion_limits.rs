@@ -11,16 +11,11 @@ use layered_contact::scene::{
     Adhesion, Caveat, IndenterSpec, Protocol, Resolution, Scene, SubstrateSpec, Tilt,
 };
 use layered_contact::solver::{ContactSolver, Reach, SolverParams};
-use layered_contact::{Boundary, Error, Grid, Material, Substrate};
+use layered_contact::{Boundary, Error, Grid, Substrate};
 
-const E: f64 = 1e6;
-const NU: f64 = 0.48;
-const RADIUS: f64 = 0.01;
-const WORK: f64 = 0.05;
+mod common;
 
-fn rubber() -> Material {
-    Material::new(E, NU).unwrap()
-}
+use common::rubber_sphere::{rubber, E, NU, RADIUS, WORK};
 
 /// `heights(x, y)` sampled at the cell centres of `grid`, and a solver for
 /// the rubber half-space on that grid.

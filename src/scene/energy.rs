@@ -118,12 +118,8 @@ impl Recorder<'_> {
         };
         (self.progress)(&step);
         self.steps.push(step);
-        match &self.interrupt {
-            Some(check) if check() => Err(Error::Interrupted {
-                what: "the adhesive scene",
-            }),
-            _ => Ok(point),
-        }
+        crate::solver::interrupted(&self.interrupt, "the adhesive scene")?;
+        Ok(point)
     }
 
     fn free(&mut self, phase: Phase, depth: f64) -> Result<BranchPoint> {

@@ -107,3 +107,19 @@ pub fn npy_file(descr: &str, fortran: bool, shape: &str, data: &[u8]) -> Vec<u8>
     out.extend_from_slice(data);
     out
 }
+
+/// The rubber and sphere of the adhesion tests: `E = 1 MPa`, `nu = 0.48`,
+/// a 10 mm radius, `dgamma = 0.05 J/m^2`.
+#[allow(dead_code)]
+pub mod rubber_sphere {
+    use layered_contact::Material;
+
+    pub const E: f64 = 1e6;
+    pub const NU: f64 = 0.48;
+    pub const RADIUS: f64 = 0.01;
+    pub const WORK: f64 = 0.05;
+
+    pub fn rubber() -> Material {
+        Material::new(E, NU).unwrap()
+    }
+}
