@@ -38,7 +38,7 @@
 //!
 //! The row of the incompressible layer is `layered-contact run
 //! examples/scenes/punch_on_incompressible_film.toml` at 64, 128 and 256
-//! cells (2 cores, load about 1, 2026-11-24).
+//! cells (`BENCHMARKS.md`, single runs).
 //!
 //! Flat-punch grids choose their spacing (within 2 % of nominal) so that the
 //! staircase disc's *effective* radius, its equal-area radius less

@@ -162,10 +162,9 @@
 //!   of a three-layer stack 0.33 microseconds. The isolated operator's cost
 //!   grows like the square of the layer count `L` (`L` tables, each
 //!   evaluation `O(L)` steps): about `0.033 L^2` s on a 16 x 16 grid
-//!   (0.65, 1.9, 8.1 and 34 s for 4, 8, 16 and 32 alternating layers on a
-//!   rigid base, 2026-11-24, load about 1), so a 64-layer stack takes about
-//!   two minutes to build. `layered-contact check` reports memory, not this
-//!   time.
+//!   (`BENCHMARKS.md`, single runs), so a 64-layer stack takes about two
+//!   minutes to build; `layered-contact check` prints this estimate for a
+//!   stack.
 //! * Tests (`tests/stack.rs`, `tests/stack_contact.rs`): `R` and `Lambda_g`
 //!   of 36 three-layer stacks (hard/soft/hard, soft/hard/soft, contrasts 10
 //!   and 1000, `nu` from 0 to 1/2, rigid and elastic bases; 576 points)
