@@ -10,7 +10,7 @@ use layered_contact::indenter::{HeightMap, Paraboloid};
 use layered_contact::scene::{
     Adhesion, Caveat, IndenterSpec, Protocol, Resolution, Scene, SubstrateSpec, Tilt,
 };
-use layered_contact::solver::{ContactSolver, Reach, SolverParams};
+use layered_contact::solver::{ContactSolver, Reach, SolverParams, EDGE_SHIFT};
 use layered_contact::{Boundary, Error, Grid, Substrate};
 
 mod common;
@@ -164,4 +164,54 @@ fn periodic_contacts_wider_than_half_the_period_are_refused() {
             "{n} cells, h0 = {h0}: {result:?}"
         );
     }
+}
+
+#[test]
+fn a_flat_punch_that_is_not_round_is_flagged() {
+    // The family of a flat punch is the digital discs clipped by its face:
+    // discs for a round punch (exact Kendall), not for a square one, whose
+    // energy balance averages the release over an edge where it is not
+    // uniform (it used to be reported as exact).
+    let grid = Grid::square(64, 6.4e-3).unwrap();
+    let half = 1.6e-3;
+    let round = |x: f64, y: f64| {
+        if x * x + y * y < half * half {
+            0.0
+        } else {
+            f64::INFINITY
+        }
+    };
+    let square = |x: f64, y: f64| {
+        if x.abs() < half && y.abs() < half {
+            0.0
+        } else {
+            f64::INFINITY
+        }
+    };
+    let pull_off = |heights: &dyn Fn(f64, f64) -> f64| {
+        let (map, mut solver) = sampled(grid, Boundary::Isolated, heights);
+        let branches = solver
+            .adhesive_branches(&map, Reach::Depth(1e-7), WORK, WORK, &mut ())
+            .unwrap();
+        let peak = branches.at_depth(1e-7, 0.0).unwrap();
+        let force = branches.pull_off(peak.contact_area).unwrap().force;
+        (force, branches.edge_averaged())
+    };
+    let (force, averaged) = pull_off(&round);
+    assert!(!averaged);
+    // Kendall (1971): F = -sqrt(8 pi a^3 E* dgamma), a the equal-area
+    // radius of the punch's cells less the staircase's 0.117 cells.
+    let estar = rubber().contact_modulus();
+    let columns = grid.columns();
+    let cells = (0..grid.len())
+        .filter(|&c| {
+            let (x, y) = grid.cell_centre(c / columns, c % columns);
+            round(x, y) == 0.0
+        })
+        .count();
+    let a = (cells as f64 * grid.cell_area() / PI).sqrt() - EDGE_SHIFT * grid.spacing();
+    let kendall = -(8.0 * PI * a.powi(3) * estar * WORK).sqrt();
+    assert!((force / kendall - 1.0).abs() < 5e-3, "{force} vs {kendall}");
+    let (_, averaged) = pull_off(&square);
+    assert!(averaged);
 }

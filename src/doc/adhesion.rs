@@ -1,4 +1,4 @@
-//! # Adhesion in the JKR limit: two methods
+//! # Adhesion in the JKR limit: two methods and a local criterion
 //!
 //! In the JKR limit (Johnson, Kendall & Roberts 1971, Proc. R. Soc. A 324,
 //! 301) the adhesive contact is a crack between the indenter and the body:
@@ -89,9 +89,12 @@
 //! * [`AdhesiveBranches::edge_averaged`](crate::solver::AdhesiveBranches::edge_averaged)
 //!   is false only when every set of the family is a digital disc about the
 //!   axis on an isolated grid, read from the sampled profile (along the
-//!   family the distance from the axis never decreases, and cells at the
-//!   same distance have the same height), so a height map of a sphere
-//!   counts as axisymmetric and a sphere tilted by any angle does not;
+//!   family the distance from the axis never decreases, cells at the same
+//!   distance have the same height, and every cell as near the axis as the
+//!   family's farthest belongs to it), so a height map of a sphere counts
+//!   as axisymmetric and a sphere tilted by any angle does not, nor does a
+//!   flat punch that is not round (its family is discs clipped by its face;
+//!   before 2026-11-24 a square or elliptical punch was reported as exact);
 //! * a scene built on such branches carries
 //!   [`Caveat::EdgeAveragedAdhesion`](crate::scene::Caveat::EdgeAveragedAdhesion)
 //!   in [`Curve::caveats`](crate::scene::Curve::caveats); the tool prints it
@@ -105,12 +108,81 @@
 //! * a family whose sets split into separate patches (a rough surface) is
 //!   refused with [`Error::Unsupported`](crate::Error::Unsupported).
 //!
-//! A local criterion that converges for any shape (the energy release rate
-//! balanced point by point along the edge) is not in the crate yet; for
-//! flagged contacts the mesh-dependent criterion below is the cell-by-cell
-//! alternative, with its own grid-orientation bias. The shift is
+//! For flagged contacts the local criterion below tells, for any contact
+//! set, where its edge is out of balance, and the mesh-dependent criterion
+//! is the cell-by-cell alternative, with its own grid-orientation bias; a
+//! family that follows the local criterion (each set peeled where its edge
+//! releases most) is not in the crate yet. The shift is
 //! calibrated where the layer is many cells thick (`h/Delta` above about
 //! 10); on films thinner than a few cells its correction is approximate.
+//!
+//! ## The local criterion: release rates along the edge
+//!
+//! [`ContactSolver::edge_release`](crate::solver::ContactSolver::edge_release)
+//! holds a given contact set bonded at a depth (one clamped solve) and
+//! returns the energy release rate `G` and the stress-intensity factor
+//! `K = +-sqrt(2 E1* G)` at every edge cell: the edge recedes where `G`
+//! exceeds the receding work of adhesion and can advance where it falls
+//! below the advancing one (Griffith's criterion point by point, as in
+//! Carbone & Mangialardi 2004, J. Mech. Phys. Solids 52, 1267, for
+//! asymmetric fronts). The detachment onset of a bonded punch of any shape
+//! is where the largest `G` reaches the work of adhesion.
+//!
+//! Fitting `K` to the few pressures next to a staircase edge does not
+//! converge: the pressure of a single edge cell depends, at order one, on
+//! how the edge crosses it (measured before this method: ratios of 0.66 to
+//! 0.95 to the exact `K`, scattered by 2 to 4 % at every resolution; the
+//! mesh-dependent criterion below inherits the same bias). The release rate
+//! is taken instead from an energy identity. Move the set's cells by a
+//! smooth field `eps V` with the indenter held still; by the envelope
+//! theorem the stored energy of the clamped forces `q_i = p_i Delta^2`
+//! changes at
+//!
+//! ```text
+//! dU/deps = sum_i q_i V_i . (grad g_i - sum_j grad C(x_i - x_j) q_j)
+//!         = sum_i q_i V_i . (grad g - grad u)_i,     g = d - f,
+//! ```
+//!
+//! the discrete shape derivative `int G V.n ds` (Eshelby's configurational
+//! force; Rice 1968, J. Appl. Mech. 35, 379; as material forces in Mueller &
+//! Maugin 2002, Comput. Mech. 29, 52). Inside the set `u = g`, so the whole
+//! release sits on the edge cells, `F_i = q_i (grad g - grad u)_i` with
+//! central differences of the solution's displacement (outside the set
+//! included) and of the profile. A uniform `V` weighs every force by the
+//! profile's slope, as exact as the pressures; a `V` varying over a length
+//! `l` is off only through pairs of cells a cell apart, by `O(Delta / l)`,
+//! whatever the edge's direction. Summed with `V` the unit radial field
+//! over a disc punch, the release is `E* d^2 (1 - 0.45 / N)` on `N` cells
+//! across (0.944, 0.973, 0.986, 0.993 at 8, 16, 32, 64): first order,
+//! clean enough to extrapolate.
+//!
+//! Per edge cell, the forces are projected on the edge's normal and
+//! matched, over a Gaussian window of [`EDGE_WINDOW`](crate::solver::EDGE_WINDOW)
+//! `= 8` cells along the edge, by a quadratic `G(s)` times the edge's
+//! facets (moments of order 0 to 2 in the tangential offset: a local
+//! Savitzky-Golay filter), so that a release varying along the edge is
+//! followed without the window's `O(window^2)` bias (a plain Gaussian
+//! average put the elliptical punch's onset 1.7 to 2 % off at 64 cells;
+//! the fit, 0.2 to 0.8 %). Against exact references (`tests/edge_release.rs`,
+//! numbers in `BENCHMARKS.md`):
+//!
+//! * the elliptical flat punch, `b/a = 1/2`, pressure
+//!   `P / (2 pi a b) / sqrt(1 - x^2/a^2 - y^2/b^2)`: its onset at the ends of
+//!   the major axis, `F = 2 b sqrt(2 pi E* dgamma a)`, along the grid and at
+//!   30 and 45 degrees;
+//! * the circular punch under force and moment, `K(theta) = (P + 3 M cos
+//!   theta / a) / (2 a sqrt(pi a))`, tilted along the grid and at 22.5 and
+//!   45 degrees;
+//! * the JKR sphere's contact at its pull-off depth, on the cell centres and
+//!   moved off them by fractions of a cell.
+//!
+//! What it does not remove: the digital contact is not the smooth one at
+//! the scale of a cell. On the flat facets of a digital disc (along the grid
+//! and at 45 degrees) its edge leaves the circle by up to half a cell over
+//! several cells, and its own release rate there is up to 10 % below the
+//! circle's at 64 cells across (Rice's first-order front perturbation,
+//! 1985, J. Appl. Mech. 52, 571, gives that size): single points stray by
+//! that much while the edge's mean converges at first order.
 //!
 //! ## The mesh-dependent criterion (reference)
 //!

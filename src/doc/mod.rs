@@ -4,7 +4,7 @@
 //! * [`theory`]: the coating factor, the Green's function and the influence coefficients.
 //! * [`axisymmetric`]: the exact axisymmetric solutions and their Fredholm equation.
 //! * [`multilayer`]: stacks of bonded layers: the recursion for the coating factor, and how the kernels split it by interface.
-//! * [`adhesion`]: the two JKR adhesion methods, energy balance and mesh criterion.
+//! * [`adhesion`]: the two JKR adhesion methods, energy balance and mesh criterion, and the local release rates along an edge.
 //! * [`accuracy`]: what each part achieves, and what it costs.
 //! * [`reliability`]: the promise (no panic, hang, NaN or silent wrong answer), the guaranteed ranges, and how they are tested.
 

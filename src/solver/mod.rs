@@ -68,7 +68,9 @@ use crate::indenter::Indenter;
 use crate::kernel::{BoxInverse, ComplianceOperator, FourierCompliance};
 use crate::substrate::Substrate;
 
-pub use griffith::{AdhesiveBranches, BranchPoint, Reach, EDGE_SHIFT};
+pub use griffith::{
+    AdhesiveBranches, BranchPoint, EdgePoint, EdgeRelease, Reach, EDGE_SHIFT, EDGE_WINDOW,
+};
 pub use params::{Fields, IterationInfo, Observer, Solution, SolverParams, WarmStart};
 pub use polonsky_keer::MULTIRESOLUTION_CELLS;
 

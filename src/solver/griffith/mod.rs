@@ -14,9 +14,12 @@ use crate::indenter::Indenter;
 use super::{check_finite, ContactSolver, IterationInfo, Observer};
 
 mod branches;
+mod material;
+mod release;
 
 use branches::Raw;
 pub use branches::{AdhesiveBranches, BranchPoint};
+pub use release::{EdgePoint, EdgeRelease, EDGE_WINDOW};
 
 /// The smallest contact set of the family, in cells: below about this size
 /// the staircase is too coarse for a contact edge to mean anything.
@@ -310,6 +313,21 @@ impl ContactSolver {
             _ => return true,
         };
         let tolerance = 1e-9 * range.max(f64::MIN_POSITIVE);
+        // A disc clipped by the indenter's footprint (a flat punch that is
+        // not round) is not a disc: every cell of the grid as near the axis
+        // as the family's farthest must belong to it.
+        let farthest = order.iter().map(|&(_, r2)| r2).fold(0.0, f64::max);
+        let grid = *self.grid();
+        let columns = grid.columns();
+        let within = (0..grid.len())
+            .filter(|&c| {
+                let (x, y) = grid.cell_centre(c / columns, c % columns);
+                x * x + y * y <= farthest
+            })
+            .count();
+        if within != order.len() {
+            return false;
+        }
         order.windows(2).all(|w| {
             let ((a, ra), (b, rb)) = (w[0], w[1]);
             if (rb - ra).abs() <= 1e-9 * delta2 {

@@ -1,0 +1,309 @@
+//! The local Griffith criterion (`ContactSolver::edge_release`) against
+//! exact non-axisymmetric stress-intensity factors: a circular punch under
+//! force and moment, the elliptical flat punch at several orientations on
+//! the grid, and the JKR sphere moved off the cell centres. Each converges
+//! at first order in the cell size, whatever the edge's direction.
+
+use std::f64::consts::PI;
+
+use layered_contact::indenter::{FlatPunch, Indenter, Paraboloid, Tilted};
+use layered_contact::solver::{ContactSolver, EdgeRelease, SolverParams, EDGE_WINDOW};
+use layered_contact::{Boundary, Grid, Substrate};
+use ndarray::Array2;
+
+mod common;
+
+use common::rubber_sphere::{rubber, RADIUS, WORK};
+
+fn estar() -> f64 {
+    rubber().contact_modulus()
+}
+
+/// A solver on a square isolated grid of `n` cells of side `delta`.
+fn solver(n: usize, delta: f64) -> ContactSolver {
+    ContactSolver::new(
+        &Substrate::half_space(rubber()),
+        &Grid::square(n, n as f64 * delta).unwrap(),
+        Boundary::Isolated,
+        SolverParams::default(),
+    )
+    .unwrap()
+}
+
+/// The cells of `grid` where `inside(x, y)`.
+fn mask(grid: &Grid, inside: impl Fn(f64, f64) -> bool) -> Array2<bool> {
+    Array2::from_shape_fn((grid.rows(), grid.columns()), |(i, j)| {
+        let (x, y) = grid.cell_centre(i, j);
+        inside(x, y)
+    })
+}
+
+/// A flat elliptical punch, semi-axes `a >= b`, its major axis at `angle`
+/// from the x axis.
+struct EllipticalPunch {
+    a: f64,
+    b: f64,
+    angle: f64,
+}
+
+impl EllipticalPunch {
+    fn inside(&self, x: f64, y: f64) -> bool {
+        let (s, c) = self.angle.sin_cos();
+        let (u, v) = (c * x + s * y, -s * x + c * y);
+        (u / self.a).powi(2) + (v / self.b).powi(2) < 1.0
+    }
+}
+
+impl Indenter for EllipticalPunch {
+    fn height(&self, x: f64, y: f64) -> f64 {
+        if self.inside(x, y) {
+            0.0
+        } else {
+            f64::INFINITY
+        }
+    }
+    fn bounding_radius(&self) -> f64 {
+        self.a
+    }
+}
+
+/// The force at which the bonded elliptical punch starts to detach, from
+/// the largest release rate: `G` grows like the force squared.
+fn elliptical_onset(cells: usize, angle: f64) -> f64 {
+    let delta = 1e-4;
+    let b = 0.5 * cells as f64 * delta;
+    let punch = EllipticalPunch {
+        a: 2.0 * b,
+        b,
+        angle,
+    };
+    let n = 5 * cells + 8;
+    let mut s = solver(n, delta);
+    let contact = mask(s.grid(), |x, y| punch.inside(x, y));
+    let edge = s
+        .edge_release(&punch, -1e-6, &contact, EDGE_WINDOW)
+        .unwrap();
+    let top = edge.max_release().unwrap();
+    // The onset is at the ends of the major axis.
+    let (x, y) = top.position;
+    let along = x * angle.cos() + y * angle.sin();
+    assert!(along.abs() > 0.8 * punch.a, "onset at {x}, {y}");
+    assert!(top.stress_intensity > 0.0);
+    -edge.force * (WORK / top.release_rate).sqrt()
+}
+
+#[test]
+fn elliptical_punch_detaches_at_the_exact_onset_force_at_any_orientation() {
+    let exact = |cells: usize| {
+        let b = 0.5 * cells as f64 * 1e-4;
+        2.0 * b * (2.0 * PI * estar() * WORK * 2.0 * b).sqrt()
+    };
+    // Measured (BENCHMARKS.md): +1.5, +0.26, +0.23 % at 16, 32, 64 cells
+    // across the minor axis along the grid; +3.1, +0.96, +0.78 % at 30
+    // degrees; +4.1, -0.85, +0.50 % at 45. At 64 cells every orientation
+    // is within 1 % (the release rate within 2 %: the lattice-scale facets
+    // of the digital ellipse's tips, see `jkr_sphere_off_the_cell_centres`),
+    // and the error at 16 cells is larger at every orientation.
+    let mut at_64 = Vec::new();
+    for angle in [0.0, PI / 6.0, PI / 4.0] {
+        let errors: Vec<f64> = [16, 32, 64]
+            .iter()
+            .map(|&cells| elliptical_onset(cells, angle) / exact(cells) - 1.0)
+            .collect();
+        println!("ellipse {angle:.3}: {errors:?}");
+        assert!(errors[2].abs() < 0.01, "{angle}: {errors:?}");
+        assert!(
+            errors[0].abs() > 2.0 * errors[2].abs(),
+            "{angle}: {errors:?}"
+        );
+        at_64.push(errors[2]);
+    }
+    let spread = at_64.iter().copied().fold(f64::MIN, f64::max)
+        - at_64.iter().copied().fold(f64::MAX, f64::min);
+    assert!(spread < 0.006, "{at_64:?}");
+}
+
+/// Release rates around a bonded tilted circular punch against
+/// `K = (P + 3 M cos theta / a) / (2 a sqrt(pi a))`.
+fn tilted_punch(cells: usize, direction: f64) -> (f64, f64) {
+    let delta = 1e-4;
+    let a = 0.5 * cells as f64 * delta;
+    let tilt = 0.2 * 1e-6 / a;
+    let punch = Tilted::new(
+        FlatPunch::new(a).unwrap(),
+        tilt * direction.cos(),
+        tilt * direction.sin(),
+    )
+    .unwrap();
+    let n = 3 * cells + 8;
+    let mut s = solver(n, delta);
+    let contact = mask(s.grid(), |x, y| x * x + y * y < a * a);
+    let depth = 1e-6;
+    let edge: EdgeRelease = s
+        .edge_release(&punch, depth, &contact, EDGE_WINDOW)
+        .unwrap();
+    // Exact loads of the rigid punch: P = 2 E* a d, M = 4 E* a^3 beta / 3
+    // (rising with x: the pressure is higher where the face is lower).
+    let force = 2.0 * estar() * a * depth;
+    let moment = 4.0 / 3.0 * estar() * a.powi(3) * tilt;
+    let (mut worst, mut mean) = (0.0f64, 0.0);
+    for p in &edge.points {
+        let (x, y) = p.position;
+        let theta = y.atan2(x) - direction;
+        let k = (force - 3.0 * moment * theta.cos() / a) / (2.0 * a * (PI * a).sqrt());
+        let g = k * k / (2.0 * estar());
+        let error = p.release_rate / g - 1.0;
+        worst = worst.max(error.abs());
+        mean += error / edge.points.len() as f64;
+        assert!(p.stress_intensity < 0.0, "a pushing punch");
+    }
+    (worst, mean)
+}
+
+#[test]
+fn tilted_punch_release_follows_the_moment() {
+    // Measured (BENCHMARKS.md), the same to 0.3 % for tilts along the
+    // grid, at 22.5 and at 45 degrees: mean errors -4.4, -1.05, -0.42 % at
+    // 16, 32, 64 cells across (order 1.7); worst single points 15, 2.1,
+    // 1.8 % (G varies by a factor 5.4 round this edge).
+    let mut means = Vec::new();
+    for direction in [0.0, PI / 8.0, PI / 4.0] {
+        let errors: Vec<(f64, f64)> = [16, 32, 64]
+            .iter()
+            .map(|&cells| tilted_punch(cells, direction))
+            .collect();
+        println!("tilted {direction:.3}: {errors:?}");
+        let order = (errors[0].1 / errors[2].1).abs().log2() / 2.0;
+        assert!(order > 1.0, "{direction}: order {order}");
+        assert!(errors[2].1.abs() < 6e-3, "{errors:?}");
+        assert!(errors[2].0 < 0.03, "{errors:?}");
+        means.push(errors[2].1);
+    }
+    assert!((means[0] - means[2]).abs() < 1e-3, "{means:?}");
+}
+
+/// The JKR sphere's contact, a disc of `cells` across centred at `offset`
+/// (in cells) from the axis, at the depth of the pull-off: release rates
+/// against the exact `(P1 - P)^2 / (8 pi E* a^3)`.
+fn offset_sphere(cells: usize, offset: (f64, f64)) -> (f64, f64) {
+    let delta = 1e-5;
+    let a0 = 0.5 * cells as f64 * delta;
+    let n = 3 * cells + 8;
+    let mut s = solver(n, delta);
+    let (ox, oy) = (offset.0 * delta, offset.1 * delta);
+    let ball = Paraboloid::new(RADIUS).unwrap();
+    let shifted = ShiftedBall { ball, ox, oy };
+    let contact = mask(s.grid(), |x, y| {
+        (x - ox).powi(2) + (y - oy).powi(2) < a0 * a0
+    });
+    let m = contact.iter().filter(|&&c| c).count() as f64;
+    let a = (m / PI).sqrt() * delta - 0.117 * delta;
+    let depth = a * a / RADIUS - (2.0 * PI * a * WORK / estar()).sqrt();
+    let edge = s
+        .edge_release(&shifted, depth, &contact, EDGE_WINDOW)
+        .unwrap();
+    let exact = estar() * (depth - a * a / RADIUS).powi(2) / (2.0 * PI * a);
+    let (mut worst, mut mean) = (0.0f64, 0.0);
+    for p in &edge.points {
+        let error = p.release_rate / exact - 1.0;
+        worst = worst.max(error.abs());
+        mean += error / edge.points.len() as f64;
+        assert!(p.stress_intensity > 0.0);
+    }
+    (worst, mean)
+}
+
+struct ShiftedBall {
+    ball: Paraboloid,
+    ox: f64,
+    oy: f64,
+}
+
+impl Indenter for ShiftedBall {
+    fn height(&self, x: f64, y: f64) -> f64 {
+        self.ball.height(x - self.ox, y - self.oy)
+    }
+    fn bounding_radius(&self) -> f64 {
+        self.ball.bounding_radius() + self.ox.hypot(self.oy)
+    }
+}
+
+#[test]
+fn jkr_sphere_off_the_cell_centres() {
+    // Measured (BENCHMARKS.md): the mean error converges at first order
+    // wherever the disc sits on the grid (-2.4, -1.2, -0.65 % at 16, 32, 64
+    // cells across on the cell centres; -3.1, -1.3, -0.67 % moved by
+    // (0.3, 0.45) cells). Single points stray further, up to 10 %, on the
+    // digital disc's flat facets (along the grid and at 45 degrees): that
+    // is the discrete contact's own release rate, whose edge leaves the
+    // circle by up to half a cell over facets of several cells.
+    for offset in [(0.0, 0.0), (0.3, 0.45), (0.5, 0.5)] {
+        let errors: Vec<(f64, f64)> = [16, 32, 64]
+            .iter()
+            .map(|&cells| offset_sphere(cells, offset))
+            .collect();
+        println!("sphere {offset:?}: {errors:?}");
+        let order = (errors[0].1 / errors[2].1).abs().log2() / 2.0;
+        assert!(order > 0.9, "{offset:?}: order {order}");
+        assert!(errors[2].1.abs() < 8e-3, "{errors:?}");
+        assert!(errors[2].0 < 0.11, "{errors:?}");
+    }
+}
+
+#[test]
+fn bad_contacts_and_windows_are_refused() {
+    use layered_contact::Error;
+    let mut s = solver(40, 1e-4);
+    let punch = FlatPunch::new(1e-3).unwrap();
+    let grid = *s.grid();
+    let disc = mask(&grid, |x, y| x * x + y * y < 0.8e-6);
+    let window = |s: &mut ContactSolver, w: f64| s.edge_release(&punch, 1e-6, &disc, w);
+    for w in [0.5, 65.0, f64::NAN] {
+        assert!(matches!(
+            window(&mut s, w),
+            Err(Error::InvalidParameter { name: "window", .. })
+        ));
+    }
+    assert!(matches!(
+        s.edge_release(&punch, f64::INFINITY, &disc, EDGE_WINDOW),
+        Err(Error::InvalidParameter { name: "depth", .. })
+    ));
+    let wrong = Array2::from_elem((39, 40), true);
+    assert!(matches!(
+        s.edge_release(&punch, 1e-6, &wrong, EDGE_WINDOW),
+        Err(Error::InvalidParameter { .. })
+    ));
+    let empty = Array2::from_elem((40, 40), false);
+    assert!(matches!(
+        s.edge_release(&punch, 1e-6, &empty, EDGE_WINDOW),
+        Err(Error::InvalidParameter {
+            name: "contact cells",
+            ..
+        })
+    ));
+    // Beyond the punch's rim the indenter is absent.
+    let wide = mask(&grid, |x, y| x * x + y * y < 1.5e-6);
+    assert!(matches!(
+        s.edge_release(&punch, 1e-6, &wide, EDGE_WINDOW),
+        Err(Error::InvalidParameter { .. })
+    ));
+    let ball = Paraboloid::new(RADIUS).unwrap();
+    let everything_but_one = Array2::from_shape_fn((40, 40), |(i, j)| (i, j) != (20, 20));
+    assert!(matches!(
+        s.edge_release(&ball, 1e-6, &everything_but_one, EDGE_WINDOW),
+        Err(Error::ContactReachesEdge { .. })
+    ));
+    // A valid call for contrast: the disc punch's release is uniform, the
+    // exact Kendall value E* d^2 / (2 pi a) within the 0.45 / N of a disc
+    // 20 cells across (2.3 %) and the edge's lattice (5 %).
+    let edge = s.edge_release(&punch, 1e-6, &disc, EDGE_WINDOW).unwrap();
+    let m = disc.iter().filter(|&&c| c).count() as f64;
+    let a = (m / PI).sqrt() * 1e-4 - 0.117e-4;
+    let exact = estar() * 1e-12 / (2.0 * PI * a);
+    for p in &edge.points {
+        assert!(
+            (p.release_rate / exact - 1.0).abs() < 0.08,
+            "{p:?} vs {exact}"
+        );
+    }
+}
