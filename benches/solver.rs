@@ -2,8 +2,11 @@
 //! across the grid) and one adhesive loading and unloading cycle of a sphere
 //! on a film with hysteresis, 64 and 128 cells across the pull-off contact,
 //! by the energy balance (and, at 64, the mesh-dependent criterion for
-//! comparison; finer curves are timed by the `accuracy` example); the cost
-//! of one CG iteration against a padded FFT round trip.
+//! comparison; finer curves are timed by the `accuracy` example); the
+//! adhesive branches of an elliptic paraboloid (radii 10 and 20 mm, a
+//! non-axisymmetric family of contact sets) at 64 and 128 cells across its
+//! pull-off contact; the cost of one CG iteration against a padded FFT round
+//! trip.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::hint::black_box;
@@ -13,13 +16,13 @@ use std::time::{Duration, Instant};
 use num_complex::Complex;
 use rayon::prelude::*;
 
-use layered_contact::indenter::{Paraboloid, Sphere};
+use layered_contact::indenter::{HeightMap, Paraboloid, Sphere};
 use layered_contact::kernel::ComplianceOperator;
 use layered_contact::scene::{
     Adhesion, AdhesionMethod, IndenterSpec, Protocol, Resolution, Scene, SolverSettings,
     SubstrateSpec,
 };
-use layered_contact::solver::{ContactSolver, IterationInfo, SolverParams};
+use layered_contact::solver::{ContactSolver, IterationInfo, Reach, SolverParams};
 use layered_contact::{Boundary, Grid, Material, Substrate};
 
 fn bench_solver(c: &mut Criterion) {
@@ -84,6 +87,43 @@ fn bench_solver(c: &mut Criterion) {
         };
         group.bench_function(BenchmarkId::new(name, n), |b| {
             b.iter(|| scene.run_on(&mut solver, &mut |_| {}).unwrap().steps.len())
+        });
+    }
+    group.finish();
+
+    // The elliptic paraboloid: a JKR pull-off contact of about 0.23 mm
+    // radius along the short axis on the rubber half-space of the adhesion
+    // tests (E = 1 MPa, nu = 0.48, dgamma = 0.05 J/m^2).
+    let mut group = c.benchmark_group(
+        "adhesive branches, elliptic paraboloid (Rx = 10 mm, Ry = 20 mm, half-space)",
+    );
+    group.sample_size(10);
+    let rubber = Substrate::half_space(Material::new(1e6, 0.48).unwrap());
+    let short = 0.23e-3;
+    for n in [64usize, 128] {
+        // 64 or 128 cells across the short axis, the grid four times as wide.
+        let delta = 2.0 * short / n as f64;
+        let grid = Grid::square(4 * n, (4 * n) as f64 * delta).unwrap();
+        let columns = grid.columns();
+        let heights = (0..grid.len())
+            .map(|c| {
+                let (x, y) = grid.cell_centre(c / columns, c % columns);
+                x * x / (2.0 * 0.01) + y * y / (2.0 * 0.02)
+            })
+            .collect();
+        let map = HeightMap::new(grid, heights).unwrap();
+        let mut solver =
+            ContactSolver::new(&rubber, &grid, Boundary::Isolated, SolverParams::default())
+                .unwrap();
+        let depth = (1.5 * short).powi(2) / 0.01;
+        group.bench_function(BenchmarkId::from_parameter(n), |b| {
+            b.iter(|| {
+                let branches = solver
+                    .adhesive_branches(&map, Reach::Depth(depth), 0.05, 0.05, &mut ())
+                    .unwrap();
+                let peak = branches.at_depth(depth, 0.0).unwrap();
+                branches.pull_off(peak.contact_area).unwrap().force
+            })
         });
     }
     group.finish();

@@ -17,6 +17,8 @@ use std::time::{Duration, Instant};
 
 use layered_contact as lc;
 
+mod adhesion;
+
 create_exception!(
     layered_contact,
     LayeredContactError,
@@ -925,6 +927,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(hertz_contact_radius, m)?)?;
     m.add_function(wrap_pyfunction!(jkr_state, m)?)?;
     m.add_function(wrap_pyfunction!(jkr_pull_off_force, m)?)?;
+    m.add_function(wrap_pyfunction!(adhesion::jkr_sinusoid_pull_off, m)?)?;
+    m.add_function(wrap_pyfunction!(adhesion::edge_release, m)?)?;
     m.add_function(wrap_pyfunction!(flat_punch_stiffness, m)?)?;
     m.add_function(wrap_pyfunction!(paraboloid_pull_off_force, m)?)?;
     m.add_function(wrap_pyfunction!(paraboloid_state, m)?)?;

@@ -9,6 +9,7 @@
 //! | [`Hertz`] | sphere (paraboloid) on a half-space | Hertz (1882); Johnson (1985) |
 //! | [`JkrSphere`] | adhesive sphere on a half-space | Johnson, Kendall & Roberts (1971) |
 //! | [`SneddonCone`] | conical punch on a half-space | Sneddon (1965) |
+//! | [`JkrSinusoid`] | adhesive wavy surface on a half-space, plane strain | Westergaard (1939); Johnson (1995) |
 //! | [`Axisymmetric`] | exact flat punch and paraboloid (JKR) on a coated half-space, by contact radius, depth or force | Fredholm equation, [`doc::axisymmetric`](crate::doc::axisymmetric) |
 //! | [`LayeredJkrCycle`] | exact loading and unloading of a paraboloid with adhesion hysteresis | Johnson, Kendall & Roberts (1971); Maugis (2000) |
 //!
@@ -34,6 +35,7 @@ mod hertz;
 mod jkr;
 mod layered_jkr;
 mod punch;
+mod sinusoid;
 
 pub use axisymmetric::{Axisymmetric, ContactState, LayeredFlatPunch, LayeredParaboloid, PullOff};
 pub use cone::SneddonCone;
@@ -43,6 +45,7 @@ pub use lambda::{a_m, lambda, lambda_g};
 pub use layered_jkr::LayeredJkrCycle;
 pub use punch::{BoussinesqPunch, JkrFlatPunch};
 pub use series::{PunchStiffnessSeries, SeriesStiffness};
+pub use sinusoid::JkrSinusoid;
 
 /// `x` clamped at zero from below, with NaN kept NaN (`f64::max` would turn
 /// a NaN argument into 0, a silent wrong answer).

@@ -81,6 +81,25 @@
 //! expensive (it applies the operator and its preconditioner): ten to fifteen
 //! non-adhesive solves in time. The mesh criterion takes 3000-6000. See [`adhesion`](super::adhesion) for the methods.
 //!
+//! Beyond axisymmetry (tables in `BENCHMARKS.md`, tests in
+//! `tests/adhesion_shapes.rs` and `tests/edge_release.rs`):
+//!
+//! | case | reference | 64 | 128 | 256 | order |
+//! |---|---|---|---|---|---|
+//! | wavy surface, crests along the grid, energy balance | Johnson (1995) pull-off | -1.16 % | -0.46 % | -0.19 % | 1.3 |
+//! | wavy surface, crests at 45 degrees, energy balance | Johnson (1995) pull-off | -1.09 % | -0.46 % | -0.19 % | 1.2 |
+//!
+//! (`N` = cells per wavelength, `alpha = 0.3`: 30 cells across the pull-off
+//! contact at 256.) The local release rates of
+//! [`ContactSolver::edge_release`](crate::solver::ContactSolver::edge_release),
+//! `N` = cells across the contact:
+//!
+//! | case | reference | 16 | 32 | 64 |
+//! |---|---|---|---|---|
+//! | elliptical punch, `b/a = 1/2`, at 0, 30, 45 degrees | onset force | 1.5 to 4.1 % | 0.3 to 1.0 % | 0.2 to 0.8 % |
+//! | circular punch under moment, mean over the edge | `K(theta)` | -4.4 % | -1.05 % | -0.42 % |
+//! | JKR sphere off the cell centres, mean over the edge | JKR `G` | -3.2 % | -1.5 % | -0.8 % |
+//!
 //! For the `1/N` quantities Richardson extrapolation of two resolutions
 //! ([`richardson`](crate::scene::richardson)) gains one to two orders of
 //! magnitude at the cost of the coarser run; [`Scene::converge`] doubles the

@@ -23,6 +23,7 @@ __all__ = [
     "hertz_contact_radius",
     "hertz_force",
     "jkr_pull_off_force",
+    "jkr_sinusoid_pull_off",
     "jkr_state",
     "paraboloid_pull_off_force",
     "paraboloid_state",
@@ -103,3 +104,12 @@ def flat_punch_pull_off_force(substrate: Substrate, radius: float, work_of_adhes
     (m) on ``substrate`` (Kendall's ``-sqrt(8 pi a^3 E* w)`` on a
     half-space)."""
     return _native.flat_punch_pull_off_force(substrate, radius, work_of_adhesion)
+
+
+def jkr_sinusoid_pull_off(
+    material: Material, wavelength: float, amplitude: float, work_of_adhesion: float
+) -> Tuple[float, float]:
+    """Johnson (1995): the pull-off mean pressure (Pa, negative) and contact
+    half-width (m) of an adhesive wavy surface ``z = g (1 - cos(2 pi x /
+    lambda))`` on a half-space, plane strain, JKR limit."""
+    return _native.jkr_sinusoid_pull_off(material, wavelength, amplitude, work_of_adhesion)

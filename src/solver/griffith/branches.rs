@@ -200,6 +200,7 @@ impl AdhesiveBranches {
     pub(super) fn new(
         raw: &[Raw],
         delta: f64,
+        relative: bool,
         capped: bool,
         lowest: f64,
         advancing: f64,
@@ -207,7 +208,8 @@ impl AdhesiveBranches {
     ) -> Result<Self> {
         let mut nodes = Vec::with_capacity(raw.len());
         for r in raw {
-            let half_width = (FIT_WINDOW * delta).max(FIT_RELATIVE_WINDOW * r.radius);
+            let relative_width = if relative { FIT_RELATIVE_WINDOW } else { 0.0 };
+            let half_width = (FIT_WINDOW * delta).max(relative_width * r.radius);
             let window: Vec<&Raw> = raw
                 .iter()
                 .filter(|o| (o.radius - r.radius).abs() <= half_width)

@@ -15,24 +15,33 @@ use super::{check_finite, ContactSolver, IterationInfo, Observer};
 
 mod branches;
 mod material;
+mod periodic;
 mod release;
 
 use branches::Raw;
 pub use branches::{AdhesiveBranches, BranchPoint};
+use periodic::{connected, half_period_error};
 pub use release::{EdgePoint, EdgeRelease, EDGE_WINDOW};
 
 /// The smallest contact set of the family, in cells: below about this size
 /// the staircase is too coarse for a contact edge to mean anything.
 const MIN_CELLS: usize = 9;
 /// Area-radius spacing of the family's sets: one cell, or a tenth of the
-/// radius if that is more (the fits follow power laws exactly, so wide
-/// spacing costs little accuracy: measured before the edge shift, 0.33 %
-/// against 0.36 % error at 64 cells across a sphere's pull-off contact, for
-/// 31 sets instead of 79).
+/// radius if that is more (for discs and other self-similar sets the fits
+/// follow power laws exactly, so wide spacing costs little accuracy:
+/// measured before the edge shift, 0.33 % against 0.36 % error at 64 cells
+/// across a sphere's pull-off contact, for 31 sets instead of 79). Strips
+/// keep one cell: their terms follow no power law, and the relative spacing
+/// and windows left an error that does not fall with the cell size
+/// (Johnson's sinusoid: -1.07 % at 64, 128 and 256 cells per wavelength;
+/// with one cell, -1.16, -0.46, -0.19 %). Other shapes keep the relative
+/// spacing: their balance is an average over the edge, whose error the
+/// finer spacing would not remove, at up to five times the solves.
 const NODE_SPACING: f64 = 1.0;
 const NODE_RELATIVE_SPACING: f64 = 0.1;
 /// Half-width of the window of the local quadratic fits: four cells of
-/// radius, or 35 % of the radius if that is more (about seven sets).
+/// radius, or, except for strips, 35 % of the radius if that is more (about
+/// seven sets).
 const FIT_WINDOW: f64 = 4.0;
 const FIT_RELATIVE_WINDOW: f64 = 0.35;
 /// How many times the family may be widened (its height level multiplied by
@@ -54,6 +63,16 @@ pub const EDGE_SHIFT: f64 = 0.117;
 /// Cells of radius the family must reach beyond the loading peak, so that
 /// the fits there are two-sided.
 const HEADROOM: f64 = 2.0;
+
+/// What the family's sets look like.
+#[derive(Debug, Clone, Copy)]
+struct Shape {
+    /// Strips of a profile invariant along a direction of a periodic grid,
+    /// with the height tolerance of a line: each set ends where a line
+    /// ends, and the sets are one cell of radius apart (other families, a
+    /// tenth of the radius where that is more).
+    strip: Option<f64>,
+}
 
 /// How far a family of contact sets must reach.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -123,6 +142,7 @@ impl ContactSolver {
         .max(smallest_level);
         let delta = self.grid().spacing();
         let periodic = self.operator.boundary() == crate::grid::Boundary::Periodic;
+        let strip = self.strip_tolerance();
         for _ in 0..=MAX_WIDENINGS {
             let top = order.partition_point(|&(c, _)| self.workspace.profile[c] - lowest <= level);
             let (usable, kept) = self.usable_prefix(&order, top);
@@ -136,28 +156,29 @@ impl ContactSolver {
                 });
             }
             let capped = kept && usable == order.len();
-            let (mut iterations, mut residual) = (0, 0.0);
-            let raw = self.solve_family(
-                &order,
-                usable,
+            let discs = !periodic && self.family_is_discs(&order[..usable]);
+            let (raw, iterations, residual) =
+                self.solve_family(&order, usable, lowest, Shape { strip }, observer)?;
+            let mut branches = match AdhesiveBranches::new(
+                &raw,
+                delta,
+                strip.is_none(),
+                capped,
                 lowest,
-                observer,
-                &mut iterations,
-                &mut residual,
-            )?;
-            let mut branches =
-                match AdhesiveBranches::new(&raw, delta, capped, lowest, advancing, receding) {
-                    Err(Error::ContactReachesEdge { .. }) if periodic && !kept => {
-                        return Err(half_period_error())
-                    }
-                    // Too few sets below a level the grid can still widen:
-                    // a shallow load whose contact jumps in far beyond it.
-                    Err(Error::ContactReachesEdge { .. }) if kept && !capped => {
-                        level *= 4.0;
-                        continue;
-                    }
-                    other => other?,
-                };
+                advancing,
+                receding,
+            ) {
+                Err(Error::ContactReachesEdge { .. }) if periodic && !kept => {
+                    return Err(half_period_error())
+                }
+                // Too few sets below a level the grid can still widen:
+                // a shallow load whose contact jumps in far beyond it.
+                Err(Error::ContactReachesEdge { .. }) if kept && !capped => {
+                    level *= 4.0;
+                    continue;
+                }
+                other => other?,
+            };
             branches.iterations = iterations;
             branches.residual = residual;
             // The loading branch must reach its target HEADROOM cells of
@@ -174,7 +195,8 @@ impl ContactSolver {
                     };
             if fits {
                 branches.order = order[..usable].iter().map(|&(c, _)| c).collect();
-                branches.edge_averaged = periodic || !self.family_is_discs(&order[..usable]);
+                // Discs and strips release evenly along their edges.
+                branches.edge_averaged = !discs && strip.is_none();
                 return Ok(branches);
             }
             if !kept && periodic {
@@ -272,32 +294,6 @@ impl ContactSolver {
         order
     }
 
-    /// How many of the first `top` cells of `order` the family may use: on
-    /// an isolated grid it stops before the first cell on the grid's outer
-    /// ring (an isolated contact must stay off the edge); on a periodic grid
-    /// before the first cell that would make a set span more than half the
-    /// period along a row or a column (measured from the family's first
-    /// cell across the periodic boundary), so that no set meets its images.
-    /// Also says whether `top` was kept.
-    fn usable_prefix(&self, order: &[(usize, f64)], top: usize) -> (usize, bool) {
-        let grid = *self.grid();
-        let (rows, columns) = (grid.rows(), grid.columns());
-        let first = match self.operator.boundary() {
-            crate::grid::Boundary::Isolated => order[..top]
-                .iter()
-                .position(|&(c, _)| super::on_outer_ring(c, rows, columns)),
-            crate::grid::Boundary::Periodic => {
-                let start = order.first().map_or(0, |&(c, _)| c);
-                let mut span = Span::new(start, rows, columns);
-                order[..top].iter().position(|&(c, _)| !span.include(c))
-            }
-        };
-        match first {
-            Some(first) => (first, false),
-            None => (top, true),
-        }
-    }
-
     /// Whether the family's sets are digital discs about the axis: along
     /// `order` (sorted by height, then distance from the axis) the distance
     /// never decreases, and cells at the same distance have the same height.
@@ -340,17 +336,22 @@ impl ContactSolver {
 
     /// Solves the clamped flat-punch and shape problems on the sets of the
     /// family (the first `m` cells of `order`, for growing `m` up to
-    /// `usable`), from the largest down, each warm-started from the last.
+    /// `usable`), from the largest down, each warm-started from the last;
+    /// also returns the iterations and the largest final residual.
+    /// See [`Shape`] for how the kind of family sets the spacing and the
+    /// ends of the sets.
     fn solve_family(
         &mut self,
         order: &[(usize, f64)],
         usable: usize,
         lowest: f64,
+        shape: Shape,
         observer: &mut dyn Observer,
-        iterations: &mut usize,
-        residual: &mut f64,
-    ) -> Result<Vec<Raw>> {
+    ) -> Result<(Vec<Raw>, usize, f64)> {
+        let (mut iterations, mut residual) = (0, 0.0f64);
         let grid = *self.grid();
+        let Shape { strip } = shape;
+        let periodic = self.operator.boundary() == crate::grid::Boundary::Periodic;
         let (n, area) = (grid.len(), grid.cell_area());
         let columns = grid.columns();
         // Set sizes: equal-area radii NODE_SPACING cells apart (or ten per
@@ -359,16 +360,26 @@ impl ContactSolver {
         let mut sizes = Vec::new();
         let mut radius = 0.0f64;
         loop {
-            radius += NODE_SPACING.max(NODE_RELATIVE_SPACING * radius);
+            let relative_spacing = if strip.is_some() {
+                0.0
+            } else {
+                NODE_RELATIVE_SPACING
+            };
+            radius += NODE_SPACING.max(relative_spacing * radius);
             let mut m = (std::f64::consts::PI * radius * radius).round() as usize;
             if m >= usable {
                 break;
             }
-            let key = |i: usize| {
-                let (c, r2) = order[i];
-                (self.workspace.profile[c], r2)
+            let profile = &self.workspace.profile;
+            let tie = |i: usize| {
+                let ((a, ra), (b, rb)) = (order[i], order[i - 1]);
+                match strip {
+                    // A strip's line: heights equal to the tolerance.
+                    Some(tolerance) => (profile[a] - profile[b]).abs() <= tolerance,
+                    None => profile[a] == profile[b] && ra == rb,
+                }
             };
-            while m < usable && m > 0 && key(m) == key(m - 1) {
+            while m < usable && m > 0 && tie(m) {
                 m += 1;
             }
             if m >= MIN_CELLS && sizes.last().is_none_or(|&last| m > last) && m < usable {
@@ -392,7 +403,7 @@ impl ContactSolver {
                 shape[c] = 0.0;
             }
             current = m;
-            if !connected(&attached, columns, order[0].0, m) {
+            if !connected(&attached, columns, periodic, strip.is_some(), order[0].0, m) {
                 return Err(Error::Unsupported {
                     feature: "the energy-balance adhesion method on this indenter",
                     reason: "a contact set splits into separate patches; use the \
@@ -424,8 +435,8 @@ impl ContactSolver {
                 "adhesive energy balance",
                 &[values.stiffness, values.shape_force, values.shape_energy],
             )?;
-            *iterations += i1 + i2;
-            *residual = residual.max(r1).max(r2);
+            iterations += i1 + i2;
+            residual = residual.max(r1).max(r2);
             observer.observe(&IterationInfo {
                 iteration: index + 1,
                 residual: r1.max(r2),
@@ -434,77 +445,6 @@ impl ContactSolver {
             raw.push(values);
         }
         raw.reverse();
-        Ok(raw)
+        Ok((raw, iterations, residual))
     }
-}
-
-/// The error of a periodic family whose sets would span more than half the
-/// period.
-fn half_period_error() -> Error {
-    Error::Unsupported {
-        feature: "the energy-balance adhesion method for a contact wider than half the period",
-        reason: "its contact sets would meet their periodic images, where the balance \
-                 is undefined; use the mesh-dependent criterion or a wider period",
-    }
-}
-
-/// The rows and columns a growing set spans on a periodic grid, as offsets
-/// from its first cell taken the short way round.
-struct Span {
-    start: (usize, usize),
-    shape: (usize, usize),
-    rows: (isize, isize),
-    columns: (isize, isize),
-}
-
-impl Span {
-    fn new(start: usize, rows: usize, columns: usize) -> Self {
-        Span {
-            start: (start / columns, start % columns),
-            shape: (rows, columns),
-            rows: (0, 0),
-            columns: (0, 0),
-        }
-    }
-
-    /// Adds cell `c`; false if the set would then span more than half the
-    /// period in either direction.
-    fn include(&mut self, c: usize) -> bool {
-        let offset = |index: usize, start: usize, period: usize| {
-            let forward = (index + period - start) % period;
-            if 2 * forward > period {
-                forward as isize - period as isize
-            } else {
-                forward as isize
-            }
-        };
-        let (rows, columns) = self.shape;
-        let di = offset(c / columns, self.start.0, rows);
-        let dj = offset(c % columns, self.start.1, columns);
-        self.rows = (self.rows.0.min(di), self.rows.1.max(di));
-        self.columns = (self.columns.0.min(dj), self.columns.1.max(dj));
-        let within = |(lo, hi): (isize, isize), period: usize| 2 * (hi - lo + 1) as usize <= period;
-        within(self.rows, rows) && within(self.columns, columns)
-    }
-}
-
-/// Whether the first `m` cells of the family (marked in `attached`) form
-/// one 4-connected patch containing `start`.
-fn connected(attached: &[bool], columns: usize, start: usize, m: usize) -> bool {
-    let n = attached.len();
-    let rows = n / columns;
-    let mut seen = vec![false; n];
-    let mut stack = vec![start];
-    seen[start] = true;
-    let mut count = 0usize;
-    while let Some(c) = stack.pop() {
-        count += 1;
-        for m in super::neighbours(c, rows, columns).into_iter().flatten() {
-            if attached[m] && !seen[m] {
-                seen[m] = true;
-                stack.push(m);
-            }
-        }
-    }
-    count == m
 }

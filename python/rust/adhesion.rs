@@ -1,0 +1,74 @@
+//! Bindings of the local Griffith criterion (`ContactSolver.edge_release`)
+//! and of the adhesive sinusoid's exact pull-off.
+
+use numpy::{PyArray1, PyReadonlyArray2};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use layered_contact as lc;
+
+use super::{ContactSolver, Indenter, Material, OrPy, Shared};
+
+/// The energy release rate along the edge of `contact` (a boolean
+/// `rows x columns` mask of cells held bonded to `indenter` at `depth`, m),
+/// smoothed over `window` cells: a dict of arrays over the edge cells
+/// (`row`, `column`, `x`, `y`, `normal_x`, `normal_y`, `release_rate` in
+/// J/m^2, `stress_intensity` in Pa m^1/2, positive where the edge pulls)
+/// and the floats `force` (N) and `depth` (m).
+#[pyfunction]
+#[pyo3(signature = (solver, indenter, depth, contact, window=lc::solver::EDGE_WINDOW))]
+pub(crate) fn edge_release<'py>(
+    py: Python<'py>,
+    mut solver: PyRefMut<'_, ContactSolver>,
+    indenter: &Indenter,
+    depth: f64,
+    contact: PyReadonlyArray2<'py, bool>,
+    window: f64,
+) -> PyResult<Bound<'py, PyDict>> {
+    let mask = contact.as_array().to_owned();
+    let shape = Shared(indenter.inner.clone());
+    let inner = &mut solver.inner;
+    let edge = py
+        .detach(|| inner.edge_release(&shape, depth, &mask, window))
+        .py_err()?;
+    let column = |f: &dyn Fn(&lc::solver::EdgePoint) -> f64| -> Vec<f64> {
+        edge.points.iter().map(f).collect()
+    };
+    let d = PyDict::new(py);
+    let cells = |f: &dyn Fn(&lc::solver::EdgePoint) -> usize| -> Vec<usize> {
+        edge.points.iter().map(f).collect()
+    };
+    d.set_item("row", PyArray1::from_vec(py, cells(&|p| p.cell.0)))?;
+    d.set_item("column", PyArray1::from_vec(py, cells(&|p| p.cell.1)))?;
+    d.set_item("x", PyArray1::from_vec(py, column(&|p| p.position.0)))?;
+    d.set_item("y", PyArray1::from_vec(py, column(&|p| p.position.1)))?;
+    d.set_item("normal_x", PyArray1::from_vec(py, column(&|p| p.normal.0)))?;
+    d.set_item("normal_y", PyArray1::from_vec(py, column(&|p| p.normal.1)))?;
+    d.set_item(
+        "release_rate",
+        PyArray1::from_vec(py, column(&|p| p.release_rate)),
+    )?;
+    d.set_item(
+        "stress_intensity",
+        PyArray1::from_vec(py, column(&|p| p.stress_intensity)),
+    )?;
+    d.set_item("force", edge.force)?;
+    d.set_item("depth", edge.depth)?;
+    Ok(d)
+}
+
+/// Johnson's (1995) adhesive sinusoid in plane strain: the pull-off mean
+/// pressure (Pa, negative) and contact half-width (m) of a surface of
+/// `wavelength` and `amplitude` (m) on a half-space of `material` with
+/// `work_of_adhesion` (J/m^2).
+#[pyfunction]
+pub(crate) fn jkr_sinusoid_pull_off(
+    material: &Material,
+    wavelength: f64,
+    amplitude: f64,
+    work_of_adhesion: f64,
+) -> PyResult<(f64, f64)> {
+    lc::analytic::JkrSinusoid::new(&material.inner, wavelength, amplitude, work_of_adhesion)
+        .and_then(|s| s.pull_off())
+        .py_err()
+}

@@ -1,0 +1,57 @@
+"""The local Griffith criterion and the adhesive sinusoid from Python,
+against the exact values the Rust tests use."""
+
+import math
+
+import numpy as np
+import pytest
+
+import layered_contact as lc
+
+RUBBER = lc.Material(1e6, 0.48)
+ESTAR = 1e6 / (1 - 0.48**2)
+
+
+def test_kendall_punch_release_is_uniform_and_exact():
+    # A disc punch 32 cells across held at 1 um: G = E* d^2 / (2 pi a)
+    # everywhere on the edge, within the 0.45 / N of the material forces
+    # (1.4 %) and the lattice (3 %).
+    n, spacing = 64, 1e-4
+    solver = lc.ContactSolver(lc.Substrate.half_space(RUBBER), n, n, spacing)
+    punch = lc.Indenter.flat_punch(1.6e-3)
+    x = (np.arange(n) + 0.5 - n / 2) * spacing
+    contact = x[:, None] ** 2 + x[None, :] ** 2 < 1.6e-3**2
+    edge = lc.edge_release(solver, punch, 1e-6, contact)
+    a = math.sqrt(contact.sum() / math.pi) * spacing - 0.117 * spacing
+    exact = ESTAR * 1e-12 / (2 * math.pi * a)
+    assert np.all(np.abs(edge["release_rate"] / exact - 1) < 0.045)
+    assert np.all(edge["stress_intensity"] < 0)  # a pushing punch
+    assert edge["force"] > 0
+    # Outward normals: along the position vector.
+    radial = edge["normal_x"] * edge["x"] + edge["normal_y"] * edge["y"]
+    assert np.all(radial / np.hypot(edge["x"], edge["y"]) > 0.95)
+
+
+def test_edge_release_refuses_a_wrong_mask():
+    solver = lc.ContactSolver(lc.Substrate.half_space(RUBBER), 16, 16, 1e-4)
+    punch = lc.Indenter.flat_punch(5e-4)
+    with pytest.raises(lc.InvalidInputError):
+        lc.edge_release(solver, punch, 1e-6, np.ones((15, 16), dtype=bool))
+    with pytest.raises(lc.InvalidInputError):
+        lc.edge_release(solver, punch, 1e-6, np.zeros((16, 16), dtype=bool), window=0.5)
+
+
+def test_johnson_sinusoid_pull_off():
+    # Westergaard plus the periodic punch: at the pull-off the slope of
+    # pbar(psi) = p* (sin^2 psi - alpha sqrt(tan psi)) vanishes.
+    wavelength, amplitude, work = 1e-3, 2e-5, 0.05
+    pressure, half_width = lc.analytic.jkr_sinusoid_pull_off(RUBBER, wavelength, amplitude, work)
+    p_star = math.pi * ESTAR * amplitude / wavelength
+    alpha = math.sqrt(2 * wavelength * work / (math.pi**2 * amplitude**2 * ESTAR))
+    psi = math.pi * half_width / wavelength
+    exact = p_star * (math.sin(psi) ** 2 - alpha * math.sqrt(math.tan(psi)))
+    assert pressure == pytest.approx(exact, rel=1e-12)
+    pbar = lambda s: math.sin(s) ** 2 - alpha * math.sqrt(math.tan(s))  # noqa: E731
+    assert pbar(psi) <= min(pbar(psi * 0.99), pbar(psi * 1.01))
+    with pytest.raises(lc.LayeredContactError):
+        lc.analytic.jkr_sinusoid_pull_off(RUBBER, wavelength, 1e-7, work)
