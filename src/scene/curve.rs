@@ -80,11 +80,14 @@ pub struct Curve {
 pub enum Caveat {
     /// The energy-balance adhesion method balanced the energy release rate
     /// averaged over the contact edge, along contact sets that are level
-    /// sets of the profile but not discs about the axis (or on a periodic
-    /// grid): the JKR-limit solution only for axisymmetric contacts. For a
-    /// tilted, elliptic or rectangular indenter or a height map the forces
-    /// may be off by several per cent ([`doc::adhesion`](crate::doc::adhesion));
-    /// the mesh-dependent criterion is the cell-by-cell alternative. See
+    /// sets of the profile but neither discs about the axis on an isolated
+    /// grid nor strips across a periodic one: the JKR-limit solution only
+    /// where the release is even along the edge. For a tilted, elliptic or
+    /// rectangular indenter or a height map the forces may be off by several
+    /// per cent ([`doc::adhesion`](crate::doc::adhesion));
+    /// [`ContactSolver::edge_release`](crate::solver::ContactSolver::edge_release)
+    /// shows how uneven the release is on a contact, and the mesh-dependent
+    /// criterion is the cell-by-cell alternative. See
     /// [`AdhesiveBranches::edge_averaged`](crate::solver::AdhesiveBranches::edge_averaged).
     EdgeAveragedAdhesion,
 }
@@ -93,10 +96,10 @@ impl std::fmt::Display for Caveat {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Caveat::EdgeAveragedAdhesion => f.write_str(
-                "edge-averaged adhesion: the contact sets are not discs about the grid's \
-                 axis (or the grid is periodic), so the energy balance averages the energy \
-                 release rate over the edge and its forces may be off by several per cent \
-                 (the JKR-limit solution only for axisymmetric contacts on isolated grids)",
+                "edge-averaged adhesion: the contact sets are neither discs about the grid's \
+                 axis nor strips across a periodic grid, so the energy balance averages the \
+                 energy release rate over the edge and its forces may be off by several per \
+                 cent (the JKR-limit solution only where the release is even along the edge)",
             ),
         }
     }

@@ -182,10 +182,12 @@ pub enum AdhesionMethod {
     /// pull-off within 0.25 % of exact JKR from 16 cells across its pull-off
     /// contact and within 0.07 % from 64 (half-space and layers),
     /// displacement or force control, a whole cycle for the price of one
-    /// family. The edge-averaged balance: exact for axisymmetric
-    /// contacts, flagged as [`Caveat::EdgeAveragedAdhesion`] on the curve
-    /// for every other (forces may be off by several per cent); refuses
-    /// contacts that split into patches or span more than half a period.
+    /// family. The edge-averaged balance: exact for axisymmetric contacts
+    /// and for wavy surfaces on periodic grids (strips, at first order in
+    /// the cell size), flagged as [`Caveat::EdgeAveragedAdhesion`] on the
+    /// curve for every other (forces may be off by several per cent);
+    /// refuses contacts that split into patches or span more than half a
+    /// period.
     #[default]
     EnergyBalance,
     /// The mesh-dependent critical stress of Pohrt & Popov (2015), cell by

@@ -257,12 +257,14 @@ impl AdhesiveBranches {
 
     /// Whether the balance is only the edge-averaged one, and so not the
     /// JKR-limit solution: true unless every set of the family is a digital
-    /// disc about the axis on an isolated grid (an axisymmetric profile),
-    /// the case where the energy release rate is the same all along the
-    /// edge and the balance is exact. Elsewhere (a tilted, elliptic or
-    /// rectangular indenter, a height map, any periodic grid) the real
-    /// contact is not a level set of the profile and the forces may be off
-    /// by several per cent (measured in [`doc::adhesion`](crate::doc::adhesion));
+    /// disc about the axis on an isolated grid (an axisymmetric profile) or
+    /// a strip across a periodic grid (a profile invariant along the grid's
+    /// rows, columns or diagonals), the cases where the energy release rate
+    /// is the same all along the edge and the balance is exact. Elsewhere (a
+    /// tilted, elliptic or rectangular indenter, a height map, a flat punch
+    /// that is not round) the real contact is not a level set of the profile
+    /// and the forces may be off by several per cent (measured in
+    /// [`doc::adhesion`](crate::doc::adhesion));
     /// scenes report it as [`Caveat::EdgeAveragedAdhesion`](crate::scene::Caveat::EdgeAveragedAdhesion).
     pub fn edge_averaged(&self) -> bool {
         self.edge_averaged
