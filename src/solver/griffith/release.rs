@@ -11,10 +11,13 @@ use crate::solver::{check_finite, ContactSolver};
 use super::material::{ClampedPair, EdgeForces};
 
 /// Default width of the Gaussian that smooths the release rate along the
-/// edge, in cells: wide enough that the staircase's pattern averages out
-/// (on a digital disc of 64 cells across, the rate at 0, 22.5 and 45
-/// degrees spreads by 2 % at 8 cells and by 7 % at 4), narrow next to the
-/// contacts it resolves.
+/// edge, in cells: wide enough that the staircase's pattern averages out,
+/// narrow next to the contacts it resolves. Measured with the local
+/// quadratic fit (`tests/edge_release.rs`, `BENCHMARKS.md`): the elliptical
+/// punch's onset at 64 cells across is 0.2 to 0.8 % off at 8 cells, 0.5 to
+/// 0.9 % at 12 and 0.9 to 1.3 % at 16 (a wider window blurs the peak at the
+/// tips); the worst edge cell of the JKR sphere's disc on the cell centres
+/// is 2.5 % off at 8 cells.
 pub const EDGE_WINDOW: f64 = 8.0;
 /// The widest smoothing window accepted, cells.
 const MAX_WINDOW: f64 = 64.0;
