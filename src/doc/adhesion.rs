@@ -106,17 +106,22 @@
 //!   surface whose contacts are strips across the period returned pull-off
 //!   forces from `-2e25` N to `+0.02` N where the exact value is about
 //!   `-5e-3` N);
-//! * except for strips: a profile invariant along the grid's rows, columns
-//!   or diagonals (a wavy surface, crests along the grid or at 45 degrees)
-//!   has strips for contact sets, which meet their own images along their
-//!   length by nature. Its family holds whole lines of cells (heights equal
-//!   to `1e-9` of the profile's range), up to half the period's area, and
-//!   is exact: the release is even along a straight edge. Against Johnson's
+//! * except for strips: a profile invariant along the grid's rows, columns,
+//!   diagonals or the directions two cells by one (a wavy surface, crests
+//!   along the grid, at 45 degrees or at 26.6 degrees to it) has strips for
+//!   contact sets, which meet their own images along their length by
+//!   nature. Its family holds whole lines of cells (heights equal to `1e-9`
+//!   of the profile's range), up to half the period's area, and is exact:
+//!   the release is even along a straight edge. Strips so narrow that their
+//!   lines of cells do not touch (along two cells by one) are left out: the
+//!   family starts at the widest that holds together. Against Johnson's
 //!   sinusoid ([`JkrSinusoid`](crate::analytic::JkrSinusoid), `alpha =
-//!   0.3`) the pull-off is off by -1.16, -0.46, -0.19 % at 64, 128, 256
-//!   cells per wavelength with the crests along the grid and -1.09, -0.46,
-//!   -0.19 % at 45 degrees: order 1.3, the same limit whatever the
-//!   direction (`tests/adhesion_shapes.rs`);
+//!   0.3`) on `n x n` periodic grids (`n` lines of cells per wavelength) the
+//!   pull-off is off by -1.16, -0.46, -0.19 % at `n` = 64, 128, 256 with
+//!   the crests along the grid, -1.09, -0.46, -0.19 % at 45 degrees and
+//!   -0.46, -0.20, -0.087 % at `n` = 128, 256, 512 along two cells by one:
+//!   order 1.2 to 1.3, the same limit whatever the direction
+//!   (`tests/adhesion_shapes.rs`);
 //! * a strip family is spaced by one cell of equal-area radius and fitted
 //!   over four, not by a tenth of the radius and over 35 % of it: its terms
 //!   follow no power law, and the relative spacing left an error that did

@@ -74,6 +74,10 @@ struct Shape {
     strip: Option<f64>,
 }
 
+/// The fewest sets a strip family must keep when its narrowest strips fall
+/// apart into lines of cells (enough for the fits' windows).
+const MIN_STRIP_SETS: usize = 8;
+
 /// How far a family of contact sets must reach.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Reach {
@@ -404,6 +408,12 @@ impl ContactSolver {
             }
             current = m;
             if !connected(&attached, columns, periodic, strip.is_some(), order[0].0, m) {
+                // The narrowest strips along a steep lattice direction are
+                // lines of cells that touch nowhere: the family starts at
+                // the last (widest) set that is one patch.
+                if strip.is_some() && raw.len() >= MIN_STRIP_SETS {
+                    break;
+                }
                 return Err(Error::Unsupported {
                     feature: "the energy-balance adhesion method on this indenter",
                     reason: "a contact set splits into separate patches; use the \

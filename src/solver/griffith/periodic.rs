@@ -9,8 +9,18 @@ use crate::error::Error;
 use crate::solver::ContactSolver;
 
 /// The lattice translations (rows, columns) along which a periodic profile
-/// may be invariant: along the grid and its diagonals.
-const STRIP_DIRECTIONS: [(usize, isize); 4] = [(0, 1), (1, 0), (1, 1), (1, -1)];
+/// may be invariant: along the grid, its diagonals, and the directions two
+/// cells by one.
+const STRIP_DIRECTIONS: [(usize, isize); 8] = [
+    (0, 1),
+    (1, 0),
+    (1, 1),
+    (1, -1),
+    (1, 2),
+    (2, 1),
+    (1, -2),
+    (2, -1),
+];
 
 impl ContactSolver {
     /// How many of the first `top` cells of `order` the family may use: on
