@@ -151,8 +151,9 @@ fn wavy_surfaces_that_used_to_fail_now_match_johnson() {
     // A wavy surface h0 (1 - cos 2 pi x / L) on one period: its contacts are
     // strips across the whole period. Five grids and amplitudes that used
     // to give pull-off forces from -2e25 N to +0.02 N (then refused with a
-    // typed error) now give Johnson's (1995) pull-off.
+    // typed error) now give Johnson's (1995) pull-off or a typed error.
     let period = 1e-3;
+    let mut accepted = 0;
     for (n, h0) in [(32, 2e-5), (64, 2e-5), (32, 5e-6), (64, 5e-6), (128, 2e-5)] {
         let grid = Grid::square(n, period).unwrap();
         let (map, mut solver) = sampled(grid, Boundary::Periodic, |x, _| {
@@ -162,16 +163,17 @@ fn wavy_surfaces_that_used_to_fail_now_match_johnson() {
         let result = solver.adhesive_branches(&map, Reach::Depth(0.5 * h0), WORK, WORK, &mut ());
         match (n, h0, result) {
             // Contacts of 4.4 and 8.8 cells across at the pull-off: measured
-            // -5.1 % and -1.1 %, first order in the cell size (Johnson's
-            // sinusoid on finer grids: `tests/adhesion_shapes.rs`).
+            // -5.1 % and -0.48 % (Johnson's sinusoid on finer grids:
+            // `tests/adhesion_shapes.rs`).
             (64 | 128, 2e-5, Ok(branches)) => {
                 let peak = branches.at_depth(0.5 * h0, 0.0).unwrap();
                 let force = branches.pull_off(peak.contact_area).unwrap().force;
                 let (pressure, _) = exact.pull_off().unwrap();
                 let error = force / (period * period) / pressure - 1.0;
-                let bound = if n == 64 { 0.06 } else { 0.015 };
+                let bound = if n == 64 { 0.06 } else { 0.01 };
                 assert!(error.abs() < bound, "{n}: {error}");
                 assert!(!branches.edge_averaged());
+                accepted += 1;
             }
             // The loading to half the amplitude needs contacts wider than
             // half the period (the mean displacement is zero on a periodic
@@ -180,6 +182,7 @@ fn wavy_surfaces_that_used_to_fail_now_match_johnson() {
             (_, _, other) => panic!("{n} cells, h0 = {h0}: {other:?}"),
         }
     }
+    assert_eq!(accepted, 2);
 }
 
 #[test]
@@ -230,4 +233,60 @@ fn a_flat_punch_that_is_not_round_is_flagged() {
     assert!((force / kendall - 1.0).abs() < 5e-3, "{force} vs {kendall}");
     let (_, averaged) = pull_off(&square);
     assert!(averaged);
+}
+
+#[test]
+fn a_wavy_surface_with_two_troughs_is_refused_not_truncated() {
+    // Two crests per period, one a hundredth deeper: the family's sets are
+    // first one strip, then two, then one again. The balance cannot take
+    // two strips (each would need its own edge), so the branch is refused
+    // with a typed error, whichever way the crests run. A single trough
+    // (the control) is accepted and exact (`tests/adhesion_shapes.rs`).
+    let period = 1e-3;
+    let h0 = 2e-5;
+    for (k, l) in [(1usize, 0usize), (1, 2)] {
+        let n = 128;
+        let grid = Grid::square(n, period).unwrap();
+        let heights = |phase: f64, troughs: f64| {
+            h0 * (1.0 - (troughs * 2.0 * PI * phase).cos())
+                + 0.01 * h0 * (1.0 - (2.0 * PI * phase).cos())
+        };
+        let map = |troughs: f64| {
+            let values = (0..grid.len())
+                .map(|c| {
+                    let (i, j) = (c / n, c % n);
+                    heights(((k * i + l * j) % n) as f64 / n as f64, troughs)
+                })
+                .collect();
+            HeightMap::new(grid, values).unwrap()
+        };
+        let mut solver = ContactSolver::new(
+            &Substrate::half_space(rubber()),
+            &grid,
+            Boundary::Periodic,
+            SolverParams::default(),
+        )
+        .unwrap();
+        let two = solver.adhesive_branches(&map(2.0), Reach::Depth(0.5 * h0), WORK, WORK, &mut ());
+        assert!(
+            matches!(two, Err(Error::Unsupported { .. })),
+            "({k}, {l}): {two:?}"
+        );
+        // The control, loaded to strips 0.38 of the period wide.
+        let wavelength = period / ((k * k + l * l) as f64).sqrt();
+        let exact = JkrSinusoid::new(&rubber(), wavelength, 1.01 * h0, WORK).unwrap();
+        let target = exact.mean_pressure(0.6 * wavelength / PI) * period * period;
+        let one = solver
+            .adhesive_branches(&map(1.0), Reach::Force(target), WORK, WORK, &mut ())
+            .unwrap();
+        assert!(!one.edge_averaged());
+        let peak = one.at_force(target, 0.0).unwrap();
+        let pull_off = one.pull_off(peak.contact_area);
+        let (exact_pull_off, _) = exact.pull_off().unwrap();
+        // About 8 lines of cells across the pull-off contact (alpha = 0.14
+        // and 0.09): measured -0.47 % along the grid, -0.24 % along two
+        // cells by one.
+        let error = pull_off.unwrap().force / (period * period) / exact_pull_off - 1.0;
+        assert!(error.abs() < 0.01, "({k}, {l}): {error}");
+    }
 }

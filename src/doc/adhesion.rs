@@ -123,10 +123,15 @@
 //!   order 1.2 to 1.3, the same limit whatever the direction
 //!   (`tests/adhesion_shapes.rs`);
 //! * a strip family is spaced by one cell of equal-area radius and fitted
-//!   over four, not by a tenth of the radius and over 35 % of it: its terms
-//!   follow no power law, and the relative spacing left an error that did
-//!   not fall with the cell size (the sinusoid: -1.07 % at 64, 128 and 256
-//!   cells);
+//!   over four (at least its four nearest sets), not by a tenth of the
+//!   radius and over 35 % of it: its terms follow no power law, and the
+//!   relative spacing left an error that did not fall with the cell size
+//!   (the sinusoid: -1.07 % at 64, 128 and 256 cells). A profile with two
+//!   troughs per period has sets of two strips and is refused;
+//! * a pull-off or jump-off whose force (or depth) still falls at the
+//!   family's smallest set is refused with
+//!   [`Error::Unsupported`](crate::Error::Unsupported): the grid does not
+//!   resolve the contact it comes off from;
 //! * a family whose sets split into separate patches (a rough surface) is
 //!   refused with [`Error::Unsupported`](crate::Error::Unsupported).
 //!

@@ -209,7 +209,18 @@ impl AdhesiveBranches {
         let mut nodes = Vec::with_capacity(raw.len());
         for r in raw {
             let relative_width = if relative { FIT_RELATIVE_WINDOW } else { 0.0 };
-            let half_width = (FIT_WINDOW * delta).max(relative_width * r.radius);
+            let mut half_width = (FIT_WINDOW * delta).max(relative_width * r.radius);
+            if !relative {
+                // Strips: their narrowest sets lie further apart in
+                // equal-area radius than the window; each fit takes at
+                // least its four nearest sets.
+                let mut distances: Vec<f64> =
+                    raw.iter().map(|o| (o.radius - r.radius).abs()).collect();
+                distances.sort_by(f64::total_cmp);
+                if let Some(&fourth) = distances.get(3) {
+                    half_width = half_width.max(fourth);
+                }
+            }
             let window: Vec<&Raw> = raw
                 .iter()
                 .filter(|o| (o.radius - r.radius).abs() <= half_width)
@@ -468,7 +479,10 @@ impl AdhesiveBranches {
     /// finds no equilibrium.
     ///
     /// # Errors
-    /// [`Error::NonFinite`] if the branch holds no finite force there.
+    /// [`Error::NonFinite`] if the branch holds no finite force there;
+    /// [`Error::Unsupported`] if the force still falls at the family's
+    /// smallest set (the pull-off contact is narrower than the grid
+    /// resolves).
     pub fn pull_off(&self, history: f64) -> Result<BranchPoint> {
         self.first_minimum(history, Load::Force(0.0))
     }
@@ -493,6 +507,12 @@ impl AdhesiveBranches {
         let top = history.clamp(nodes[0].area, self.max_contact_area());
         let mut areas: Vec<f64> = nodes.iter().map(|n| n.area).filter(|&a| a < top).collect();
         areas.push(top);
+        if std::env::var_os("LC_DBG").is_some() {
+            for a in &areas {
+                eprint!(" {:.3e}:{:.4e}", a, key(*a));
+            }
+            eprintln!();
+        }
         let mut i = areas.len() - 1;
         while i > 0 && key(areas[i - 1]) <= key(areas[i]) {
             i -= 1;
@@ -511,6 +531,15 @@ impl AdhesiveBranches {
             }
         }
         let area = 0.5 * (lo + hi);
+        // Pinned at the family's smallest set: the minimum lies below it,
+        // where the family holds no set.
+        if i == 0 && area - areas[0] <= 1e-6 * areas[0] {
+            return Err(Error::Unsupported {
+                feature: "a pull-off or jump-off below the family's smallest contact set",
+                reason: "the force (or depth) still falls at the smallest set the grid \
+                         resolves; refine the grid",
+            });
+        }
         let depth = self.lowest + self.balance(area, Edge::Receding, Load::Depth(0.0));
         self.checked(self.point(area, Load::Depth(depth)))
     }

@@ -77,6 +77,10 @@ struct Shape {
 /// The fewest sets a strip family must keep when its narrowest strips fall
 /// apart into lines of cells (enough for the fits' windows).
 const MIN_STRIP_SETS: usize = 8;
+/// The most lines of cells (distinct heights) of a strip that may fall
+/// apart because its lines run two cells by one; a wider set that is not
+/// one patch is two strips.
+const NARROW_STRIP_LINES: usize = 6;
 
 /// How far a family of contact sets must reach.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -410,9 +414,18 @@ impl ContactSolver {
             if !connected(&attached, columns, periodic, strip.is_some(), order[0].0, m) {
                 // The narrowest strips along a steep lattice direction are
                 // lines of cells that touch nowhere: the family starts at
-                // the last (widest) set that is one patch.
-                if strip.is_some() && raw.len() >= MIN_STRIP_SETS {
-                    break;
+                // the last (widest) set that is one patch. A set of more
+                // lines than that is two strips (a profile with two
+                // troughs), which the balance cannot take.
+                if let Some(tolerance) = strip {
+                    let profile = &self.workspace.profile;
+                    let lines = 1 + order[..m]
+                        .windows(2)
+                        .filter(|w| (profile[w[1].0] - profile[w[0].0]).abs() > tolerance)
+                        .count();
+                    if lines <= NARROW_STRIP_LINES && raw.len() >= MIN_STRIP_SETS {
+                        break;
+                    }
                 }
                 return Err(Error::Unsupported {
                     feature: "the energy-balance adhesion method on this indenter",
