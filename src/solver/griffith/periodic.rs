@@ -2,8 +2,8 @@
 //! of a set: a set must not meet its periodic images across its edge, where
 //! the energy balance is undefined, but the contact of a surface that is
 //! invariant along a direction of the grid (a wavy surface, crests along
-//! the grid or at 45 degrees) is a strip that meets its own images along
-//! that direction by nature.
+//! the grid, at 45 degrees or two cells by one) is a strip that meets its
+//! own images along that direction by nature.
 
 use crate::error::Error;
 use crate::solver::ContactSolver;
@@ -28,20 +28,21 @@ impl ContactSolver {
     /// ring (an isolated contact must stay off the edge); on a periodic grid
     /// before the first cell that would make a set span more than half the
     /// period along a row or a column (measured from the family's first
-    /// cell across the periodic boundary), so that no set meets its images.
-    /// Also says whether `top` was kept.
+    /// cell across the periodic boundary), so that no set meets its images;
+    /// for strips ([`strip_tolerance`](Self::strip_tolerance)), at half the
+    /// period's area, at the end of a line. Also says whether `top` was
+    /// kept.
     pub(super) fn usable_prefix(&self, order: &[(usize, f64)], top: usize) -> (usize, bool) {
         let grid = *self.grid();
         let (rows, columns) = (grid.rows(), grid.columns());
         let strip = self.strip_tolerance();
-        let first = match self.operator.boundary() {
-            crate::grid::Boundary::Isolated => order[..top]
+        let first = match (self.operator.boundary(), strip) {
+            (crate::grid::Boundary::Isolated, _) => order[..top]
                 .iter()
                 .position(|&(c, _)| crate::solver::on_outer_ring(c, rows, columns)),
-            crate::grid::Boundary::Periodic if strip.is_some() => {
+            (crate::grid::Boundary::Periodic, Some(tolerance)) => {
                 // Strips: at most half the period's area, ending where a
                 // height ends (a whole strip).
-                let tolerance = strip.unwrap_or(0.0);
                 let half = grid.len() / 2;
                 (top > half).then(|| {
                     let profile = &self.workspace.profile;
@@ -54,7 +55,7 @@ impl ContactSolver {
                     end
                 })
             }
-            crate::grid::Boundary::Periodic => {
+            (crate::grid::Boundary::Periodic, None) => {
                 let start = order.first().map_or(0, |&(c, _)| c);
                 let mut span = Span::new(start, rows, columns);
                 order[..top].iter().position(|&(c, _)| !span.include(c))
