@@ -290,3 +290,34 @@ fn a_wavy_surface_with_two_troughs_is_refused_not_truncated() {
         assert!(error.abs() < 0.01, "({k}, {l}): {error}");
     }
 }
+
+#[test]
+fn a_pull_off_contact_the_grid_does_not_resolve_is_refused() {
+    // Johnson's sinusoid on 64 lines of cells per wavelength with small
+    // adhesion parameters: pull-off contacts 1.2, 2.2 and 3.5 lines wide.
+    // The branch came out -32 % (2.2 lines) and -4.6 % (3.5) without a
+    // word; now each pull-off is refused, while 4.4 lines (the wavy test
+    // above) are accepted at -5.1 %.
+    let (n, side) = (64, 64e-5);
+    for alpha in [0.02, 0.05, 0.1] {
+        let estar = rubber().contact_modulus();
+        let amplitude = (2.0 * side * WORK / (PI * PI * estar)).sqrt() / alpha;
+        let exact = JkrSinusoid::new(&rubber(), side, amplitude, WORK).unwrap();
+        let (_, half_width) = exact.pull_off().unwrap();
+        assert!(2.0 * half_width / side * n as f64 <= 3.6);
+        let grid = Grid::square(n, side).unwrap();
+        let (map, mut solver) = sampled(grid, Boundary::Periodic, |x, _| {
+            amplitude * (1.0 - (2.0 * PI * x / side).cos())
+        });
+        let target = exact.mean_pressure(0.6 * side / PI) * side * side;
+        let branches = solver
+            .adhesive_branches(&map, Reach::Force(target), WORK, WORK, &mut ())
+            .unwrap();
+        let peak = branches.at_force(target, 0.0).unwrap();
+        let pull_off = branches.pull_off(peak.contact_area);
+        assert!(
+            matches!(pull_off, Err(Error::Unsupported { .. })),
+            "{alpha}: {pull_off:?}"
+        );
+    }
+}

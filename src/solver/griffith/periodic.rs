@@ -101,6 +101,16 @@ impl ContactSolver {
     }
 }
 
+impl ContactSolver {
+    /// The area of one line of cells of a strip family (m^2): a row or a
+    /// column of the grid, the longer (exact for lines along the grid and,
+    /// on square grids, along its diagonals and two cells by one).
+    pub(super) fn line_area(&self) -> f64 {
+        let grid = *self.grid();
+        grid.rows().max(grid.columns()) as f64 * grid.cell_area()
+    }
+}
+
 /// The 4-neighbours of cell `c`, wrapping round a periodic grid.
 fn neighbours(c: usize, rows: usize, columns: usize, periodic: bool) -> [Option<usize>; 4] {
     if !periodic {
