@@ -10,12 +10,12 @@ use layered_contact::indenter::{HeightMap, Paraboloid};
 use layered_contact::scene::{
     Adhesion, Caveat, IndenterSpec, Protocol, Resolution, Scene, SubstrateSpec, Tilt,
 };
-use layered_contact::solver::{ContactSolver, Reach, SolverParams, EDGE_SHIFT};
-use layered_contact::{Boundary, Error, Grid, Substrate};
+use layered_contact::solver::{ContactSolver, Reach, EDGE_SHIFT};
+use layered_contact::{Boundary, Error, Grid};
 
 mod common;
 
-use common::rubber_sphere::{rubber, E, NU, RADIUS, WORK};
+use common::rubber_sphere::{rubber, rubber_solver, E, NU, RADIUS, WORK};
 
 /// `heights(x, y)` sampled at the cell centres of `grid`, and a solver for
 /// the rubber half-space on that grid.
@@ -31,13 +31,7 @@ fn sampled(
             heights(x, y)
         })
         .collect();
-    let solver = ContactSolver::new(
-        &Substrate::half_space(rubber()),
-        &grid,
-        boundary,
-        SolverParams::default(),
-    )
-    .unwrap();
+    let solver = rubber_solver(&grid, boundary);
     (HeightMap::new(grid, values).unwrap(), solver)
 }
 
@@ -260,13 +254,7 @@ fn a_wavy_surface_with_two_troughs_is_refused_not_truncated() {
                 .collect();
             HeightMap::new(grid, values).unwrap()
         };
-        let mut solver = ContactSolver::new(
-            &Substrate::half_space(rubber()),
-            &grid,
-            Boundary::Periodic,
-            SolverParams::default(),
-        )
-        .unwrap();
+        let mut solver = rubber_solver(&grid, Boundary::Periodic);
         let two = solver.adhesive_branches(&map(2.0), Reach::Depth(0.5 * h0), WORK, WORK, &mut ());
         assert!(
             matches!(two, Err(Error::Unsupported { .. })),

@@ -7,12 +7,12 @@ use std::f64::consts::PI;
 
 use layered_contact::analytic::JkrSinusoid;
 use layered_contact::indenter::HeightMap;
-use layered_contact::solver::{ContactSolver, Reach, SolverParams};
-use layered_contact::{Boundary, Grid, Substrate};
+use layered_contact::solver::Reach;
+use layered_contact::{Boundary, Grid};
 
 mod common;
 
-use common::rubber_sphere::{rubber, WORK};
+use common::rubber_sphere::{rubber, rubber_solver, WORK};
 
 /// The relative error of the pull-off (mean pressure) of a sinusoid with
 /// Johnson's `alpha` on an `n x n` periodic grid, its wave vector `(k, l)`
@@ -37,13 +37,7 @@ fn sinusoid_pull_off(n: usize, wave: (usize, usize), alpha: f64) -> f64 {
         })
         .collect();
     let map = HeightMap::new(grid, values).unwrap();
-    let mut solver = ContactSolver::new(
-        &Substrate::half_space(rubber()),
-        &grid,
-        Boundary::Periodic,
-        SolverParams::default(),
-    )
-    .unwrap();
+    let mut solver = rubber_solver(&grid, Boundary::Periodic);
     // Loaded to strips 0.38 of the period wide (psi = 0.6).
     let area = side * side;
     let target = exact.mean_pressure(0.6 * wavelength / PI) * area;

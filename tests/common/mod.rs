@@ -122,4 +122,18 @@ pub mod rubber_sphere {
     pub fn rubber() -> Material {
         Material::new(E, NU).unwrap()
     }
+
+    /// A solver for the rubber half-space on `grid`.
+    pub fn rubber_solver(
+        grid: &layered_contact::Grid,
+        boundary: layered_contact::Boundary,
+    ) -> layered_contact::solver::ContactSolver {
+        layered_contact::solver::ContactSolver::new(
+            &layered_contact::Substrate::half_space(rubber()),
+            grid,
+            boundary,
+            layered_contact::solver::SolverParams::default(),
+        )
+        .unwrap()
+    }
 }
