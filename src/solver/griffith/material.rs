@@ -65,22 +65,6 @@ impl EdgeForces {
     ) -> Self {
         let n = pair.attached.len();
         let area = delta * delta;
-        let step = |c: usize, axis: usize, forward: bool| -> Option<usize> {
-            let (i, j) = (c / columns, c % columns);
-            let (index, period) = if axis == 0 { (i, rows) } else { (j, columns) };
-            let moved = match (forward, periodic) {
-                (true, _) if index + 1 < period => index + 1,
-                (true, true) => 0,
-                (false, _) if index > 0 => index - 1,
-                (false, true) => period - 1,
-                _ => return None,
-            };
-            Some(if axis == 0 {
-                moved * columns + j
-            } else {
-                i * columns + moved
-            })
-        };
         let height = |c: usize| pair.profile[c] - pair.lowest;
         let mut forces = EdgeForces {
             rows,
@@ -92,10 +76,9 @@ impl EdgeForces {
             if !pair.attached[c] {
                 continue;
             }
-            let around = [
-                [step(c, 0, false), step(c, 0, true)],
-                [step(c, 1, false), step(c, 1, true)],
-            ];
+            // Back and front along the rows, then along the columns.
+            let [up, down, left, right] = super::periodic::neighbours(c, rows, columns, periodic);
+            let around = [[up, down], [left, right]];
             let edge = around
                 .iter()
                 .flatten()

@@ -112,7 +112,12 @@ impl ContactSolver {
 }
 
 /// The 4-neighbours of cell `c`, wrapping round a periodic grid.
-fn neighbours(c: usize, rows: usize, columns: usize, periodic: bool) -> [Option<usize>; 4] {
+pub(super) fn neighbours(
+    c: usize,
+    rows: usize,
+    columns: usize,
+    periodic: bool,
+) -> [Option<usize>; 4] {
     if !periodic {
         return crate::solver::neighbours(c, rows, columns);
     }
