@@ -158,7 +158,7 @@ impl ContactSolver {
         let strip = self.strip_tolerance();
         for _ in 0..=MAX_WIDENINGS {
             let top = order.partition_point(|&(c, _)| self.workspace.profile[c] - lowest <= level);
-            let (usable, kept) = self.usable_prefix(&order, top);
+            let (usable, kept) = self.usable_prefix(&order, top, strip);
             if usable < MIN_CELLS + 4 && periodic && !kept {
                 return Err(half_period_error());
             }
@@ -169,7 +169,6 @@ impl ContactSolver {
                 });
             }
             let capped = kept && usable == order.len();
-            let discs = !periodic && self.family_is_discs(&order[..usable]);
             let (raw, iterations, residual) =
                 self.solve_family(&order, usable, lowest, Shape { strip }, observer)?;
             let mut branches = match AdhesiveBranches::new(
@@ -209,6 +208,7 @@ impl ContactSolver {
             if fits {
                 branches.order = order[..usable].iter().map(|&(c, _)| c).collect();
                 // Discs and strips release evenly along their edges.
+                let discs = !periodic && self.family_is_discs(&order[..usable]);
                 branches.edge_averaged = !discs && strip.is_none();
                 if strip.is_some() {
                     branches.least_area = MIN_STRIP_LINES as f64 * self.line_area();

@@ -29,13 +29,18 @@ impl ContactSolver {
     /// before the first cell that would make a set span more than half the
     /// period along a row or a column (measured from the family's first
     /// cell across the periodic boundary), so that no set meets its images;
-    /// for strips ([`strip_tolerance`](Self::strip_tolerance)), at half the
-    /// period's area, at the end of a line. Also says whether `top` was
+    /// for strips (`strip`, the tolerance of
+    /// [`strip_tolerance`](Self::strip_tolerance)), at half the period's
+    /// area, at the end of a line. Also says whether `top` was
     /// kept.
-    pub(super) fn usable_prefix(&self, order: &[(usize, f64)], top: usize) -> (usize, bool) {
+    pub(super) fn usable_prefix(
+        &self,
+        order: &[(usize, f64)],
+        top: usize,
+        strip: Option<f64>,
+    ) -> (usize, bool) {
         let grid = *self.grid();
         let (rows, columns) = (grid.rows(), grid.columns());
-        let strip = self.strip_tolerance();
         let first = match (self.operator.boundary(), strip) {
             (crate::grid::Boundary::Isolated, _) => order[..top]
                 .iter()
@@ -99,9 +104,7 @@ impl ContactSolver {
         });
         invariant.then_some(tolerance)
     }
-}
 
-impl ContactSolver {
     /// The area of one line of cells of a strip family (m^2): a row or a
     /// column of the grid, the longer (exact for lines along the grid and,
     /// on square grids, along its diagonals and two cells by one).
