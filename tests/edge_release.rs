@@ -185,7 +185,7 @@ fn tilted_punch_release_follows_the_moment() {
 /// The JKR sphere's contact, a disc of `cells` across centred at `offset`
 /// (in cells) from the axis, at the depth of the pull-off: release rates
 /// against the exact `(P1 - P)^2 / (8 pi E* a^3)`.
-fn offset_sphere(cells: usize, offset: (f64, f64)) -> (f64, f64) {
+fn offset_sphere(cells: usize, offset: (f64, f64), window: f64) -> (f64, f64) {
     let delta = 1e-5;
     let a0 = 0.5 * cells as f64 * delta;
     let n = 3 * cells + 8;
@@ -200,7 +200,7 @@ fn offset_sphere(cells: usize, offset: (f64, f64)) -> (f64, f64) {
     let a = (m / PI).sqrt() * delta - 0.117 * delta;
     let depth = a * a / RADIUS - (2.0 * PI * a * WORK / estar()).sqrt();
     let edge = s
-        .edge_release(&shifted, depth, &contact, EDGE_WINDOW)
+        .edge_release(&shifted, depth, &contact, window)
         .unwrap();
     let exact = estar() * (depth - a * a / RADIUS).powi(2) / (2.0 * PI * a);
     let (mut worst, mut mean) = (0.0f64, 0.0);
@@ -240,13 +240,32 @@ fn jkr_sphere_off_the_cell_centres() {
     for offset in [(0.0, 0.0), (0.3, 0.45), (0.5, 0.5)] {
         let errors: Vec<(f64, f64)> = [16, 32, 64]
             .iter()
-            .map(|&cells| offset_sphere(cells, offset))
+            .map(|&cells| offset_sphere(cells, offset, EDGE_WINDOW))
             .collect();
         println!("sphere {offset:?}: {errors:?}");
         let order = (errors[0].1 / errors[2].1).abs().log2() / 2.0;
         assert!(order > 0.9, "{offset:?}: order {order}");
         assert!(errors[2].1.abs() < 8e-3, "{errors:?}");
         assert!(errors[2].0 < 0.11, "{errors:?}");
+    }
+}
+
+#[test]
+fn larger_discs_level_off_and_their_facets_need_wider_windows() {
+    // Measured (BENCHMARKS.md, disc moved by (0.3, 0.45) cells): with the
+    // window fixed at 8 cells the worst point grows with the disc (9.5,
+    // 14.5, 19.3 % at 64, 128, 256 cells across), since the digital disc's
+    // facets grow like the square root of its radius; with a quarter of the
+    // contact's width it falls (4.6, 4.1, 3.3 %). The mean levels at about
+    // -0.4 % (-0.67, -0.45, -0.38 %): the bound below holds it there, and
+    // the worst-point bounds are 1.3 times the measured values.
+    let fixed = offset_sphere(128, (0.3, 0.45), EDGE_WINDOW);
+    let wide = offset_sphere(128, (0.3, 0.45), 32.0);
+    println!("128 cells: window 8 {fixed:?}, window 32 {wide:?}");
+    assert!(fixed.0 > 0.12, "{fixed:?}");
+    assert!(wide.0 < 0.055, "{wide:?}");
+    for (_, mean) in [fixed, wide] {
+        assert!((-6e-3..-3e-3).contains(&mean), "{mean}");
     }
 }
 
