@@ -199,9 +199,7 @@ fn offset_sphere(cells: usize, offset: (f64, f64), window: f64) -> (f64, f64) {
     let m = contact.iter().filter(|&&c| c).count() as f64;
     let a = (m / PI).sqrt() * delta - 0.117 * delta;
     let depth = a * a / RADIUS - (2.0 * PI * a * WORK / estar()).sqrt();
-    let edge = s
-        .edge_release(&shifted, depth, &contact, window)
-        .unwrap();
+    let edge = s.edge_release(&shifted, depth, &contact, window).unwrap();
     let exact = estar() * (depth - a * a / RADIUS).powi(2) / (2.0 * PI * a);
     let (mut worst, mut mean) = (0.0f64, 0.0);
     for p in &edge.points {

@@ -4,7 +4,7 @@
 //! | group | what | source |
 //! |---|---|---|
 //! | [`lambda`](mod@lambda) | `Lambda(u)`, `Lambda_g(t)`, the moments `a_m` | Perriot & Barthel (2004); Lyashenko, Popov & Borysiuk (2023) |
-//! | [`series`] | flat punch on a layer over a rigid base, Eq. (5) | Lyashenko, Popov & Borysiuk (2023) |
+//! | [`series`] | flat punch and paraboloid on a layer over a rigid base: small-indentation series | Lyashenko, Popov & Borysiuk (2023); exact paraboloid series, compared with Dimitriadis et al. (2002) |
 //! | [`BoussinesqPunch`], [`JkrFlatPunch`] | flat punch on a half-space, with Kendall adhesion | Boussinesq (1885); Kendall (1971) |
 //! | [`Hertz`] | sphere (paraboloid) on a half-space | Hertz (1882); Johnson (1985) |
 //! | [`JkrSphere`] | adhesive sphere on a half-space | Johnson, Kendall & Roberts (1971) |
@@ -44,7 +44,10 @@ pub use jkr::JkrSphere;
 pub use lambda::{a_m, lambda, lambda_g};
 pub use layered_jkr::LayeredJkrCycle;
 pub use punch::{BoussinesqPunch, JkrFlatPunch};
-pub use series::{PunchStiffnessSeries, SeriesStiffness};
+pub use series::{
+    truncated_series, ParaboloidForceSeries, PunchStiffnessSeries, SeriesStiffness,
+    DIMITRIADIS_BONDED,
+};
 pub use sinusoid::JkrSinusoid;
 
 /// `x` clamped at zero from below, with NaN kept NaN (`f64::max` would turn

@@ -1,5 +1,5 @@
-//! The stiffness series of a flat cylindrical punch on a layer bonded to a
-//! rigid base.
+//! Small-indentation ("bottom-effect") series on a layer bonded to a rigid
+//! base: the flat punch's stiffness and the paraboloid's force.
 //!
 //! With `eps = a/h` (punch radius over layer thickness), Eq. 5 of Lyashenko,
 //! Popov & Borysiuk (2023, Lubricants 11, 84):
@@ -10,6 +10,24 @@
 //! ```
 //!
 //! with the moments `a0`, `a1` of [`a_m`](super::a_m()).
+//!
+//! For a paraboloid of tip radius `R` at depth `d`, with `chi = sqrt(R d)/h`
+//! and `c = 2 a0 / pi`, the exact expansion of the same integral equation
+//! ([`ParaboloidForceSeries`]) is
+//!
+//! ```text
+//! F / F_Hertz = 1 + c chi + (7/6) c^2 chi^2 + [(40/27) c^3 + 32 a1/(15 pi)] chi^3
+//!                 + [(143/72) c^4 + 32 c a1/(5 pi)] chi^4 + O(chi^5).
+//! ```
+//!
+//! Dimitriadis et al. (2002, Biophys. J. 82, 2798), whose series AFM users
+//! fit, wrote the same expansion with the punch's factors (1 in place of
+//! 7/6, 40/27 and 143/72; 24/(5 pi) in place of 32/(5 pi)) and with `a0`,
+//! `a1` from polynomial fits in `nu`: their bonded coefficients at
+//! `nu = 0.5`, [`DIMITRIADIS_BONDED`], are 1.133, 1.283, 0.769, 0.0975
+//! where the exact ones are 1.1270, 1.4817, 1.4700, 1.0047
+//! ([`doc::bottom_effect`](crate::doc::bottom_effect) has where each series
+//! leaves the exact curve).
 //!
 //! # Range of validity
 //!
@@ -130,4 +148,70 @@ impl PunchStiffnessSeries {
             stiffness: ratio * 2.0 * radius * self.contact_modulus,
         })
     }
+}
+
+/// The bonded-layer coefficients of Dimitriadis et al. (2002, Biophys. J.
+/// 82, 2798, Eq. 12 at `nu = 0.5`): `F / F_Hertz = 1 + 1.133 chi + 1.283
+/// chi^2 + 0.769 chi^3 + 0.0975 chi^4`, `chi = sqrt(R d)/h`, as AFM software
+/// fits them. Kept to compare with; the exact coefficients are those of
+/// [`ParaboloidForceSeries`].
+pub const DIMITRIADIS_BONDED: [f64; 4] = [1.133, 1.283, 0.769, 0.0975];
+
+/// The force of a paraboloid pressed into a layer bonded to a rigid base,
+/// expanded in `chi = sqrt(R d)/h` to fourth order: the exact small-
+/// indentation series (see the [module docs](self)).
+///
+/// ```
+/// use layered_contact::analytic::ParaboloidForceSeries;
+///
+/// // An incompressible layer (cells, gels): 1 + 1.1270 chi + 1.4817 chi^2 + ...
+/// let c = ParaboloidForceSeries::new(0.5)?.coefficients();
+/// assert!((c[0] - 1.1269549993).abs() < 1e-9);
+/// assert!((c[1] / (c[0] * c[0]) - 7.0 / 6.0).abs() < 1e-14);
+/// Ok::<(), layered_contact::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ParaboloidForceSeries {
+    coefficients: [f64; 4],
+}
+
+impl ParaboloidForceSeries {
+    /// The series for a layer of Poisson ratio `poisson_ratio` on a rigid
+    /// base.
+    ///
+    /// # Errors
+    /// [`Error::InvalidPoissonRatio`](crate::Error::InvalidPoissonRatio) if
+    /// `poisson_ratio` is outside `[0, 0.5]`.
+    pub fn new(poisson_ratio: f64) -> Result<Self> {
+        use std::f64::consts::PI;
+        let (a0, a1) = (a_m(0, poisson_ratio)?, a_m(1, poisson_ratio)?);
+        let c = 2.0 * a0 / PI;
+        Ok(ParaboloidForceSeries {
+            coefficients: [
+                c,
+                7.0 / 6.0 * c * c,
+                40.0 / 27.0 * c.powi(3) + 32.0 * a1 / (15.0 * PI),
+                143.0 / 72.0 * c.powi(4) + 32.0 * c * a1 / (5.0 * PI),
+            ],
+        })
+    }
+
+    /// The coefficients of `chi`, `chi^2`, `chi^3`, `chi^4`.
+    pub fn coefficients(&self) -> [f64; 4] {
+        self.coefficients
+    }
+
+    /// `F / F_Hertz` at `chi = sqrt(R d)/h` by the truncated series (for any
+    /// `chi`: it is an expansion, and leaves the exact force by 5 % near
+    /// `chi = 0.5`, see [`doc::bottom_effect`](crate::doc::bottom_effect)).
+    pub fn ratio_at(&self, chi: f64) -> f64 {
+        truncated_series(&self.coefficients, chi)
+    }
+}
+
+/// `1 + c[0] x + c[1] x^2 + c[2] x^3 + c[3] x^4`: a bottom-effect series
+/// such as [`DIMITRIADIS_BONDED`] at `x`.
+pub fn truncated_series(coefficients: &[f64; 4], x: f64) -> f64 {
+    1.0 + x
+        * (coefficients[0] + x * (coefficients[1] + x * (coefficients[2] + x * coefficients[3])))
 }

@@ -3,6 +3,7 @@
 //! * [`conventions`]: units, signs, names.
 //! * [`theory`]: the coating factor, the Green's function and the influence coefficients.
 //! * [`axisymmetric`]: the exact axisymmetric solutions and their Fredholm equation.
+//! * [`bottom_effect`]: the small-indentation series AFM users fit against the exact solution.
 //! * [`multilayer`]: stacks of bonded layers: the recursion for the coating factor, and how the kernels split it by interface.
 //! * [`adhesion`]: the two JKR adhesion methods, energy balance and mesh criterion, and the local release rates along an edge.
 //! * [`accuracy`]: what each part achieves, and what it costs.
@@ -11,6 +12,7 @@
 pub mod accuracy;
 pub mod adhesion;
 pub mod axisymmetric;
+pub mod bottom_effect;
 pub mod conventions;
 pub mod multilayer;
 pub mod reliability;

@@ -1,0 +1,76 @@
+//! Bottom-effect corrections: what the series AFM users fit get right, and
+//! where they leave the exact curve.
+//!
+//! Indenting a soft sample of thickness `h` on a stiff support (a cell or a
+//! gel on glass, a polymer film on silicon), the force rises above Hertz's
+//! as soon as the contact feels the support. AFM analysis multiplies Hertz
+//! by a truncated series in `chi = sqrt(R d)/h` (Dimitriadis et al. 2002,
+//! Biophys. J. 82, 2798) and keeps indentations below about a tenth of the
+//! thickness. This crate solves the axisymmetric problem exactly at any
+//! depth ([`Axisymmetric`](crate::analytic::Axisymmetric)), so the series
+//! can be checked term by term, and the whole curve fitted instead.
+//!
+//! # The exact series
+//!
+//! Expanding the integral equation of
+//! [`doc::axisymmetric`](crate::doc::axisymmetric) for a small contact, the
+//! layer's kernel enters through its moments `a0`, `a1`
+//! ([`a_m`](crate::analytic::a_m()), Lyashenko, Popov & Borysiuk 2023). The
+//! flat punch's stiffness is their Eq. 5
+//! ([`PunchStiffnessSeries`](crate::analytic::PunchStiffnessSeries)); the
+//! paraboloid's force, with `c = 2 a0 / pi`, is
+//! ([`ParaboloidForceSeries`](crate::analytic::ParaboloidForceSeries))
+//!
+//! ```text
+//! F / F_Hertz = 1 + c chi + (7/6) c^2 chi^2 + [(40/27) c^3 + 32 a1/(15 pi)] chi^3
+//!                 + [(143/72) c^4 + 32 c a1/(5 pi)] chi^4 + O(chi^5).
+//! ```
+//!
+//! The second-order factor 7/6 follows by hand. To that order the kernel's
+//! correction is a constant: the layer shifts the whole contact by a
+//! displacement proportional to the force, `d = d_0(a) - (c/2) F / (E* h)`
+//! with the half-space's `d_0(a)` at the same pressure. For the punch
+//! (`F = 2 E* a d_0`) that gives `F = 2 E* a d / (1 - c a/h)`, the series'
+//! `1 + c eps + c^2 eps^2`; for the paraboloid (`F = 4 E* a^3 / (3R)`,
+//! `d_0 = a^2/R`), `(F / F_Hertz)(chi) = (1 - x)^(-3/2)` with
+//! `x = (2/3) c a/h` and `a/h = chi (1 - x)^(-1/2)`, whose expansion is
+//! `1 + c chi + (7/6) c^2 chi^2`. The rational factors of the
+//! third and fourth orders were identified from exact solutions at four
+//! Poisson ratios (0, 0.3, 0.45, 0.5) and then checked: the series'
+//! coefficients agree with least-squares fits of the exact forces at
+//! `chi <= 0.1` to 1e-9, 3e-8, 1e-6 and 2e-4 (the fits' own precision) at
+//! every ratio (`tests/bottom_effect.rs`).
+//!
+//! At `nu = 0.5` (bonded, rigid support):
+//!
+//! | | `chi` | `chi^2` | `chi^3` | `chi^4` |
+//! |---|---|---|---|---|
+//! | exact | 1.1270 | 1.4817 | 1.4700 | 1.0047 |
+//! | Dimitriadis et al. (2002) | 1.133 | 1.283 | 0.769 | 0.0975 |
+//!
+//! Dimitriadis' series has the structure of the punch's (its `chi^2`
+//! coefficient is the square of the first, where the paraboloid's is 7/6 of
+//! it; its `chi^3` and `chi^4` terms carry the factors 1 and `24/(5 pi)`
+//! where the paraboloid's carry 40/27, 143/72 and `32/(5 pi)`), and its
+//! `a0`, `a1` come from polynomial fits in `nu` (0.5 % and 5 % off at
+//! `nu = 0.5`). The unbonded coefficients of the same paper need a
+//! frictionless interface, which this crate does not model yet.
+//!
+//! # Where each truncated series leaves the exact curve
+//!
+//! Paraboloid on an incompressible layer bonded to a rigid base, `R = h`
+//! (then `d/h = chi^2`; for other tips `d/h = chi^2 h / R`), measured by
+//! `tests/bottom_effect.rs`:
+//!
+//! | model | 5 % off at `chi` (`d/h`) | 20 % off at `chi` (`d/h`) | at `chi = 0.19` | at 0.38 | at 0.68 |
+//! |---|---|---|---|---|---|
+//! | Hertz | 0.044 (0.0019) | 0.174 (0.030) | -21 % | -43 % | -67 % |
+//! | Dimitriadis et al. (2002) | 0.398 (0.158) | 5.9 (35) | -0.9 % | -4.6 % | -12 % |
+//! | exact series, 4th order | 0.692 (0.48) | 1.018 (1.04) | 0.00 % | +0.27 % | +4.8 % |
+//!
+//! The exact force at `chi` = 0.19, 0.38, 0.68 is 1.27, 1.74, 3.01 times
+//! Hertz's. Dimitriadis' series stays within 20 % to large depths only
+//! because its missing second-order force and its quartic's growth cancel
+//! there; its error at moderate depths is what a modulus fitted with it
+//! carries. Beyond the series' range, fit the exact curve
+//! ([`Axisymmetric`](crate::analytic::Axisymmetric)).
