@@ -18,6 +18,7 @@ use std::time::{Duration, Instant};
 use layered_contact as lc;
 
 mod adhesion;
+mod curves;
 
 create_exception!(
     layered_contact,
@@ -932,6 +933,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(flat_punch_stiffness, m)?)?;
     m.add_function(wrap_pyfunction!(paraboloid_pull_off_force, m)?)?;
     m.add_function(wrap_pyfunction!(paraboloid_state, m)?)?;
+    m.add_function(wrap_pyfunction!(curves::paraboloid_terms, m)?)?;
     m.add_function(wrap_pyfunction!(flat_punch_pull_off_force, m)?)?;
     Ok(())
 }

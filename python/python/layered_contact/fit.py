@@ -1,0 +1,369 @@
+"""Fit measured force-indentation curves with the exact models of a coated
+body: the Young's modulus, the work of adhesion and the contact point of a
+sample of known thickness on a known support.
+
+The model is the exact axisymmetric solution of the Rust crate
+(``analytic::Axisymmetric``: the Fredholm equation of the layered body,
+see its ``doc::axisymmetric``), not a truncated bottom-effect series:
+
+* a **paraboloid** (a sphere of tip radius ``R`` at small depths) on a
+  layer bonded to a rigid or an elastic support, or on a half-space, with
+  JKR adhesion (Johnson, Kendall & Roberts 1971, on the layered body as in
+  Maugis 2000: at each contact radius ``a`` the depth is
+  ``d = d0(a) - sqrt(2 pi a w / E*) / psi1(a)`` and the force
+  ``F = F0(a) + K(a) (d - d0(a))``, with the non-adhesive state
+  ``d0, F0``, the punch stiffness ``K`` and edge factor ``psi1``);
+* a **flat punch** of radius ``R``, bonded (Kendall 1971): ``F = K d``
+  until it detaches at ``d = -sqrt(2 pi R w / E*) / psi1``.
+
+The approach segment is fitted without adhesion (``F = 0`` before contact),
+the retract segment with it, along the fixed-grips branch: points past the
+detachment (``F = 0``) count as detached. Indentation is ``z - z0`` with the
+fitted contact point ``z0``, the shift of the depth axis of the reference
+experiment. Least squares by :func:`scipy.optimize.curve_fit`; standard
+errors from its covariance.
+
+A model evaluation on a rigid support (or a half-space) is an interpolation
+of tables computed once per fit, since the layered solution depends on the
+modulus only through ``E*``; on an elastic support the tables are rebuilt
+for each modulus tried (the layer-to-support contrast changes).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Dict, Optional, Sequence
+
+import numpy as np
+
+from . import _native
+from ._native import ConvergenceError, InvalidInputError, Material, Substrate
+
+__all__ = ["Sample", "CurveModel", "FitResult", "fit_curve"]
+
+# Contact radii of the tables, from this fraction of the largest up to it.
+_SMALLEST_RADIUS = 1e-3
+_TABLE_POINTS = 400
+# Attempts to widen the tables until they cover the deepest indentation.
+_WIDENINGS = 24
+# Safeguarded Newton steps that find a depth's contact radius in its table
+# interval (bisection where Newton leaves it): 1e-12 of the interval in
+# the tests' curves after 6.
+_NEWTON_STEPS = 8
+# Model evaluations a fit may take (the tests' fits take 15 to 80).
+_MAX_CALLS = 2000
+
+
+@dataclass(frozen=True)
+class Sample:
+    """The indented body: a layer of ``thickness`` (m) and Poisson ratio
+    ``poisson_ratio`` bonded to a support, rigid if ``base_youngs_modulus``
+    is ``None``; a half-space if ``thickness`` is ``None``."""
+
+    thickness: Optional[float] = None
+    poisson_ratio: float = 0.5
+    base_youngs_modulus: Optional[float] = None
+    base_poisson_ratio: float = 0.3
+
+    def substrate(self, youngs_modulus: float) -> Substrate:
+        """The layered body for a layer of modulus ``youngs_modulus`` (Pa)."""
+        layer = Material(youngs_modulus, self.poisson_ratio)
+        if self.thickness is None:
+            return Substrate.half_space(layer)
+        if self.base_youngs_modulus is None:
+            return Substrate.layer_on_rigid_base(layer, self.thickness)
+        base = Material(self.base_youngs_modulus, self.base_poisson_ratio)
+        return Substrate.layer_on_elastic_base(layer, self.thickness, base)
+
+    def contact_modulus(self, youngs_modulus: float) -> float:
+        """``E* = E / (1 - nu^2)`` of the layer, Pa."""
+        return youngs_modulus / (1.0 - self.poisson_ratio**2)
+
+    @property
+    def scales_with_modulus(self) -> bool:
+        """Whether the force is proportional to the layer's modulus at fixed
+        ``w / E*`` (a half-space or a rigid support)."""
+        return self.base_youngs_modulus is None
+
+
+class CurveModel:
+    """The exact force (N) against indentation (m) of one tip on one sample.
+
+    ``tip`` is ``"paraboloid"`` (``radius``: tip radius) or
+    ``"flat_punch"`` (``radius``: punch radius). ``max_depth`` (m) is the
+    deepest indentation the model must reach.
+    """
+
+    def __init__(self, tip: str, radius: float, sample: Sample, max_depth: float):
+        if tip not in ("paraboloid", "flat_punch"):
+            raise InvalidInputError(f"tip {tip!r}: expected 'paraboloid' or 'flat_punch'")
+        if not (np.isfinite(radius) and radius > 0.0):
+            raise InvalidInputError(f"radius {radius}: expected a positive length (m)")
+        if not (np.isfinite(max_depth) and max_depth > 0.0):
+            raise InvalidInputError(f"max_depth {max_depth}: expected a positive length (m)")
+        self.tip = tip
+        self.radius = float(radius)
+        self.sample = sample
+        self.max_depth = float(max_depth)
+        self.calls = 0
+        self._tables: Dict[float, tuple] = {}
+
+    def _table(self, youngs_modulus: float) -> tuple:
+        """(E* of the table, contact radii, d0, F0, K, psi1), cached."""
+        key = 1.0 if self.sample.scales_with_modulus else youngs_modulus
+        if key in self._tables:
+            return self._tables[key]
+        substrate = self.sample.substrate(key)
+        if self.tip == "flat_punch":
+            a = np.array([self.radius])
+            stiffness = np.atleast_1d(_native.flat_punch_stiffness(substrate, a))
+            pull = _native.flat_punch_pull_off_force(substrate, self.radius, 1.0)
+            estar = self.sample.contact_modulus(key)
+            # Kendall on the layered body: pull-off K d_c with
+            # d_c = -sqrt(2 pi a w / E*) / psi1, so psi1 from w = 1.
+            dc = pull / stiffness[0]
+            psi1 = -np.sqrt(2.0 * np.pi * self.radius / estar) / dc
+            table = (estar, a, np.zeros(1), np.zeros(1), stiffness, np.array([psi1]))
+        else:
+            largest = np.sqrt(self.radius * self.max_depth)
+            for _ in range(_WIDENINGS):
+                a = largest * np.geomspace(_SMALLEST_RADIUS, 1.0, _TABLE_POINTS)
+                d0, f0, k, psi1 = _native.paraboloid_terms(substrate, self.radius, a)
+                if d0[-1] >= 1.05 * self.max_depth:
+                    break
+                largest *= 1.5
+            else:
+                raise InvalidInputError(
+                    f"max_depth {self.max_depth}: the exact solution does not reach it "
+                    "within the contact radii it covers"
+                )
+            table = (self.sample.contact_modulus(key), a, d0, f0, k, psi1)
+        self._tables[key] = table
+        return table
+
+    def force(
+        self,
+        indentation: Sequence[float],
+        youngs_modulus: float,
+        work_of_adhesion: float = 0.0,
+    ) -> np.ndarray:
+        """The force (N) at each indentation (m) for a layer of modulus
+        ``youngs_modulus`` (Pa) and work of adhesion ``work_of_adhesion``
+        (J/m^2; 0 for the approach), along the fixed-grips branch: 0 before
+        contact and after detachment."""
+        from scipy.interpolate import CubicSpline
+
+        self.calls += 1
+        depth = np.asarray(indentation, dtype=np.float64)
+        if not (np.isfinite(youngs_modulus) and youngs_modulus > 0.0):
+            raise InvalidInputError(f"youngs_modulus {youngs_modulus}: expected > 0 (Pa)")
+        if not (np.isfinite(work_of_adhesion) and work_of_adhesion >= 0.0):
+            raise InvalidInputError(f"work_of_adhesion {work_of_adhesion}: expected >= 0 (J/m^2)")
+        if depth.size and np.nanmax(depth) > self.max_depth:
+            raise InvalidInputError(
+                f"indentation {np.nanmax(depth)}: beyond the model's max_depth {self.max_depth}"
+            )
+        estar_table, a, d0, f0, k, psi1 = self._table(youngs_modulus)
+        estar = self.sample.contact_modulus(youngs_modulus)
+        scale = estar / estar_table
+        shift = np.sqrt(2.0 * np.pi * a * work_of_adhesion / estar) / psi1
+        d = d0 - shift
+        f = scale * (f0 - k * shift)
+        out = np.zeros_like(depth)
+        if self.tip == "flat_punch":
+            attached = depth >= d[0]
+            out[attached] = scale * k[0] * depth[attached]
+            return out
+        # The fixed-grips branch: from the smallest depth on, as functions
+        # of the contact radius (smooth there, where the force against the
+        # depth turns with an infinite slope at the branch's start); each
+        # depth's radius by safeguarded Newton steps on its table interval.
+        start = int(np.argmin(d)) if work_of_adhesion > 0.0 else 0
+        a, d, f = a[start:], d[start:], f[start:]
+        on = depth >= d[0]
+        if a.size >= 2 and on.any():
+            depth_of, force_of = CubicSpline(a, d), CubicSpline(a, f)
+            slope_of = depth_of.derivative()
+            target = depth[on]
+            k = np.clip(np.searchsorted(d, target) - 1, 0, a.size - 2)
+            lo, hi = a[k], a[k + 1]
+            x = lo + (hi - lo) * np.clip((target - d[k]) / (d[k + 1] - d[k]), 0.0, 1.0)
+            for _ in range(_NEWTON_STEPS):
+                miss = depth_of(x) - target
+                lo = np.where(miss < 0.0, x, lo)
+                hi = np.where(miss > 0.0, x, hi)
+                slope = slope_of(x)
+                step = np.where(slope > 0.0, miss / np.where(slope > 0.0, slope, 1.0), np.inf)
+                newton = x - step
+                x = np.where((newton >= lo) & (newton <= hi), newton, 0.5 * (lo + hi))
+            out[on] = force_of(x)
+        if work_of_adhesion == 0.0:
+            # Below the table's smallest contact: the half-space's power
+            # law F ~ d^(3/2), matched to the first entry.
+            small = (depth > 0.0) & (depth < d[0])
+            out[small] = f[0] * (depth[small] / d[0]) ** 1.5
+        return out
+
+
+@dataclass
+class FitResult:
+    """The outcome of :func:`fit_curve`: estimates and standard errors (SI
+    units: ``youngs_modulus`` Pa, ``work_of_adhesion`` J/m^2,
+    ``contact_point`` m), the model at the estimates, the residuals (N) and
+    the model evaluations the fit took."""
+
+    params: Dict[str, float]
+    stderr: Dict[str, float]
+    indentation: np.ndarray
+    force: np.ndarray
+    fitted: np.ndarray
+    residuals: np.ndarray
+    calls: int
+    model: CurveModel = field(repr=False)
+
+    @property
+    def rms(self) -> float:
+        """Root-mean-square residual, N."""
+        return float(np.sqrt(np.mean(self.residuals**2)))
+
+    def plot(self, ax=None):
+        """Data and fitted curve against the fitted indentation, and the
+        residuals (matplotlib, optional dependency). Returns the axes."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots()
+        depth = self.indentation - self.params.get("contact_point", 0.0)
+        ax.plot(depth * 1e6, self.force * 1e9, ".", ms=2, label="data")
+        order = np.argsort(depth)
+        ax.plot(depth[order] * 1e6, self.fitted[order] * 1e9, "-", label="exact model")
+        ax.set_xlabel("indentation (um)")
+        ax.set_ylabel("force (nN)")
+        text = ", ".join(
+            f"{k} = {v:.4g} +- {self.stderr[k]:.2g}" for k, v in self.params.items()
+        )
+        ax.set_title(text, fontsize=8)
+        ax.legend()
+        return ax
+
+
+def fit_curve(
+    indentation: Sequence[float],
+    force: Sequence[float],
+    *,
+    tip: str,
+    radius: float,
+    sample: Sample,
+    segment: str = "approach",
+    youngs_modulus: float,
+    work_of_adhesion: Optional[float] = None,
+    contact_point: float = 0.0,
+    vary: Sequence[str] = ("youngs_modulus", "work_of_adhesion", "contact_point"),
+) -> FitResult:
+    """Fit the exact model of ``tip`` (``"paraboloid"`` or ``"flat_punch"``,
+    of ``radius`` m) on ``sample`` to a measured curve.
+
+    ``indentation`` (m, piezo or tip position, increasing into the sample)
+    and ``force`` (N) are one segment: ``"approach"`` (fitted without
+    adhesion) or ``"retract"`` (with the work of adhesion, on the points
+    before the force, past its most tensile point, is back above half of
+    it: the jump off the sample of an AFM cantilever, or the end of a
+    fixed-grips curve's steep tail). ``youngs_modulus``
+    (Pa), ``work_of_adhesion`` (J/m^2, default 0) and ``contact_point`` (m)
+    are the starting values; the names in ``vary`` are fitted (the work of
+    adhesion only on a retract segment), the others held.
+    """
+    from scipy.optimize import curve_fit
+
+    z = np.asarray(indentation, dtype=np.float64).ravel()
+    f = np.asarray(force, dtype=np.float64).ravel()
+    if z.shape != f.shape or z.size < 4:
+        raise InvalidInputError(
+            f"indentation and force: {z.size} and {f.size} values; expected equal lengths, >= 4"
+        )
+    if not (np.all(np.isfinite(z)) and np.all(np.isfinite(f))):
+        raise InvalidInputError("indentation and force: expected finite values only")
+    if segment not in ("approach", "retract"):
+        raise InvalidInputError(f"segment {segment!r}: expected 'approach' or 'retract'")
+    unknown = set(vary) - {"youngs_modulus", "work_of_adhesion", "contact_point"}
+    if unknown:
+        raise InvalidInputError(f"vary: unknown names {sorted(unknown)}")
+    if segment == "retract":
+        # Up to the jump off the sample (after the most tensile point, the
+        # first point whose force is back above half of it): beyond it the
+        # cantilever is free and the points say nothing of the sample,
+        # while the model's detachment is a jump that least squares cannot
+        # straddle.
+        # The jump: the first point after the most tensile one whose force
+        # is back above half of it.
+        order = np.argsort(-z, kind="stable")
+        zs, fs = z[order], f[order]
+        lowest = int(np.argmin(fs))
+        after = np.nonzero(fs[lowest:] > 0.5 * fs[lowest])[0]
+        last = lowest + (after[0] - 1 if after.size else fs.size - 1 - lowest)
+        keep = z >= zs[last]
+        z, f = z[keep], f[keep]
+        if z.size < 4:
+            raise InvalidInputError(
+                "retract segment: fewer than 4 points before the pull-off (the most "
+                "tensile point); give the segment from the deepest point on"
+            )
+    w0 = 0.0 if work_of_adhesion is None else float(work_of_adhesion)
+    names = [n for n in ("youngs_modulus", "work_of_adhesion", "contact_point") if n in vary]
+    if segment == "approach" and "work_of_adhesion" in names:
+        names.remove("work_of_adhesion")
+        w0 = 0.0
+    if "work_of_adhesion" in names and w0 <= 0.0:
+        raise InvalidInputError(
+            "work_of_adhesion: give a positive starting value to fit it on a retract segment"
+        )
+    span = float(np.ptp(z)) or 1.0
+    # The model reaches past the deepest point by the contact point's range.
+    model = CurveModel(tip, radius, sample, max_depth=float(np.max(z) - contact_point) + span)
+    start = {"youngs_modulus": float(youngs_modulus), "work_of_adhesion": w0,
+             "contact_point": float(contact_point)}
+    # Fit in scaled units: moduli and works relative to their starting
+    # values, the contact point in units of the curve's span.
+    unit = {"youngs_modulus": start["youngs_modulus"], "work_of_adhesion": w0 or 1.0,
+            "contact_point": span}
+    lower = {"youngs_modulus": 1e-6, "work_of_adhesion": 0.0,
+             "contact_point": (contact_point - 0.5 * span) / span}
+    upper = {"youngs_modulus": 1e6, "work_of_adhesion": 1e6,
+             "contact_point": (contact_point + 0.5 * span) / span}
+
+    def values(p) -> Dict[str, float]:
+        out = dict(start)
+        for name, x in zip(names, p):
+            out[name] = x * unit[name]
+        return out
+
+    def evaluate(zz, *p):
+        v = values(p)
+        return model.force(zz - v["contact_point"], v["youngs_modulus"], v["work_of_adhesion"])
+
+    # Forces in units of the largest measured one: in newtons the gradient
+    # of the squared residuals is far below the optimiser's tolerances.
+    f_unit = float(np.max(np.abs(f))) or 1.0
+    p0 = [start[n] / unit[n] for n in names]
+    try:
+        popt, pcov = curve_fit(
+            lambda zz, *p: evaluate(zz, *p) / f_unit, z, f / f_unit, p0=p0,
+            bounds=([lower[n] for n in names], [upper[n] for n in names]),
+            method="trf", x_scale=1.0, max_nfev=_MAX_CALLS,
+        )
+    except RuntimeError as error:
+        raise ConvergenceError(
+            f"the fit did not converge within {_MAX_CALLS} model evaluations ({error}); "
+            "check the tip, the sample and the starting values"
+        ) from error
+    params = values(popt)
+    errors = np.sqrt(np.clip(np.diag(pcov), 0.0, np.inf)) if np.all(np.isfinite(pcov)) \
+        else np.full(len(names), np.inf)
+    stderr = {n: float(e * unit[n]) for n, e in zip(names, errors)}
+    for n in params:
+        stderr.setdefault(n, 0.0)
+    fitted = evaluate(z, *popt)
+    return FitResult(
+        params=params, stderr=stderr, indentation=z, force=f, fitted=fitted,
+        residuals=f - fitted, calls=model.calls, model=model,
+    )

@@ -1,0 +1,105 @@
+"""Fitting measured curves (layered_contact.fit) against the exact model:
+the fast tables against direct exact solutions, and fits of synthetic
+curves with 1 % noise (seeded) recovering the modulus and the work of
+adhesion where a Hertz/JKR half-space fit is off by a factor of several."""
+
+import numpy as np
+import pytest
+
+import layered_contact as lc
+from layered_contact import analytic
+from layered_contact.fit import CurveModel, Sample, fit_curve
+
+H, R, E, W, NU, Z0 = 4e-6, 5e-6, 10e3, 1e-3, 0.5, 1e-7
+LAYER = Sample(thickness=H, poisson_ratio=NU)
+
+
+def test_model_matches_the_exact_states():
+    # The tables are cubic splines over 400 contact radii: within 1e-6 of
+    # the exact state on the stable branch (measured: 2e-7 at its start,
+    # 1e-8 beyond).
+    model = CurveModel("paraboloid", R, LAYER, max_depth=3e-6)
+    substrate = LAYER.substrate(E)
+    for w in (0.0, W):
+        radii = np.linspace(0.9e-6, 3e-6, 9)
+        force, depth = analytic.paraboloid_state(substrate, R, w, radii)
+        got = model.force(depth, E, w)
+        np.testing.assert_allclose(got, force, rtol=1e-6)
+    # On a half-space the model is JKR's closed form.
+    half = CurveModel("paraboloid", R, Sample(poisson_ratio=NU), max_depth=3e-6)
+    material = lc.Material(E, NU)
+    force, depth = analytic.jkr_state(material, R, W, np.linspace(1e-6, 3e-6, 5))
+    np.testing.assert_allclose(half.force(depth, E, W), force, rtol=1e-6)
+
+
+def synthetic(segment, seed):
+    """A curve of the exact model to half the thickness, contact point Z0,
+    plus Gaussian noise of 1 % of the largest force."""
+    truth = CurveModel("paraboloid", R, LAYER, max_depth=2.5e-6)
+    z = np.linspace(0.5 * H + Z0, -0.8e-6 + Z0, 2000)
+    f = truth.force(z - Z0, E, W if segment == "retract" else 0.0)
+    rng = np.random.default_rng(seed)
+    return z, f + 0.01 * np.max(np.abs(f)) * rng.standard_normal(z.size)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_fits_recover_the_modulus_and_the_work_of_adhesion(seed):
+    for segment in ("approach", "retract"):
+        z, f = synthetic(segment, seed)
+        fit = fit_curve(z, f, tip="paraboloid", radius=R, sample=LAYER, segment=segment,
+                        youngs_modulus=5e3, work_of_adhesion=0.5e-3)
+        assert abs(fit.params["youngs_modulus"] / E - 1) < 0.01, fit.params
+        assert abs(fit.params["contact_point"] - Z0) < 0.02 * H, fit.params
+        # The standard error is the scatter's size: the truth within 4 of them.
+        assert abs(fit.params["youngs_modulus"] - E) < 4 * fit.stderr["youngs_modulus"]
+        if segment == "retract":
+            assert abs(fit.params["work_of_adhesion"] / W - 1) < 0.03, fit.params
+        # Hertz (JKR) on a half-space: the modulus off by more than twice.
+        hertz = fit_curve(z, f, tip="paraboloid", radius=R, sample=Sample(poisson_ratio=NU),
+                          segment=segment, youngs_modulus=5e3, work_of_adhesion=0.5e-3)
+        assert hertz.params["youngs_modulus"] > 2 * E, hertz.params
+
+
+def test_flat_punch_on_a_stiff_supported_layer():
+    # A bonded punch is linear: F = K d, K from the exact stiffness.
+    sample = Sample(thickness=H, poisson_ratio=0.3, base_youngs_modulus=1e9)
+    stiffness = analytic.flat_punch_stiffness(sample.substrate(E), R)
+    z = np.linspace(-0.2e-6, 1e-6, 50)
+    model = CurveModel("flat_punch", R, sample, max_depth=2e-6)
+    np.testing.assert_allclose(model.force(z, E), np.where(z > 0, stiffness * z, 0.0),
+                               rtol=1e-12, atol=0.0)
+    rng = np.random.default_rng(7)
+    f = model.force(z - 0.05e-6, E) * (1 + 0.01 * rng.standard_normal(z.size))
+    fit = fit_curve(z, f, tip="flat_punch", radius=R, sample=sample, youngs_modulus=3e4)
+    assert abs(fit.params["youngs_modulus"] / E - 1) < 0.01, fit.params
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    (dict(tip="cone"), "tip"),
+    (dict(segment="sideways"), "segment"),
+    (dict(vary=("thickness",)), "vary"),
+    (dict(segment="retract", work_of_adhesion=0.0), "work_of_adhesion"),
+])
+def test_bad_requests_are_refused(kwargs, match):
+    z, f = synthetic("retract", 0)
+    args = dict(tip="paraboloid", radius=R, sample=LAYER, youngs_modulus=5e3)
+    args.update(kwargs)
+    with pytest.raises(lc.InvalidInputError, match=match):
+        fit_curve(z, f, **args)
+    with pytest.raises(lc.InvalidInputError, match="finite"):
+        fit_curve(z, np.where(z > 0, np.nan, f), tip="paraboloid", radius=R, sample=LAYER,
+                  youngs_modulus=5e3)
+
+
+def test_the_example_goes_from_a_csv_to_the_film_properties(tmp_path, monkeypatch):
+    import importlib.util
+    import pathlib
+
+    path = pathlib.Path(__file__).parents[1] / "examples" / "fit_curve.py"
+    spec = importlib.util.spec_from_file_location("fit_curve_example", path)
+    example = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(example)
+    monkeypatch.chdir(tmp_path)
+    params = example.main([])  # writes and fits its synthetic curve
+    assert abs(params["youngs_modulus"] / E - 1) < 0.01
+    assert abs(params["work_of_adhesion"] / W - 1) < 0.03
