@@ -933,7 +933,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(flat_punch_stiffness, m)?)?;
     m.add_function(wrap_pyfunction!(paraboloid_pull_off_force, m)?)?;
     m.add_function(wrap_pyfunction!(paraboloid_state, m)?)?;
-    m.add_function(wrap_pyfunction!(curves::paraboloid_terms, m)?)?;
+    m.add_function(wrap_pyfunction!(curves::tip_terms, m)?)?;
+    m.add_function(wrap_pyfunction!(curves::tip_pull_off, m)?)?;
     m.add_function(wrap_pyfunction!(flat_punch_pull_off_force, m)?)?;
     Ok(())
 }

@@ -10,7 +10,7 @@
 //! | [`JkrSphere`] | adhesive sphere on a half-space | Johnson, Kendall & Roberts (1971) |
 //! | [`SneddonCone`] | conical punch on a half-space | Sneddon (1965) |
 //! | [`JkrSinusoid`] | adhesive wavy surface on a half-space, plane strain | Westergaard (1939); Johnson (1995) |
-//! | [`Axisymmetric`] | exact flat punch and paraboloid (JKR) on a coated half-space, by contact radius, depth or force | Fredholm equation, [`doc::axisymmetric`](crate::doc::axisymmetric) |
+//! | [`Axisymmetric`] | exact flat punch, paraboloid, sphere, cone and rounded cone ([`Tip`]), with JKR adhesion, on a coated half-space, by contact radius, depth or force | Fredholm equation, [`doc::axisymmetric`](crate::doc::axisymmetric) |
 //! | [`LayeredJkrCycle`] | exact loading and unloading of a paraboloid with adhesion hysteresis | Johnson, Kendall & Roberts (1971); Maugis (2000) |
 //!
 //! The half-space solutions of the punch and the cone carry their authors'
@@ -37,7 +37,9 @@ mod layered_jkr;
 mod punch;
 mod sinusoid;
 
-pub use axisymmetric::{Axisymmetric, ContactState, LayeredFlatPunch, LayeredParaboloid, PullOff};
+pub use axisymmetric::{
+    Axisymmetric, ContactState, LayeredFlatPunch, LayeredParaboloid, LayeredTip, PullOff, Tip,
+};
 pub use cone::SneddonCone;
 pub use hertz::Hertz;
 pub use jkr::JkrSphere;

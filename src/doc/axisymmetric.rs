@@ -71,6 +71,20 @@
 //! On a half-space `Lambda_g = 0`: `psi_1 = 1`, `psi_2 = xi^2`, and the
 //! formulas are Boussinesq's, Hertz's and JKR's.
 //!
+//! Any other tip ([`Tip`](crate::analytic::Tip): the sphere, `g = x
+//! atanh(x/R)`; the cone, `g = (pi/2) x cot(theta)`; the cone with a
+//! spherical apex, whose `g` has a kink where the two meet) enters through
+//! `phi = d psi_1 - psi_g`, `psi_g` the solution for the right-hand side
+//! `g(a xi)`. Split as `psi_g = g + chi`, only the smooth
+//! `chi = (I - K)^-1 K g` is discretised (with `K g` integrated piecewise
+//! between kinks), so the Nystrom rule keeps its exponential convergence;
+//! the order is doubled until `Integral psi_g` and `psi_g(1)` change by
+//! less than `1e-10`. The JKR edge condition and the force are as for the
+//! paraboloid, and an AFM cantilever of stiffness `k` jumps off where
+//! `dF/dd = -k` and jumps in where `F + k d = 0`
+//! ([`LayeredTip::spring_pull_off`](crate::analytic::LayeredTip::spring_pull_off),
+//! [`spring_jump_in`](crate::analytic::LayeredTip::spring_jump_in)).
+//!
 //! ## Numerics
 //!
 //! `k(y)` is tabulated once per substrate by Chebyshev interpolation on

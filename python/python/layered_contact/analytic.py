@@ -27,6 +27,7 @@ __all__ = [
     "jkr_state",
     "paraboloid_pull_off_force",
     "paraboloid_state",
+    "tip_pull_off",
 ]
 
 
@@ -113,3 +114,26 @@ def jkr_sinusoid_pull_off(
     half-width (m) of an adhesive wavy surface ``z = g (1 - cos(2 pi x /
     lambda))`` on a half-space, plane strain, JKR limit."""
     return _native.jkr_sinusoid_pull_off(material, wavelength, amplitude, work_of_adhesion)
+
+
+def tip_pull_off(
+    substrate: Substrate,
+    tip: str,
+    work_of_adhesion: float,
+    *,
+    radius: float = float("nan"),
+    half_angle: float = float("nan"),
+    spring: "float | None" = None,
+) -> dict:
+    """Exact pull-offs of an axisymmetric ``tip`` (``"paraboloid"``,
+    ``"sphere"``, ``"cone"``, ``"rounded_cone"``; ``radius`` m, the apex's
+    for the rounded cone, and ``half_angle`` rad for cones) with work of
+    adhesion ``work_of_adhesion`` (J/m^2) on ``substrate``: a dict of
+    ``{"force", "depth", "contact_radius"}`` (N, m, m) under
+    ``load_control`` and ``displacement_control`` and, on a cantilever of
+    stiffness ``spring`` (N/m), where it jumps off (``spring_pull_off``,
+    ``dF/dd = -k``) and where it lands when brought to touch
+    (``spring_jump_in``, ``F + k d = 0``)."""
+    return _native.tip_pull_off(
+        substrate, tip, radius, work_of_adhesion, half_angle=half_angle, spring=spring
+    )

@@ -6,9 +6,10 @@ The model is the exact axisymmetric solution of the Rust crate
 (``analytic::Axisymmetric``: the Fredholm equation of the layered body,
 see its ``doc::axisymmetric``), not a truncated bottom-effect series:
 
-* a **paraboloid** (a sphere of tip radius ``R`` at small depths) on a
-  layer bonded to a rigid or an elastic support, or on a half-space, with
-  JKR adhesion (Johnson, Kendall & Roberts 1971, on the layered body as in
+* a **paraboloid**, a **sphere** (a colloidal probe at depths comparable
+  to its radius), a **cone** or a **cone with a rounded apex** (a
+  pyramidal AFM tip) on a layer bonded to a rigid or an elastic support,
+  or on a half-space (``analytic::Tip``), with JKR adhesion (Johnson, Kendall & Roberts 1971, on the layered body as in
   Maugis 2000: at each contact radius ``a`` the depth is
   ``d = d0(a) - sqrt(2 pi a w / E*) / psi1(a)`` and the force
   ``F = F0(a) + K(a) (d - d0(a))``, with the non-adhesive state
@@ -40,6 +41,8 @@ from . import _native
 from ._native import ConvergenceError, InvalidInputError, Material, Substrate
 
 __all__ = ["Sample", "CurveModel", "FitResult", "fit_curve"]
+
+_TIPS = ("paraboloid", "sphere", "cone", "rounded_cone", "flat_punch")
 
 # Contact radii of the tables, from this fraction of the largest up to it.
 _SMALLEST_RADIUS = 1e-3
@@ -89,24 +92,44 @@ class Sample:
 class CurveModel:
     """The exact force (N) against indentation (m) of one tip on one sample.
 
-    ``tip`` is ``"paraboloid"`` (``radius``: tip radius) or
-    ``"flat_punch"`` (``radius``: punch radius). ``max_depth`` (m) is the
-    deepest indentation the model must reach.
+    ``tip`` is ``"paraboloid"`` or ``"sphere"`` (``radius``: its radius),
+    ``"cone"`` (``half_angle``, rad, axis to face), ``"rounded_cone"``
+    (``radius``: the apex's, and ``half_angle``) or ``"flat_punch"``
+    (``radius``: the punch's). ``max_depth`` (m) is the deepest
+    indentation the model must reach.
     """
 
-    def __init__(self, tip: str, radius: float, sample: Sample, max_depth: float):
-        if tip not in ("paraboloid", "flat_punch"):
-            raise InvalidInputError(f"tip {tip!r}: expected 'paraboloid' or 'flat_punch'")
-        if not (np.isfinite(radius) and radius > 0.0):
+    def __init__(self, tip: str, radius: Optional[float], sample: Sample, max_depth: float,
+                 half_angle: Optional[float] = None):
+        if tip not in _TIPS:
+            raise InvalidInputError(f"tip {tip!r}: expected one of {', '.join(_TIPS)}")
+        cone = tip in ("cone", "rounded_cone")
+        if cone and not (half_angle is not None and 0.0 < half_angle < np.pi / 2):
+            raise InvalidInputError(
+                f"half_angle {half_angle}: a {tip} needs one between 0 and pi/2 (rad)"
+            )
+        if tip != "cone" and not (radius is not None and np.isfinite(radius) and radius > 0.0):
             raise InvalidInputError(f"radius {radius}: expected a positive length (m)")
         if not (np.isfinite(max_depth) and max_depth > 0.0):
             raise InvalidInputError(f"max_depth {max_depth}: expected a positive length (m)")
         self.tip = tip
-        self.radius = float(radius)
+        self.radius = float(radius) if radius is not None else float("nan")
+        self.half_angle = float(half_angle) if half_angle is not None else float("nan")
         self.sample = sample
         self.max_depth = float(max_depth)
         self.calls = 0
         self._tables: Dict[float, tuple] = {}
+
+    def _first_radius(self) -> float:
+        """A contact radius near the deepest indentation's: Hertz's for a
+        round tip, Sneddon's for a cone (the larger for a rounded cone)."""
+        round_tip = np.sqrt(self.radius * self.max_depth) if np.isfinite(self.radius) else 0.0
+        cone = 2.0 / np.pi * self.max_depth * np.tan(self.half_angle) \
+            if np.isfinite(self.half_angle) else 0.0
+        first = max(round_tip, cone)
+        if self.tip == "sphere":
+            first = min(first, 0.9 * self.radius)
+        return first
 
     def _table(self, youngs_modulus: float) -> tuple:
         """(E* of the table, contact radii, d0, F0, K, psi1), cached."""
@@ -125,12 +148,21 @@ class CurveModel:
             psi1 = -np.sqrt(2.0 * np.pi * self.radius / estar) / dc
             table = (estar, a, np.zeros(1), np.zeros(1), stiffness, np.array([psi1]))
         else:
-            largest = np.sqrt(self.radius * self.max_depth)
+            largest = self._first_radius()
             for _ in range(_WIDENINGS):
+                if self.tip == "sphere":
+                    largest = min(largest, 0.95 * self.radius)
                 a = largest * np.geomspace(_SMALLEST_RADIUS, 1.0, _TABLE_POINTS)
-                d0, f0, k, psi1 = _native.paraboloid_terms(substrate, self.radius, a)
+                d0, f0, k, psi1 = _native.tip_terms(
+                    substrate, self.tip, self.radius, a, half_angle=self.half_angle
+                )
                 if d0[-1] >= 1.05 * self.max_depth:
                     break
+                if self.tip == "sphere" and largest >= 0.95 * self.radius:
+                    raise InvalidInputError(
+                        f"max_depth {self.max_depth}: deeper than a spherical cap of radius "
+                        f"{self.radius} reaches (its contact must stay below 0.95 of the radius)"
+                    )
                 largest *= 1.5
             else:
                 raise InvalidInputError(
@@ -199,9 +231,11 @@ class CurveModel:
             out[on] = force_of(x)
         if work_of_adhesion == 0.0:
             # Below the table's smallest contact: the half-space's power
-            # law F ~ d^(3/2), matched to the first entry.
+            # law (F ~ d^2 for a cone, d^(3/2) for a round tip), matched to
+            # the first entry.
             small = (depth > 0.0) & (depth < d[0])
-            out[small] = f[0] * (depth[small] / d[0]) ** 1.5
+            power = 2.0 if self.tip == "cone" else 1.5
+            out[small] = f[0] * (depth[small] / d[0]) ** power
         return out
 
 
@@ -252,7 +286,8 @@ def fit_curve(
     force: Sequence[float],
     *,
     tip: str,
-    radius: float,
+    radius: Optional[float] = None,
+    half_angle: Optional[float] = None,
     sample: Sample,
     segment: str = "approach",
     youngs_modulus: float,
@@ -260,8 +295,12 @@ def fit_curve(
     contact_point: float = 0.0,
     vary: Sequence[str] = ("youngs_modulus", "work_of_adhesion", "contact_point"),
 ) -> FitResult:
-    """Fit the exact model of ``tip`` (``"paraboloid"`` or ``"flat_punch"``,
-    of ``radius`` m) on ``sample`` to a measured curve.
+    """Fit the exact model of ``tip`` on ``sample`` to a measured curve.
+
+    ``tip`` is ``"paraboloid"``, ``"sphere"`` (``radius``: its radius, m),
+    ``"cone"`` (``half_angle``: rad, axis to face), ``"rounded_cone"``
+    (both: the apex radius and the half-angle) or ``"flat_punch"``
+    (``radius``).
 
     ``indentation`` (m, piezo or tip position, increasing into the sample)
     and ``force`` (N) are one segment: ``"approach"`` (fitted without
@@ -318,8 +357,11 @@ def fit_curve(
             "work_of_adhesion: give a positive starting value to fit it on a retract segment"
         )
     span = float(np.ptp(z)) or 1.0
-    # The model reaches past the deepest point by the contact point's range.
-    model = CurveModel(tip, radius, sample, max_depth=float(np.max(z) - contact_point) + span)
+    # The model reaches past the deepest point by the contact point's range
+    # (half the span either way).
+    model = CurveModel(tip, radius, sample,
+                       max_depth=float(np.max(z) - contact_point) + 0.5 * span,
+                       half_angle=half_angle)
     start = {"youngs_modulus": float(youngs_modulus), "work_of_adhesion": w0,
              "contact_point": float(contact_point)}
     # Fit in scaled units: moduli and works relative to their starting

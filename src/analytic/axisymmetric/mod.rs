@@ -34,6 +34,10 @@ use crate::error::{positive_finite, Error, Result};
 use crate::numerics::{gauss, oscillatory_integral, OctaveTable};
 use crate::substrate::Substrate;
 
+mod tip;
+
+pub use tip::{LayeredTip, Tip};
+
 /// Smallest and largest Nystrom orders tried.
 const MIN_ORDER: usize = 16;
 const MAX_ORDER: usize = 4096;
@@ -731,42 +735,53 @@ impl LayeredParaboloid<'_> {
         hi: f64,
         key: impl Fn(&ContactState) -> f64,
     ) -> Result<ContactState> {
-        const SCAN: usize = 48;
-        let ratio = (hi / lo).powf(1.0 / (SCAN - 1) as f64);
-        let states: Vec<ContactState> = (0..SCAN)
-            .map(|k| self.at_contact_radius((lo * ratio.powi(k as i32)).min(hi)))
-            .collect::<Result<_>>()?;
-        let best = (0..SCAN)
-            .min_by(|&i, &j| key(&states[i]).total_cmp(&key(&states[j])))
-            .unwrap_or(0);
-        let (mut a, mut b) = (
-            states[best.saturating_sub(1)].contact_radius,
-            states[(best + 1).min(SCAN - 1)].contact_radius,
-        );
-        let golden = 0.5 * (5f64.sqrt() - 1.0);
-        let mut x1 = b - golden * (b - a);
-        let mut x2 = a + golden * (b - a);
-        let mut f1 = key(&self.at_contact_radius(x1)?);
-        let mut f2 = key(&self.at_contact_radius(x2)?);
-        // 0.618^40 = 4e-9 of the bracket: the value at the minimum, flat to
-        // second order, is exact to rounding.
-        for _ in 0..40 {
-            if f1 < f2 {
-                b = x2;
-                x2 = x1;
-                f2 = f1;
-                x1 = b - golden * (b - a);
-                f1 = key(&self.at_contact_radius(x1)?);
-            } else {
-                a = x1;
-                x1 = x2;
-                f1 = f2;
-                x2 = a + golden * (b - a);
-                f2 = key(&self.at_contact_radius(x2)?);
-            }
-        }
-        self.at_contact_radius(0.5 * (a + b))
+        minimise(lo, hi, |a| self.at_contact_radius(a), key)
     }
+}
+
+/// The state of least `key` over contact radii in `[lo, hi]` (m): a
+/// logarithmic scan of 48 radii refined by golden-section search.
+fn minimise(
+    lo: f64,
+    hi: f64,
+    state: impl Fn(f64) -> Result<ContactState>,
+    key: impl Fn(&ContactState) -> f64,
+) -> Result<ContactState> {
+    const SCAN: usize = 48;
+    let ratio = (hi / lo).powf(1.0 / (SCAN - 1) as f64);
+    let states: Vec<ContactState> = (0..SCAN)
+        .map(|k| state((lo * ratio.powi(k as i32)).min(hi)))
+        .collect::<Result<_>>()?;
+    let best = (0..SCAN)
+        .min_by(|&i, &j| key(&states[i]).total_cmp(&key(&states[j])))
+        .unwrap_or(0);
+    let (mut a, mut b) = (
+        states[best.saturating_sub(1)].contact_radius,
+        states[(best + 1).min(SCAN - 1)].contact_radius,
+    );
+    let golden = 0.5 * (5f64.sqrt() - 1.0);
+    let mut x1 = b - golden * (b - a);
+    let mut x2 = a + golden * (b - a);
+    let mut f1 = key(&state(x1)?);
+    let mut f2 = key(&state(x2)?);
+    // 0.618^40 = 4e-9 of the bracket: the value at the minimum, flat to
+    // second order, is exact to rounding.
+    for _ in 0..40 {
+        if f1 < f2 {
+            b = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = b - golden * (b - a);
+            f1 = key(&state(x1)?);
+        } else {
+            a = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = a + golden * (b - a);
+            f2 = key(&state(x2)?);
+        }
+    }
+    state(0.5 * (a + b))
 }
 
 #[cfg(test)]

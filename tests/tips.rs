@@ -1,0 +1,237 @@
+//! Exact axisymmetric tips beyond the paraboloid (`analytic::Tip`): the
+//! sphere, the cone and the rounded cone, against closed forms on a
+//! half-space (Sneddon 1965; JKR cone of Maugis 2000), the paraboloid's own
+//! solution, and on coated bodies the identity `dF/dd = K(a)` (the
+//! non-adhesive force grows at the stiffness of the flat punch of the
+//! current contact radius, for any profile), which involves a different
+//! solution (the punch's) from the one tested.
+
+use std::f64::consts::PI;
+
+use layered_contact::analytic::{Axisymmetric, SneddonCone, Tip};
+use layered_contact::{Error, Material, Substrate};
+
+fn rubber() -> Material {
+    Material::new(1e6, 0.48).unwrap()
+}
+
+fn bodies() -> Vec<(&'static str, Substrate)> {
+    vec![
+        (
+            "layer on glass",
+            Substrate::layer_on_rigid_base(rubber(), 2e-6).unwrap(),
+        ),
+        (
+            "layer on a softer base",
+            Substrate::layer_on_elastic_base(rubber(), 2e-6, Material::new(2e5, 0.3).unwrap())
+                .unwrap(),
+        ),
+        (
+            "stack",
+            Substrate::stack(
+                &[(rubber(), 1e-6), (Material::new(5e6, 0.3).unwrap(), 1e-6)],
+                layered_contact::substrate::Base::Rigid,
+            )
+            .unwrap(),
+        ),
+    ]
+}
+
+const TIPS: [Tip; 4] = [
+    Tip::Paraboloid { radius: 3e-6 },
+    Tip::Sphere { radius: 3e-6 },
+    Tip::Cone { half_angle: 1.2 },
+    Tip::RoundedCone {
+        half_angle: 1.2,
+        tip_radius: 1e-6,
+    },
+];
+
+#[test]
+fn half_space_closed_forms() {
+    let half = Axisymmetric::new(&Substrate::half_space(rubber()), 1.0).unwrap();
+    let e = rubber().contact_modulus();
+    let (r, theta, w) = (3e-6f64, 1.2f64, 0.02);
+    for a in [0.1e-6f64, 1e-6, 2.5e-6] {
+        // Sneddon's sphere: d = (a/2) ln((R+a)/(R-a)),
+        // F = (E*/2) [(a^2 + R^2) ln((R+a)/(R-a)) - 2 a R].
+        let log = ((r + a) / (r - a)).ln();
+        let s = half
+            .tip(Tip::Sphere { radius: r }, 0.0)
+            .unwrap()
+            .at_contact_radius(a)
+            .unwrap();
+        assert!((s.depth / (0.5 * a * log) - 1.0).abs() < 1e-13);
+        let force = 0.5 * e * ((a * a + r * r) * log - 2.0 * a * r);
+        assert!(
+            (s.force / force - 1.0).abs() < 1e-9,
+            "{} {}",
+            s.force,
+            force
+        );
+        // JKR cone (Maugis 2000): d = (pi/2) a cot - sqrt(2 pi a w / E*),
+        // F = (pi/2) E* a^2 cot - sqrt(8 pi E* w a^3).
+        let c = half
+            .tip(Tip::Cone { half_angle: theta }, w)
+            .unwrap()
+            .at_contact_radius(a)
+            .unwrap();
+        let cot = 1.0 / theta.tan();
+        let depth = 0.5 * PI * a * cot - (2.0 * PI * a * w / e).sqrt();
+        let force = 0.5 * PI * e * a * a * cot - (8.0 * PI * e * w * a.powi(3)).sqrt();
+        assert!((c.depth / depth - 1.0).abs() < 1e-12);
+        assert!((c.force / force - 1.0).abs() < 1e-12);
+        let sneddon = SneddonCone::new(&rubber(), theta).unwrap();
+        let dry = half
+            .tip(Tip::Cone { half_angle: theta }, 0.0)
+            .unwrap()
+            .at_contact_radius(a)
+            .unwrap();
+        assert!((dry.force / sneddon.force(dry.depth) - 1.0).abs() < 1e-12);
+    }
+}
+
+#[test]
+fn the_paraboloid_tip_is_the_paraboloid() {
+    for (name, body) in bodies() {
+        let exact = Axisymmetric::new(&body, 5.0).unwrap();
+        for w in [0.0, 0.02] {
+            let tip = exact.tip(Tip::Paraboloid { radius: 3e-6 }, w).unwrap();
+            let ball = exact.paraboloid(3e-6, w).unwrap();
+            for a in [0.2e-6, 1e-6, 4e-6] {
+                let (t, b) = (
+                    tip.at_contact_radius(a).unwrap(),
+                    ball.at_contact_radius(a).unwrap(),
+                );
+                assert!(
+                    (t.force - b.force).abs() < 1e-10 * b.force.abs().max(1e-9),
+                    "{name}"
+                );
+                assert!((t.depth - b.depth).abs() < 1e-10 * b.depth.abs(), "{name}");
+            }
+        }
+    }
+}
+
+#[test]
+fn force_grows_at_the_punch_stiffness_for_every_tip_and_body() {
+    // Central differences in the contact radius (step 1e-4 a): truncation
+    // about 1e-8 relative; bound 1e-6.
+    for (name, body) in bodies() {
+        let exact = Axisymmetric::new(&body, 5.0).unwrap();
+        for tip in TIPS {
+            let states = exact.tip(tip, 0.0).unwrap();
+            // Inside and beyond the rounded cone's kink (b = 0.36 um).
+            for a in [0.3e-6, 0.8e-6, 2.5e-6] {
+                let h = 1e-4 * a;
+                let (lo, hi) = (
+                    states.at_contact_radius(a - h).unwrap(),
+                    states.at_contact_radius(a + h).unwrap(),
+                );
+                let slope = (hi.force - lo.force) / (hi.depth - lo.depth);
+                let punch = exact.flat_punch(a).unwrap().stiffness();
+                assert!(
+                    (slope / punch - 1.0).abs() < 1e-6,
+                    "{name} {tip:?} a {a}: {slope} {punch}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn adhesive_tips_pull_off_where_the_force_is_least() {
+    // The JKR cone on a half-space (Maugis 2000): from the closed forms
+    // above, F(a) is least at a = 18 w tan^2 / (pi E*) and d(a) at
+    // 2 w tan^2 / (pi E*); the search (a logarithmic scan refined by golden
+    // section) finds both.
+    let half = Axisymmetric::new(&Substrate::half_space(rubber()), 1.0).unwrap();
+    let e = rubber().contact_modulus();
+    let (theta, w) = (1.2f64, 0.02);
+    let pull = half
+        .tip(Tip::Cone { half_angle: theta }, w)
+        .unwrap()
+        .pull_off()
+        .unwrap();
+    // dF/da = 0: pi E* a cot = (3/2) sqrt(8 pi E* w a) -> a = 18 w tan^2 / (pi E*).
+    let a = 18.0 * w * theta.tan().powi(2) / (PI * e);
+    assert!((pull.load_control.contact_radius / a - 1.0).abs() < 1e-6);
+    let cot = 1.0 / theta.tan();
+    let force = 0.5 * PI * e * a * a * cot - (8.0 * PI * e * w * a.powi(3)).sqrt();
+    assert!((pull.load_control.force / force - 1.0).abs() < 1e-12);
+    // dd/da = 0: (pi/2) cot = (1/2) sqrt(2 pi w / (E* a)) -> a = 2 w tan^2 / (pi E*).
+    let a = 2.0 * w * theta.tan().powi(2) / (PI * e);
+    assert!((pull.displacement_control.contact_radius / a - 1.0).abs() < 1e-6);
+}
+
+#[test]
+fn bad_tips_are_refused() {
+    let exact = Axisymmetric::new(&Substrate::half_space(rubber()), 1.0).unwrap();
+    for tip in [
+        Tip::Cone { half_angle: 0.0 },
+        Tip::Cone {
+            half_angle: PI / 2.0,
+        },
+        Tip::Cone {
+            half_angle: f64::NAN,
+        },
+        Tip::Sphere { radius: -1.0 },
+        Tip::RoundedCone {
+            half_angle: 1.0,
+            tip_radius: 0.0,
+        },
+        Tip::Paraboloid {
+            radius: f64::INFINITY,
+        },
+    ] {
+        assert!(
+            matches!(exact.tip(tip, 0.0), Err(Error::InvalidParameter { .. })),
+            "{tip:?}"
+        );
+    }
+    assert!(exact.tip(Tip::Cone { half_angle: 1.0 }, -1.0).is_err());
+    let sphere = exact.tip(Tip::Sphere { radius: 1e-6 }, 0.0).unwrap();
+    assert!(matches!(
+        sphere.at_contact_radius(0.96e-6),
+        Err(Error::InvalidParameter { .. })
+    ));
+    assert!(sphere.at_contact_radius(0.94e-6).unwrap().force.is_finite());
+    assert!(exact
+        .tip(Tip::Cone { half_angle: 1.0 }, 0.0)
+        .unwrap()
+        .pull_off()
+        .is_err());
+}
+
+#[test]
+fn cantilever_pull_off_and_jump_in_on_the_jkr_sphere() {
+    // JKR on a half-space: F(a) = 4 E* a^3/(3R) - sqrt(8 pi E* w a^3),
+    // d(a) = a^2/R - sqrt(2 pi a w / E*), and their derivatives in closed
+    // form. The spring's pull-off has F'/d' = -k, its jump-in F + k d = 0;
+    // soft and stiff springs tend to load and displacement control.
+    let half = Axisymmetric::new(&Substrate::half_space(rubber()), 1.0).unwrap();
+    let e = rubber().contact_modulus();
+    let (r, w) = (3e-6f64, 0.02);
+    let ball = half.tip(Tip::Paraboloid { radius: r }, w).unwrap();
+    let pull = ball.pull_off().unwrap();
+    let slope = |a: f64| {
+        let force = 4.0 * e * a * a / r - 1.5 * (8.0 * PI * e * w * a).sqrt();
+        let depth = 2.0 * a / r - 0.5 * (2.0 * PI * w / (e * a)).sqrt();
+        force / depth
+    };
+    for k in [0.01, 0.1, 1.0, 10.0] {
+        let s = ball.spring_pull_off(k).unwrap();
+        assert!((slope(s.contact_radius) / -k - 1.0).abs() < 1e-5, "k {k}");
+        let j = ball.spring_jump_in(k).unwrap();
+        assert!(
+            (j.force + k * j.depth).abs() < 1e-9 * j.force.abs(),
+            "k {k}"
+        );
+        assert!(j.force < 0.0 && j.depth > 0.0);
+    }
+    let soft = ball.spring_pull_off(1e-9).unwrap();
+    assert!((soft.force / pull.load_control.force - 1.0).abs() < 1e-8);
+    let stiff = ball.spring_pull_off(1e9).unwrap();
+    assert!((stiff.depth / pull.displacement_control.depth - 1.0).abs() < 1e-8);
+    assert!(ball.spring_pull_off(0.0).is_err() && ball.spring_jump_in(f64::NAN).is_err());
+}
