@@ -45,8 +45,8 @@ __all__ = ["Sample", "CurveModel", "FitResult", "fit_curve"]
 _TIPS = ("paraboloid", "sphere", "cone", "rounded_cone", "flat_punch")
 
 # Contact radii of the tables, from this fraction of the largest up to it.
-_SMALLEST_RADIUS = 1e-3
-_TABLE_POINTS = 400
+_SMALLEST_RADIUS = 1e-5
+_TABLE_POINTS = 500
 # Attempts to widen the tables until they cover the deepest indentation.
 _WIDENINGS = 24
 # Safeguarded Newton steps that find a depth's contact radius in its table
