@@ -140,3 +140,36 @@ def test_cantilever_pull_off_lies_between_the_controls():
     assert abs(jump["force"] + 0.01 * jump["depth"]) < 1e-9 * abs(jump["force"])
     with pytest.raises(lc.InvalidInputError, match="half_angle"):
         analytic.tip_pull_off(substrate, "cone", W, half_angle=2.0)
+
+
+def test_a_film_on_a_coated_support_is_a_stack():
+    # A gel film on a 1 um polymer coating of 1 MPa on glass: the model is
+    # the stack's exact solution; fitting the film's modulus rebuilds the
+    # tables for each modulus tried.
+    sample = Sample(thickness=H, poisson_ratio=NU, below=((1e6, 0.4, 1e-6),))
+    substrate = sample.substrate(E)
+    assert substrate.layer_count == 2
+    model = CurveModel("paraboloid", R, sample, max_depth=2.5e-6)
+    radii = np.linspace(0.5e-6, 3e-6, 5)
+    force, depth = analytic.paraboloid_state(substrate, R, 0.0, radii)
+    np.testing.assert_allclose(model.force(depth, E), force, rtol=1e-6)
+    z = np.linspace(-0.3e-6, 0.5 * H, 400)
+    f = model.force(z, E)
+    fit = fit_curve(z, f, tip="paraboloid", radius=R, sample=sample, youngs_modulus=7e3)
+    assert abs(fit.params["youngs_modulus"] / E - 1) < 1e-6, fit.params
+
+
+def test_force_piezo_curves_are_fitted_through_the_cantilever():
+    # The piezo moves z = d + F/k; given k the fit recovers the film.
+    k = 0.05
+    truth = CurveModel("paraboloid", R, LAYER, max_depth=2.5e-6)
+    d = np.linspace(-0.5e-6, 0.5 * H, 1000)
+    f = truth.force(d - Z0, E)
+    piezo = d + f / k
+    fit = fit_curve(piezo, f, tip="paraboloid", radius=R, sample=LAYER, youngs_modulus=5e3,
+                    spring_constant=k)
+    assert abs(fit.params["youngs_modulus"] / E - 1) < 1e-6, fit.params
+    assert abs(fit.params["contact_point"] - Z0) < 1e-6 * H, fit.params
+    with pytest.raises(lc.InvalidInputError, match="spring_constant"):
+        fit_curve(piezo, f, tip="paraboloid", radius=R, sample=LAYER, youngs_modulus=5e3,
+                  spring_constant=-1.0)

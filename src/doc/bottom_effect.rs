@@ -69,8 +69,10 @@
 //! | exact series, 4th order | 0.692 (0.48) | 1.018 (1.04) | 0.00 % | +0.27 % | +4.8 % |
 //!
 //! The exact force at `chi` = 0.19, 0.38, 0.68 is 1.27, 1.74, 3.01 times
-//! Hertz's. Dimitriadis' series stays within 20 % to large depths only
+//! Hertz's (figure: `cargo run --release --example bottom_effect_figure`). Dimitriadis' series stays within 20 % to large depths only
 //! because its missing second-order force and its quartic's growth cancel
 //! there; its error at moderate depths is what a modulus fitted with it
 //! carries. Beyond the series' range, fit the exact curve
 //! ([`Axisymmetric`](crate::analytic::Axisymmetric)).
+#![doc = ""]
+#![doc = include_str!("bottom_effect.svg")]

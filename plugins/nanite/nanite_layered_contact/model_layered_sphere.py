@@ -1,20 +1,7 @@
-import lmfit
-
 from ._force import film_force
-
-
-def get_parameter_defaults():
-    """Return the default model parameters"""
-    # The order of the parameters must match the order
-    # of ´parameter_names´ and ´parameter_keys´.
-    params = lmfit.Parameters()
-    params.add("E", value=3e3, min=0)
-    params.add("R", value=10e-6, min=0, vary=False)
-    params.add("nu", value=.5, min=0, max=0.5, vary=False)
-    params.add("h", value=5e-6, min=0, vary=False)
-    params.add("contact_point", value=0)
-    params.add("baseline", value=0)
-    return params
+# The sphere takes the paraboloid's parameters (a radius, the film).
+from .model_layered_paraboloid import get_parameter_defaults  # noqa: F401
+from .model_layered_paraboloid import parameter_keys, parameter_units  # noqa: F401
 
 
 def layered_sphere(delta, E, R, nu, h, contact_point=0, baseline=0):
@@ -61,9 +48,7 @@ model_doc = layered_sphere.__doc__
 model_func = layered_sphere
 model_key = "layered_sphere"
 model_name = "sphere on a film on glass (exact, layered-contact)"
-parameter_keys = ["E", "R", "nu", "h", "contact_point", "baseline"]
 parameter_names = ["Young's Modulus", "Sphere Radius", "Poisson's Ratio",
                    "Film Thickness", "Contact Point", "Force Baseline"]
-parameter_units = ["Pa", "m", "", "m", "m", "N"]
 valid_axes_x = ["tip position"]
 valid_axes_y = ["force"]

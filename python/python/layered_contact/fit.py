@@ -24,16 +24,18 @@ fitted contact point ``z0``, the shift of the depth axis of the reference
 experiment. Least squares by :func:`scipy.optimize.curve_fit`; standard
 errors from its covariance.
 
-A model evaluation on a rigid support (or a half-space) is an interpolation
-of tables computed once per fit, since the layered solution depends on the
-modulus only through ``E*``; on an elastic support the tables are rebuilt
-for each modulus tried (the layer-to-support contrast changes).
+A model evaluation of a single layer on a rigid support (or of a
+half-space) is an interpolation of tables computed once per fit, since the
+layered solution depends on the modulus only through ``E*``; on an elastic
+support or a stack the tables are rebuilt for each modulus tried (the
+contrast between the layers changes), which makes such a fit about a
+hundred times slower (``BENCHMARKS.md``).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Dict, Optional, Sequence
+from typing import Dict, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -60,22 +62,32 @@ _MAX_CALLS = 2000
 @dataclass(frozen=True)
 class Sample:
     """The indented body: a layer of ``thickness`` (m) and Poisson ratio
-    ``poisson_ratio`` bonded to a support, rigid if ``base_youngs_modulus``
-    is ``None``; a half-space if ``thickness`` is ``None``."""
+    ``poisson_ratio`` (its modulus is fitted) on the layers ``below`` (each
+    ``(youngs_modulus, poisson_ratio, thickness)``, Pa and m, top to
+    bottom, bonded) and a support, rigid if ``base_youngs_modulus`` is
+    ``None``; a half-space if ``thickness`` is ``None``."""
 
     thickness: Optional[float] = None
     poisson_ratio: float = 0.5
     base_youngs_modulus: Optional[float] = None
     base_poisson_ratio: float = 0.3
+    below: Tuple[Tuple[float, float, float], ...] = ()
 
     def substrate(self, youngs_modulus: float) -> Substrate:
-        """The layered body for a layer of modulus ``youngs_modulus`` (Pa)."""
+        """The layered body for a top layer of modulus ``youngs_modulus`` (Pa)."""
         layer = Material(youngs_modulus, self.poisson_ratio)
         if self.thickness is None:
+            if self.below:
+                raise InvalidInputError("below: layers need a top layer of finite thickness")
             return Substrate.half_space(layer)
-        if self.base_youngs_modulus is None:
+        base = None if self.base_youngs_modulus is None else Material(
+            self.base_youngs_modulus, self.base_poisson_ratio)
+        if self.below:
+            layers = [(layer, self.thickness)] + [
+                (Material(e, nu), t) for e, nu, t in self.below]
+            return Substrate.stack(layers, base)
+        if base is None:
             return Substrate.layer_on_rigid_base(layer, self.thickness)
-        base = Material(self.base_youngs_modulus, self.base_poisson_ratio)
         return Substrate.layer_on_elastic_base(layer, self.thickness, base)
 
     def contact_modulus(self, youngs_modulus: float) -> float:
@@ -85,8 +97,8 @@ class Sample:
     @property
     def scales_with_modulus(self) -> bool:
         """Whether the force is proportional to the layer's modulus at fixed
-        ``w / E*`` (a half-space or a rigid support)."""
-        return self.base_youngs_modulus is None
+        ``w / E*`` (a single layer on a rigid support, or a half-space)."""
+        return self.base_youngs_modulus is None and not self.below
 
 
 class CurveModel:
@@ -119,6 +131,7 @@ class CurveModel:
         self.max_depth = float(max_depth)
         self.calls = 0
         self._tables: Dict[float, tuple] = {}
+        self._dry: Dict[float, object] = {}
 
     def _first_radius(self) -> float:
         """A contact radius near the deepest indentation's: Hertz's for a
@@ -206,11 +219,28 @@ class CurveModel:
             attached = depth >= d[0]
             out[attached] = scale * k[0] * depth[attached]
             return out
+        if work_of_adhesion == 0.0:
+            # Without adhesion the curve is the table's times the modulus:
+            # one spline of log F against log d per table, cached (smooth
+            # there: a power law and its corrections).
+            key = 1.0 if self.sample.scales_with_modulus else youngs_modulus
+            dry = self._dry.get(key)
+            if dry is None:
+                dry = self._dry[key] = CubicSpline(np.log(d0), np.log(f0))
+            on = depth >= d0[0]
+            out[on] = scale * np.exp(dry(np.log(depth[on])))
+            # Below the table's smallest contact: the half-space's power
+            # law (F ~ d^2 for a cone, d^(3/2) for a round tip), matched to
+            # the first entry.
+            small = (depth > 0.0) & (depth < d0[0])
+            power = 2.0 if self.tip == "cone" else 1.5
+            out[small] = scale * f0[0] * (depth[small] / d0[0]) ** power
+            return out
         # The fixed-grips branch: from the smallest depth on, as functions
         # of the contact radius (smooth there, where the force against the
         # depth turns with an infinite slope at the branch's start); each
         # depth's radius by safeguarded Newton steps on its table interval.
-        start = int(np.argmin(d)) if work_of_adhesion > 0.0 else 0
+        start = int(np.argmin(d))
         a, d, f = a[start:], d[start:], f[start:]
         on = depth >= d[0]
         if a.size >= 2 and on.any():
@@ -229,13 +259,6 @@ class CurveModel:
                 newton = x - step
                 x = np.where((newton >= lo) & (newton <= hi), newton, 0.5 * (lo + hi))
             out[on] = force_of(x)
-        if work_of_adhesion == 0.0:
-            # Below the table's smallest contact: the half-space's power
-            # law (F ~ d^2 for a cone, d^(3/2) for a round tip), matched to
-            # the first entry.
-            small = (depth > 0.0) & (depth < d[0])
-            power = 2.0 if self.tip == "cone" else 1.5
-            out[small] = f[0] * (depth[small] / d[0]) ** power
         return out
 
 
@@ -294,6 +317,7 @@ def fit_curve(
     work_of_adhesion: Optional[float] = None,
     contact_point: float = 0.0,
     vary: Sequence[str] = ("youngs_modulus", "work_of_adhesion", "contact_point"),
+    spring_constant: Optional[float] = None,
 ) -> FitResult:
     """Fit the exact model of ``tip`` on ``sample`` to a measured curve.
 
@@ -310,7 +334,10 @@ def fit_curve(
     fixed-grips curve's steep tail). ``youngs_modulus``
     (Pa), ``work_of_adhesion`` (J/m^2, default 0) and ``contact_point`` (m)
     are the starting values; the names in ``vary`` are fitted (the work of
-    adhesion only on a retract segment), the others held.
+    adhesion only on a retract segment), the others held. With
+    ``spring_constant`` (N/m, the cantilever's) ``indentation`` is the piezo
+    position of a force-piezo curve, and the tip's is ``z - F / k`` (the
+    measured force bends the cantilever away from the sample).
     """
     from scipy.optimize import curve_fit
 
@@ -322,6 +349,12 @@ def fit_curve(
         )
     if not (np.all(np.isfinite(z)) and np.all(np.isfinite(f))):
         raise InvalidInputError("indentation and force: expected finite values only")
+    if spring_constant is not None:
+        if not (np.isfinite(spring_constant) and spring_constant > 0.0):
+            raise InvalidInputError(
+                f"spring_constant {spring_constant}: expected a positive stiffness (N/m)"
+            )
+        z = z - f / spring_constant
     if segment not in ("approach", "retract"):
         raise InvalidInputError(f"segment {segment!r}: expected 'approach' or 'retract'")
     unknown = set(vary) - {"youngs_modulus", "work_of_adhesion", "contact_point"}
