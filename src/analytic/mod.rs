@@ -38,7 +38,8 @@ mod punch;
 mod sinusoid;
 
 pub use axisymmetric::{
-    Axisymmetric, ContactState, LayeredFlatPunch, LayeredParaboloid, LayeredTip, PullOff, Tip,
+    Axisymmetric, ContactState, ForceCurve, LayeredFlatPunch, LayeredParaboloid, LayeredTip,
+    PullOff, Tip,
 };
 pub use cone::SneddonCone;
 pub use hertz::Hertz;

@@ -34,9 +34,12 @@ use crate::error::{positive_finite, Error, Result};
 use crate::numerics::{gauss, oscillatory_integral, OctaveTable};
 use crate::substrate::Substrate;
 
+mod curve;
 mod paraboloid;
 mod punch;
 mod tip;
+
+pub use curve::ForceCurve;
 
 use paraboloid::minimise;
 pub use paraboloid::{ContactState, LayeredParaboloid, PullOff};

@@ -1,0 +1,155 @@
+//! The tabulated force curve (`analytic::ForceCurve`) against the exact
+//! states it interpolates, computed directly at contact radii between the
+//! table's: every tip, a layer on glass, on a softer base and a stack,
+//! with and without adhesion, and rescaled to another modulus.
+
+use layered_contact::analytic::{Axisymmetric, ForceCurve, Tip};
+use layered_contact::substrate::Base;
+use layered_contact::{Error, Material, Substrate};
+
+fn film(e: f64) -> Material {
+    Material::new(e, 0.45).unwrap()
+}
+
+fn bodies(e: f64) -> Vec<(&'static str, Substrate)> {
+    vec![
+        (
+            "film on glass",
+            Substrate::layer_on_rigid_base(film(e), 4e-6).unwrap(),
+        ),
+        (
+            "film on a softer base",
+            Substrate::layer_on_elastic_base(film(e), 4e-6, Material::new(0.3 * e, 0.3).unwrap())
+                .unwrap(),
+        ),
+        (
+            "stack",
+            Substrate::stack(
+                &[
+                    (film(e), 3e-6),
+                    (Material::new(10.0 * e, 0.3).unwrap(), 1e-6),
+                ],
+                Base::Rigid,
+            )
+            .unwrap(),
+        ),
+    ]
+}
+
+const TIPS: [Tip; 4] = [
+    Tip::Paraboloid { radius: 5e-6 },
+    Tip::Sphere { radius: 5e-6 },
+    Tip::Cone { half_angle: 1.2 },
+    Tip::RoundedCone {
+        half_angle: 1.2,
+        tip_radius: 0.5e-6,
+    },
+];
+
+#[test]
+fn the_table_reproduces_the_exact_states() {
+    // Radii off the table's nodes; the fixed-grips branch only (beyond the
+    // least depth). Measured worst, relative to the largest force: 1e-10 to
+    // 4e-10 without adhesion, up to 6e-8 with it (next to the branch's
+    // start, where the depth turns); bound 1e-7.
+    for (i, (name, body)) in bodies(10e3).into_iter().enumerate() {
+        let exact = Axisymmetric::up_to_contact_radius(&body, 20e-6).unwrap();
+        // Every tip on glass, the paraboloid and the cone on the others.
+        let tips = if i == 0 {
+            &TIPS[..]
+        } else {
+            &[TIPS[0], TIPS[2]]
+        };
+        for &tip in tips {
+            let curve = ForceCurve::new(&exact, tip, 2e-6).unwrap();
+            for work in [0.0, 1e-3] {
+                let states = exact.tip(tip, work).unwrap();
+                let least = if work > 0.0 {
+                    states
+                        .pull_off()
+                        .unwrap()
+                        .displacement_control
+                        .contact_radius
+                } else {
+                    0.0
+                };
+                // Errors relative to the largest force of the samples (a
+                // force crossing zero has no relative error of its own).
+                let samples: Vec<_> = (0..25)
+                    .map(|k| 0.05e-6 * 1.17f64.powi(k))
+                    .filter(|&a| a > 1.05 * least)
+                    .map(|a| states.at_contact_radius(a).unwrap())
+                    .take_while(|s| s.depth <= curve.max_depth())
+                    .collect();
+                let scale = samples.iter().map(|s| s.force.abs()).fold(0.0, f64::max);
+                let worst = samples
+                    .iter()
+                    .map(|s| ((curve.force(s.depth, 1.0, work) - s.force) / scale).abs())
+                    .fold(0.0, f64::max);
+                println!("{name} {tip:?} w {work}: worst {worst:.1e}");
+                assert!(worst < 1e-7, "{name} {tip:?} w {work}: {worst}");
+            }
+        }
+    }
+}
+
+#[test]
+fn on_glass_the_table_serves_every_modulus() {
+    // A single layer on a rigid base: F scales with E* at fixed w / E*.
+    let (e1, e2) = (10e3, 37e3);
+    let table = Substrate::layer_on_rigid_base(film(e1), 4e-6).unwrap();
+    let other = Substrate::layer_on_rigid_base(film(e2), 4e-6).unwrap();
+    let curve = ForceCurve::new(
+        &Axisymmetric::up_to_contact_radius(&table, 20e-6).unwrap(),
+        TIPS[2],
+        2e-6,
+    )
+    .unwrap();
+    let exact = Axisymmetric::up_to_contact_radius(&other, 20e-6).unwrap();
+    let states = exact.tip(TIPS[2], 2e-3).unwrap();
+    for a in [0.4e-6, 1e-6, 2e-6] {
+        let s = states.at_contact_radius(a).unwrap();
+        let f = curve.force(s.depth, e2 / e1, 2e-3);
+        assert!(((f - s.force) / s.force).abs() < 1e-7, "{f} {}", s.force);
+    }
+}
+
+#[test]
+fn flat_punch_is_linear_until_it_detaches() {
+    let body = Substrate::layer_on_rigid_base(film(10e3), 4e-6).unwrap();
+    let exact = Axisymmetric::up_to_contact_radius(&body, 2e-6).unwrap();
+    let punch = exact.flat_punch(2e-6).unwrap();
+    let curve = ForceCurve::flat_punch(&exact, 2e-6).unwrap();
+    let (k, dc) = (punch.stiffness(), punch.critical_depth(1e-3));
+    assert!((curve.force(1e-7, 1.0, 0.0) / (k * 1e-7) - 1.0).abs() < 1e-15);
+    assert_eq!(curve.force(-1e-9, 1.0, 0.0), 0.0);
+    assert!((curve.force(0.99 * dc, 1.0, 1e-3) / (k * 0.99 * dc) - 1.0).abs() < 1e-15);
+    assert_eq!(curve.force(1.01 * dc, 1.0, 1e-3), 0.0);
+}
+
+#[test]
+fn bad_requests_give_nan_or_errors() {
+    let body = Substrate::layer_on_rigid_base(film(10e3), 4e-6).unwrap();
+    let exact = Axisymmetric::up_to_contact_radius(&body, 20e-6).unwrap();
+    let curve = ForceCurve::new(&exact, TIPS[0], 2e-6).unwrap();
+    for (depth, ratio, work) in [
+        (f64::NAN, 1.0, 0.0),
+        (3e-6, 1.0, 0.0),
+        (1e-6, 0.0, 0.0),
+        (1e-6, f64::INFINITY, 0.0),
+        (1e-6, 1.0, -1.0),
+    ] {
+        assert!(curve.force(depth, ratio, work).is_nan());
+    }
+    for depth in [0.0, -1.0, f64::NAN] {
+        assert!(matches!(
+            ForceCurve::new(&exact, TIPS[0], depth),
+            Err(Error::InvalidParameter { .. })
+        ));
+    }
+    // A cap cannot reach 6 um: its contact stays below 0.95 R.
+    assert!(matches!(
+        ForceCurve::new(&exact, Tip::Sphere { radius: 2e-6 }, 6e-6),
+        Err(Error::InvalidParameter { .. })
+    ));
+}
