@@ -185,9 +185,11 @@ impl ForceCurve {
 
     /// [`force`](Self::force) at each of `depths`.
     pub fn forces(&self, depths: &[f64], modulus_ratio: f64, work_of_adhesion: f64) -> Vec<f64> {
-        if !(modulus_ratio > 0.0 && modulus_ratio.is_finite())
-            || !(work_of_adhesion >= 0.0 && work_of_adhesion.is_finite())
-        {
+        let usable = modulus_ratio > 0.0
+            && modulus_ratio.is_finite()
+            && work_of_adhesion >= 0.0
+            && work_of_adhesion.is_finite();
+        if !usable {
             return vec![f64::NAN; depths.len()];
         }
         let modulus = modulus_ratio * self.contact_modulus;
