@@ -13,6 +13,7 @@
 #[macro_use]
 mod say;
 
+mod fit;
 mod output;
 mod paper;
 mod progress;
@@ -56,6 +57,11 @@ enum Command {
         /// The scene file.
         scene: PathBuf,
     },
+    /// Fit the exact model of a tip on a film (modulus, contact point and,
+    /// on a retract segment, the work of adhesion) to a measured force
+    /// curve; prints the estimates with standard errors and writes
+    /// fit.csv.
+    Fit(fit::FitArgs),
     /// Reproduce the reference experiment (Lyashenko, Popov & Borysiuk
     /// 2023): CSV tables, SVG figures and a summary.
     Paper {
@@ -86,6 +92,7 @@ fn dispatch(command: Command) -> Result<()> {
         Command::Check { scene } => check(&Scene::read(&scene)?),
         Command::Reference { scene } => reference(&Scene::read(&scene)?),
         Command::Paper { out, fine } => paper::run(&out, fine),
+        Command::Fit(args) => fit::fit(&args),
     }
 }
 

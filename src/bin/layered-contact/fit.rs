@@ -1,0 +1,394 @@
+//! `layered-contact fit`: the modulus, the work of adhesion and the contact
+//! point of a film from a measured force curve, with the exact model
+//! (`analytic::ForceCurve`) and MINPACK's Levenberg-Marquardt
+//! (`levenberg-marquardt`); standard errors from the Jacobian at the
+//! solution. The same model and rules as Python's `layered_contact.fit`.
+
+use std::path::{Path, PathBuf};
+
+use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
+use nalgebra_lm::{DMatrix, DVector, Dyn, Owned};
+
+use layered_contact::analytic::{Axisymmetric, ForceCurve, Tip};
+use layered_contact::{Material, Substrate};
+
+use super::Result;
+
+/// Step of the central differences of the Jacobian, in scaled parameters.
+const JACOBIAN_STEP: f64 = 1e-6;
+
+/// The measured curve and what is known of the sample and the tip.
+#[derive(clap::Args, Debug)]
+pub(crate) struct FitArgs {
+    /// CSV of two columns: position (m, increasing into the sample; the
+    /// piezo's with --spring-constant) and force (N). Lines that are not
+    /// two numbers (a header, comments) are skipped.
+    curve: PathBuf,
+    /// paraboloid, sphere, cone, rounded-cone or flat-punch.
+    #[arg(long)]
+    tip: String,
+    /// Tip, sphere, apex or punch radius, m.
+    #[arg(long)]
+    radius: Option<f64>,
+    /// Half-angle of a cone, degrees (axis to face).
+    #[arg(long)]
+    half_angle: Option<f64>,
+    /// Film thickness, m (omit for a half-space).
+    #[arg(long)]
+    thickness: Option<f64>,
+    /// Poisson ratio of the film.
+    #[arg(long, default_value_t = 0.5)]
+    poisson: f64,
+    /// Young's modulus of an elastic support, Pa (omit for glass: rigid).
+    #[arg(long)]
+    base_modulus: Option<f64>,
+    /// Poisson ratio of the elastic support.
+    #[arg(long, default_value_t = 0.3)]
+    base_poisson: f64,
+    /// approach (no adhesion) or retract (fits the work of adhesion too).
+    #[arg(long, default_value = "approach")]
+    segment: String,
+    /// Starting Young's modulus, Pa.
+    #[arg(long)]
+    modulus: f64,
+    /// Starting work of adhesion (retract), J/m^2.
+    #[arg(long, default_value_t = 1e-3)]
+    work: f64,
+    /// Starting contact point, m.
+    #[arg(long, default_value_t = 0.0)]
+    contact_point: f64,
+    /// Cantilever stiffness, N/m: the positions are the piezo's and the
+    /// tip's is `z - F/k`.
+    #[arg(long)]
+    spring_constant: Option<f64>,
+    /// Output folder for fit.csv (data, model, residuals).
+    #[arg(short, long, default_value = "out")]
+    out: PathBuf,
+}
+
+/// The least-squares problem in scaled parameters: the modulus over its
+/// start, the contact point over the curve's span, the work over its
+/// start; residuals in units of the largest measured force.
+#[derive(Clone)]
+struct Problem<'a> {
+    model: &'a Model,
+    z: &'a [f64],
+    force: &'a [f64],
+    unit: [f64; 3],
+    params: DVector<f64>,
+    adhesive: bool,
+    force_unit: f64,
+}
+
+/// The exact model: one table at the starting modulus, rescaled on glass
+/// or a half-space; rebuilt for each modulus on an elastic support.
+struct Model {
+    sample: Sample,
+    tip: Option<Tip>,
+    radius: f64,
+    max_depth: f64,
+    table: ForceCurve,
+    table_modulus: f64,
+}
+
+struct Sample {
+    thickness: Option<f64>,
+    poisson: f64,
+    base: Option<Material>,
+}
+
+impl Sample {
+    fn substrate(&self, modulus: f64) -> Result<Substrate> {
+        let film = Material::new(modulus, self.poisson)?;
+        Ok(match (self.thickness, self.base) {
+            (None, _) => Substrate::half_space(film),
+            (Some(h), None) => Substrate::layer_on_rigid_base(film, h)?,
+            (Some(h), Some(base)) => Substrate::layer_on_elastic_base(film, h, base)?,
+        })
+    }
+}
+
+/// The table of `tip` (a flat punch of `radius` if `None`) on `sample`
+/// with a film of `modulus`, to `max_depth`.
+fn build_table(
+    sample: &Sample,
+    tip: Option<Tip>,
+    radius: f64,
+    max_depth: f64,
+    modulus: f64,
+) -> Result<ForceCurve> {
+    let substrate = sample.substrate(modulus)?;
+    // Contact radii the table may need: four times Hertz's or Sneddon's.
+    let reach = match tip {
+        Some(Tip::Cone { half_angle }) => 4.0 * max_depth * half_angle.tan(),
+        Some(Tip::RoundedCone { half_angle, .. }) => {
+            (4.0 * max_depth * half_angle.tan()).max(4.0 * (radius * max_depth).sqrt())
+        }
+        _ => 4.0 * (radius * max_depth).sqrt().max(radius),
+    };
+    let exact = Axisymmetric::up_to_contact_radius(&substrate, reach)?;
+    Ok(match tip {
+        Some(tip) => ForceCurve::new(&exact, tip, max_depth)?,
+        None => ForceCurve::flat_punch(&exact, radius)?,
+    })
+}
+
+impl Model {
+    fn forces(&self, depths: &[f64], modulus: f64, work: f64) -> Vec<f64> {
+        if self.sample.base.is_none() {
+            return self
+                .table
+                .forces(depths, modulus / self.table_modulus, work);
+        }
+        match build_table(&self.sample, self.tip, self.radius, self.max_depth, modulus) {
+            Ok(table) => table.forces(depths, 1.0, work),
+            Err(_) => vec![f64::NAN; depths.len()],
+        }
+    }
+}
+
+impl Problem<'_> {
+    fn values(&self) -> [f64; 3] {
+        let p = &self.params;
+        [
+            p[0] * self.unit[0],
+            p[1] * self.unit[1],
+            if self.adhesive {
+                p[2] * self.unit[2]
+            } else {
+                0.0
+            },
+        ]
+    }
+
+    fn model(&self) -> Vec<f64> {
+        let [modulus, contact, work] = self.values();
+        let depths: Vec<f64> = self.z.iter().map(|z| z - contact).collect();
+        self.model.forces(&depths, modulus, work)
+    }
+}
+
+impl LeastSquaresProblem<f64, Dyn, Dyn> for Problem<'_> {
+    type ResidualStorage = Owned<f64, Dyn>;
+    type JacobianStorage = Owned<f64, Dyn, Dyn>;
+    type ParameterStorage = Owned<f64, Dyn>;
+
+    fn set_params(&mut self, x: &DVector<f64>) {
+        self.params.copy_from(x);
+    }
+
+    fn params(&self) -> DVector<f64> {
+        self.params.clone()
+    }
+
+    fn residuals(&self) -> Option<DVector<f64>> {
+        let model = self.model();
+        let r = DVector::from_iterator(
+            model.len(),
+            model
+                .iter()
+                .zip(self.force)
+                .map(|(m, f)| (f - m) / self.force_unit),
+        );
+        r.iter().all(|v| v.is_finite()).then_some(r)
+    }
+
+    /// Central differences, one pair of model evaluations per parameter
+    /// (steps of 1e-6 of the scaled parameters, about 1e-12 of truncation).
+    fn jacobian(&self) -> Option<DMatrix<f64>> {
+        let n = self.params.len();
+        let mut jacobian = DMatrix::zeros(self.z.len(), n);
+        for j in 0..n {
+            let h = JACOBIAN_STEP * self.params[j].abs().max(1.0);
+            let mut shifted = self.clone();
+            shifted.params[j] += h;
+            let plus = shifted.residuals()?;
+            shifted.params[j] -= 2.0 * h;
+            let minus = shifted.residuals()?;
+            jacobian.set_column(j, &((plus - minus) / (2.0 * h)));
+        }
+        Some(jacobian)
+    }
+}
+
+/// Reads two numeric columns, skipping lines that are not two numbers.
+fn read_curve(path: &Path) -> Result<(Vec<f64>, Vec<f64>)> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    let (mut z, mut f) = (Vec::new(), Vec::new());
+    for line in text.lines() {
+        let fields: Vec<&str> = line
+            .split([',', ';', '\t', ' '])
+            .filter(|s| !s.is_empty())
+            .collect();
+        if let [a, b] = fields[..] {
+            if let (Ok(a), Ok(b)) = (a.parse::<f64>(), b.parse::<f64>()) {
+                if !(a.is_finite() && b.is_finite()) {
+                    return Err(format!("{}: a value is not finite: {line}", path.display()).into());
+                }
+                z.push(a);
+                f.push(b);
+            }
+        }
+    }
+    if z.len() < 4 {
+        return Err(format!(
+            "{}: {} rows of two numbers; at least 4 are needed",
+            path.display(),
+            z.len()
+        )
+        .into());
+    }
+    Ok((z, f))
+}
+
+fn positive(name: &str, value: Option<f64>) -> Result<f64> {
+    match value {
+        Some(v) if v > 0.0 && v.is_finite() => Ok(v),
+        Some(v) => Err(format!("--{name} {v}: expected a positive number").into()),
+        None => Err(format!("--{name} is needed for this tip").into()),
+    }
+}
+
+pub(crate) fn fit(args: &FitArgs) -> Result<()> {
+    let (mut z, mut force) = read_curve(&args.curve)?;
+    if let Some(k) = args.spring_constant {
+        let k = positive("spring-constant", Some(k))?;
+        for (z, f) in z.iter_mut().zip(&force) {
+            *z -= f / k;
+        }
+    }
+    let adhesive = match args.segment.as_str() {
+        "approach" => false,
+        "retract" => true,
+        other => return Err(format!("--segment {other}: expected approach or retract").into()),
+    };
+    if adhesive {
+        // Up to the jump off the sample: after the most tensile point, the
+        // first whose force is back above half of it (as in Python).
+        let mut order: Vec<usize> = (0..z.len()).collect();
+        order.sort_by(|&a, &b| z[b].total_cmp(&z[a]));
+        let lowest = (0..order.len())
+            .min_by(|&a, &b| force[order[a]].total_cmp(&force[order[b]]))
+            .unwrap_or(0);
+        let least = force[order[lowest]];
+        let last = (lowest..order.len())
+            .find(|&k| force[order[k]] > 0.5 * least)
+            .map_or(order.len() - 1, |k| k.saturating_sub(1));
+        let kept: Vec<usize> = order[..=last].to_vec();
+        z = kept.iter().map(|&i| z[i]).collect();
+        force = kept.iter().map(|&i| force[i]).collect();
+        if z.len() < 4 {
+            return Err("retract segment: fewer than 4 points before the pull-off".into());
+        }
+    }
+    let tip = match args.tip.as_str() {
+        "paraboloid" => Some(Tip::Paraboloid {
+            radius: positive("radius", args.radius)?,
+        }),
+        "sphere" => Some(Tip::Sphere {
+            radius: positive("radius", args.radius)?,
+        }),
+        "cone" => Some(Tip::Cone {
+            half_angle: positive("half-angle", args.half_angle)?.to_radians(),
+        }),
+        "rounded-cone" => Some(Tip::RoundedCone {
+            half_angle: positive("half-angle", args.half_angle)?.to_radians(),
+            tip_radius: positive("radius", args.radius)?,
+        }),
+        "flat-punch" => None,
+        other => {
+            return Err(format!(
+                "--tip {other}: expected paraboloid, sphere, cone, rounded-cone or flat-punch"
+            )
+            .into())
+        }
+    };
+    let radius = match tip {
+        Some(Tip::Cone { .. }) => f64::NAN,
+        _ => positive("radius", args.radius)?,
+    };
+    let modulus = positive("modulus", Some(args.modulus))?;
+    let span = z.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+        - z.iter().copied().fold(f64::INFINITY, f64::min);
+    let deepest = z.iter().copied().fold(f64::NEG_INFINITY, f64::max) - args.contact_point;
+    let base = args
+        .base_modulus
+        .map(|e| Material::new(e, args.base_poisson))
+        .transpose()?;
+    let sample = Sample {
+        thickness: args.thickness,
+        poisson: args.poisson,
+        base,
+    };
+    let max_depth = (deepest + 0.5 * span).max(f64::MIN_POSITIVE);
+    let table = build_table(&sample, tip, radius, max_depth, modulus)?;
+    let model = Model {
+        sample,
+        tip,
+        radius,
+        max_depth,
+        table,
+        table_modulus: modulus,
+    };
+    let force_unit = force
+        .iter()
+        .map(|f| f.abs())
+        .fold(0.0, f64::max)
+        .max(f64::MIN_POSITIVE);
+    let work = positive("work", Some(args.work))?;
+    let start: Vec<f64> = if adhesive {
+        vec![1.0, args.contact_point / span, 1.0]
+    } else {
+        vec![1.0, args.contact_point / span]
+    };
+    let problem = Problem {
+        model: &model,
+        z: &z,
+        force: &force,
+        unit: [modulus, span, work],
+        params: DVector::from_vec(start),
+        adhesive,
+        force_unit,
+    };
+    let (problem, report) = LevenbergMarquardt::new().minimize(problem);
+    if !report.termination.was_successful() {
+        return Err(format!("the fit did not converge: {:?}", report.termination).into());
+    }
+    let values = problem.values();
+    let residuals = problem
+        .residuals()
+        .ok_or("the model is not finite at the fit")?;
+    let jacobian = problem.jacobian().ok_or("no Jacobian at the fit")?;
+    let dof = (z.len() - problem.params.len()).max(1) as f64;
+    let variance = residuals.norm_squared() / dof;
+    let covariance = (jacobian.transpose() * &jacobian)
+        .try_inverse()
+        .ok_or("the parameters are not determined by the curve (singular normal matrix)")?;
+    let names = [
+        "youngs_modulus (Pa)",
+        "contact_point (m)",
+        "work_of_adhesion (J/m^2)",
+    ];
+    for k in 0..problem.params.len() {
+        let stderr = (covariance[(k, k)] * variance).sqrt() * problem.unit[k];
+        say!("{:>26} = {:.6e} +- {:.2e}", names[k], values[k], stderr);
+    }
+    say!(
+        "{} points, {} model evaluations, rms residual {:.3e} N",
+        z.len(),
+        report.number_of_evaluations,
+        (residuals.norm_squared() / z.len() as f64).sqrt() * force_unit
+    );
+    std::fs::create_dir_all(&args.out)
+        .map_err(|e| format!("cannot create {}: {e}", args.out.display()))?;
+    let fitted = problem.model();
+    let mut csv = String::from("position_m,force_N,model_N,residual_N\n");
+    for ((z, f), m) in z.iter().zip(&force).zip(&fitted) {
+        csv.push_str(&format!("{z:.9e},{f:.9e},{m:.9e},{:.9e}\n", f - m));
+    }
+    let path = args.out.join("fit.csv");
+    std::fs::write(&path, csv).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    say!("wrote {}", path.display());
+    Ok(())
+}
