@@ -1,10 +1,8 @@
-//! Bindings for fitting measured curves: the non-adhesive states of an
-//! exact axisymmetric tip and the flat punch's stiffness and edge factor at
-//! the same contact radii, from which the JKR curve follows for any work of
-//! adhesion (and, on a rigid support, any modulus) without solving again;
-//! pull-offs and jump-ins under a cantilever.
+//! Bindings for fitting measured curves: the tabulated exact force curve
+//! of a tip (`analytic::ForceCurve`), and pull-offs and jump-ins under a
+//! cantilever.
 
-use numpy::{PyArray1, PyReadonlyArrayDyn, PyUntypedArrayMethods};
+use numpy::{PyArray1, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -33,60 +31,75 @@ pub(crate) fn tip(kind: &str, radius: f64, half_angle: f64) -> PyResult<lc::anal
     })
 }
 
-/// For a tip on `substrate`, at each contact radius of `contact_radius`
-/// (m): the non-adhesive depth `d0` (m) and force `f0` (N), the flat
-/// punch's stiffness `k` (N/m) and edge factor `psi1` (the rim's stress
-/// intensity relative to the half-space punch's). With a work of adhesion
-/// `w` the JKR state at that radius is `d = d0 - sqrt(2 pi a w / E1*) /
-/// psi1`, `F = f0 + k (d - d0)`.
-#[pyfunction]
-#[pyo3(signature = (substrate, kind, radius, contact_radius, half_angle=f64::NAN))]
-pub(crate) fn tip_terms<'py>(
-    py: Python<'py>,
-    substrate: &Substrate,
-    kind: &str,
-    radius: f64,
-    contact_radius: PyReadonlyArrayDyn<'py, f64>,
-    half_angle: f64,
-) -> PyResult<[Bound<'py, PyArray1<f64>>; 4]> {
-    checked_len("contact_radius", contact_radius.shape())?;
-    let tip = tip(kind, radius, half_angle)?;
-    let radii: Vec<f64> = contact_radius.as_array().iter().copied().collect();
-    let largest = radii.iter().copied().fold(0.0f64, f64::max);
-    let substrate = substrate.inner.clone();
-    let rows = py
-        .detach(|| -> lc::Result<Vec<[f64; 4]>> {
-            let exact = lc::analytic::Axisymmetric::up_to_contact_radius(&substrate, largest)?;
-            let states = exact.tip(tip, 0.0)?;
-            // The paraboloid has its own, faster, solution.
-            let ball = match tip {
-                lc::analytic::Tip::Paraboloid { radius } => Some(exact.paraboloid(radius, 0.0)?),
-                _ => None,
-            };
-            radii
-                .iter()
-                .map(|&a| {
-                    let state = match &ball {
-                        Some(ball) => ball.at_contact_radius(a)?,
-                        None => states.at_contact_radius(a)?,
-                    };
-                    let punch = exact.flat_punch(a)?;
-                    Ok([
-                        state.depth,
-                        state.force,
-                        punch.stiffness(),
-                        punch.edge_factor(),
-                    ])
-                })
-                .collect()
-        })
-        .py_err()?;
-    Ok(std::array::from_fn(|k| {
-        PyArray1::from_vec(py, rows.iter().map(|r| r[k]).collect())
-    }))
+/// The exact force curve of a tip on `substrate`, tabulated to
+/// `max_depth` (m) once and then evaluated for any modulus (on glass or a
+/// half-space) and work of adhesion (`analytic::ForceCurve`). `kind` as
+/// for [`tip`], or `"flat_punch"` (`radius`: the punch's).
+#[pyclass(module = "layered_contact._native", frozen)]
+pub(crate) struct ForceCurve {
+    inner: lc::analytic::ForceCurve,
 }
 
-/// The pull-offs of a tip (as [`tip_terms`]) with work of adhesion
+#[pymethods]
+impl ForceCurve {
+    #[new]
+    #[pyo3(signature = (substrate, kind, radius, max_depth, half_angle=f64::NAN))]
+    fn new(
+        py: Python<'_>,
+        substrate: &Substrate,
+        kind: &str,
+        radius: f64,
+        max_depth: f64,
+        half_angle: f64,
+    ) -> PyResult<Self> {
+        let tip = match kind {
+            "flat_punch" => None,
+            other => Some(tip(other, radius, half_angle)?),
+        };
+        let substrate = substrate.inner.clone();
+        let inner = py
+            .detach(|| match tip {
+                Some(tip) => lc::analytic::ForceCurve::on(&substrate, tip, max_depth),
+                None => lc::analytic::ForceCurve::flat_punch_on(&substrate, radius),
+            })
+            .py_err()?;
+        Ok(ForceCurve { inner })
+    }
+
+    /// The forces (N) at `depth` (m, any shape) for a top layer whose
+    /// contact modulus is `modulus_ratio` times the table's, with work of
+    /// adhesion `work_of_adhesion` (J/m^2): the fixed-grips branch, 0 before
+    /// contact and after detachment, NaN beyond `max_depth`.
+    #[pyo3(signature = (depth, modulus_ratio=1.0, work_of_adhesion=0.0))]
+    fn forces<'py>(
+        &self,
+        py: Python<'py>,
+        depth: PyReadonlyArrayDyn<'py, f64>,
+        modulus_ratio: f64,
+        work_of_adhesion: f64,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        checked_len("depth", depth.shape())?;
+        let shape = depth.shape().to_vec();
+        let depths: Vec<f64> = depth.as_array().iter().copied().collect();
+        let inner = &self.inner;
+        let forces = py.detach(|| inner.forces(&depths, modulus_ratio, work_of_adhesion));
+        Ok(PyArray1::from_vec(py, forces).reshape(shape)?)
+    }
+
+    /// The contact modulus `E1*` of the table's body, Pa.
+    #[getter]
+    fn contact_modulus(&self) -> f64 {
+        self.inner.contact_modulus()
+    }
+
+    /// The deepest indentation the table reaches, m.
+    #[getter]
+    fn max_depth(&self) -> f64 {
+        self.inner.max_depth()
+    }
+}
+
+/// The pull-offs of a tip (as [`tip`]) with work of adhesion
 /// `work_of_adhesion` (J/m^2) on `substrate`: a dict of dicts (`force` N,
 /// `depth` m, `contact_radius` m) under `load_control`,
 /// `displacement_control` and, for a cantilever of stiffness `spring`

@@ -15,16 +15,18 @@ LAYER = Sample(thickness=H, poisson_ratio=NU)
 
 
 def test_model_matches_the_exact_states():
-    # The tables are cubic splines over 400 contact radii: within 1e-6 of
-    # the exact state on the stable branch (measured: 2e-7 at its start,
-    # 1e-8 beyond).
+    # The native table (analytic::ForceCurve, Hermite interpolation over
+    # 500 contact radii): within 1e-6 of the exact state on the stable
+    # branch, relative to the largest force of the samples (a force that
+    # crosses zero has no relative error of its own; measured 5e-7 there,
+    # 1e-9 elsewhere).
     model = CurveModel("paraboloid", R, LAYER, max_depth=3e-6)
     substrate = LAYER.substrate(E)
     for w in (0.0, W):
         radii = np.linspace(0.9e-6, 3e-6, 9)
         force, depth = analytic.paraboloid_state(substrate, R, w, radii)
         got = model.force(depth, E, w)
-        np.testing.assert_allclose(got, force, rtol=1e-6)
+        np.testing.assert_allclose(got, force, rtol=1e-6, atol=1e-6 * np.max(np.abs(force)))
     # On a half-space the model is JKR's closed form.
     half = CurveModel("paraboloid", R, Sample(poisson_ratio=NU), max_depth=3e-6)
     material = lc.Material(E, NU)

@@ -1,6 +1,6 @@
 """Type stubs of the compiled extension (see the Rust sources in python/rust/lib.rs)."""
 
-from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
+from typing import Any, Callable, Dict, Optional, Sequence, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -126,13 +126,18 @@ def paraboloid_state(
     substrate: Substrate, radius: float, work_of_adhesion: float, contact_radius: npt.NDArray[np.float64]
 ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
 def flat_punch_pull_off_force(substrate: Substrate, radius: float, work_of_adhesion: float) -> float: ...
-def tip_terms(
-    substrate: Substrate,
-    kind: str,
-    radius: float,
-    contact_radius: npt.NDArray[np.float64],
-    half_angle: float = ...,
-) -> List[npt.NDArray[np.float64]]: ...
+class ForceCurve:
+    def __init__(
+        self, substrate: Substrate, kind: str, radius: float, max_depth: float, half_angle: float = ...
+    ) -> None: ...
+    def forces(
+        self, depth: npt.NDArray[np.float64], modulus_ratio: float = 1.0, work_of_adhesion: float = 0.0
+    ) -> npt.NDArray[np.float64]: ...
+    @property
+    def contact_modulus(self) -> float: ...
+    @property
+    def max_depth(self) -> float: ...
+
 def tip_pull_off(
     substrate: Substrate,
     kind: str,

@@ -2,15 +2,17 @@
 body: the Young's modulus, the work of adhesion and the contact point of a
 sample of known thickness on a known support.
 
-The model is the exact axisymmetric solution of the Rust crate
-(``analytic::Axisymmetric``: the Fredholm equation of the layered body,
-see its ``doc::axisymmetric``), not a truncated bottom-effect series:
+The model is the exact axisymmetric solution of the Rust crate, tabulated
+once per fit (``analytic::ForceCurve``; its ``doc::axisymmetric`` has the
+Fredholm equation of the layered body), not a truncated bottom-effect
+series:
 
 * a **paraboloid**, a **sphere** (a colloidal probe at depths comparable
   to its radius), a **cone** or a **cone with a rounded apex** (a
   pyramidal AFM tip) on a layer bonded to a rigid or an elastic support,
-  or on a half-space (``analytic::Tip``), with JKR adhesion (Johnson, Kendall & Roberts 1971, on the layered body as in
-  Maugis 2000: at each contact radius ``a`` the depth is
+  a stack, or a half-space (``analytic::Tip``), with JKR adhesion
+  (Johnson, Kendall & Roberts 1971, on the layered body as in Maugis 2000:
+  at each contact radius ``a`` the depth is
   ``d = d0(a) - sqrt(2 pi a w / E*) / psi1(a)`` and the force
   ``F = F0(a) + K(a) (d - d0(a))``, with the non-adhesive state
   ``d0, F0``, the punch stiffness ``K`` and edge factor ``psi1``);
@@ -22,12 +24,13 @@ the retract segment with it, along the fixed-grips branch: points past the
 detachment (``F = 0``) count as detached. Indentation is ``z - z0`` with the
 fitted contact point ``z0``, the shift of the depth axis of the reference
 experiment. Least squares by :func:`scipy.optimize.curve_fit`; standard
-errors from its covariance.
+errors from its covariance. The tool's ``layered-contact fit`` does the same
+with the same model.
 
 A model evaluation of a single layer on a rigid support (or of a
-half-space) is an interpolation of tables computed once per fit, since the
-layered solution depends on the modulus only through ``E*``; on an elastic
-support or a stack the tables are rebuilt for each modulus tried (the
+half-space) interpolates the table built once per fit, since the layered
+solution depends on the modulus only through ``E*``; on an elastic
+support or a stack the table is rebuilt for each modulus tried (the
 contrast between the layers changes), which makes such a fit about a
 hundred times slower (``BENCHMARKS.md``).
 """
@@ -46,15 +49,6 @@ __all__ = ["Sample", "CurveModel", "FitResult", "fit_curve"]
 
 _TIPS = ("paraboloid", "sphere", "cone", "rounded_cone", "flat_punch")
 
-# Contact radii of the tables, from this fraction of the largest up to it.
-_SMALLEST_RADIUS = 1e-5
-_TABLE_POINTS = 500
-# Attempts to widen the tables until they cover the deepest indentation.
-_WIDENINGS = 24
-# Safeguarded Newton steps that find a depth's contact radius in its table
-# interval (bisection where Newton leaves it): 1e-12 of the interval in
-# the tests' curves after 6.
-_NEWTON_STEPS = 8
 # Model evaluations a fit may take (the tests' fits take 15 to 80).
 _MAX_CALLS = 2000
 
@@ -130,60 +124,19 @@ class CurveModel:
         self.sample = sample
         self.max_depth = float(max_depth)
         self.calls = 0
-        self._tables: Dict[float, tuple] = {}
-        self._dry: Dict[float, object] = {}
+        self._tables: Dict[float, object] = {}
 
-    def _first_radius(self) -> float:
-        """A contact radius near the deepest indentation's: Hertz's for a
-        round tip, Sneddon's for a cone (the larger for a rounded cone)."""
-        round_tip = np.sqrt(self.radius * self.max_depth) if np.isfinite(self.radius) else 0.0
-        cone = 2.0 / np.pi * self.max_depth * np.tan(self.half_angle) \
-            if np.isfinite(self.half_angle) else 0.0
-        first = max(round_tip, cone)
-        if self.tip == "sphere":
-            first = min(first, 0.9 * self.radius)
-        return first
-
-    def _table(self, youngs_modulus: float) -> tuple:
-        """(E* of the table, contact radii, d0, F0, K, psi1), cached."""
+    def _table(self, youngs_modulus: float):
+        """The native ``ForceCurve`` for this modulus (one for every
+        modulus on glass or a half-space), cached."""
         key = 1.0 if self.sample.scales_with_modulus else youngs_modulus
-        if key in self._tables:
-            return self._tables[key]
-        substrate = self.sample.substrate(key)
-        if self.tip == "flat_punch":
-            a = np.array([self.radius])
-            stiffness = np.atleast_1d(_native.flat_punch_stiffness(substrate, a))
-            pull = _native.flat_punch_pull_off_force(substrate, self.radius, 1.0)
-            estar = self.sample.contact_modulus(key)
-            # Kendall on the layered body: pull-off K d_c with
-            # d_c = -sqrt(2 pi a w / E*) / psi1, so psi1 from w = 1.
-            dc = pull / stiffness[0]
-            psi1 = -np.sqrt(2.0 * np.pi * self.radius / estar) / dc
-            table = (estar, a, np.zeros(1), np.zeros(1), stiffness, np.array([psi1]))
-        else:
-            largest = self._first_radius()
-            for _ in range(_WIDENINGS):
-                if self.tip == "sphere":
-                    largest = min(largest, 0.95 * self.radius)
-                a = largest * np.geomspace(_SMALLEST_RADIUS, 1.0, _TABLE_POINTS)
-                d0, f0, k, psi1 = _native.tip_terms(
-                    substrate, self.tip, self.radius, a, half_angle=self.half_angle
-                )
-                if d0[-1] >= 1.05 * self.max_depth:
-                    break
-                if self.tip == "sphere" and largest >= 0.95 * self.radius:
-                    raise InvalidInputError(
-                        f"max_depth {self.max_depth}: deeper than a spherical cap of radius "
-                        f"{self.radius} reaches (its contact must stay below 0.95 of the radius)"
-                    )
-                largest *= 1.5
-            else:
-                raise InvalidInputError(
-                    f"max_depth {self.max_depth}: the exact solution does not reach it "
-                    "within the contact radii it covers"
-                )
-            table = (self.sample.contact_modulus(key), a, d0, f0, k, psi1)
-        self._tables[key] = table
+        table = self._tables.get(key)
+        if table is None:
+            table = _native.ForceCurve(
+                self.sample.substrate(key), self.tip, self.radius, self.max_depth,
+                half_angle=self.half_angle,
+            )
+            self._tables[key] = table
         return table
 
     def force(
@@ -196,10 +149,8 @@ class CurveModel:
         ``youngs_modulus`` (Pa) and work of adhesion ``work_of_adhesion``
         (J/m^2; 0 for the approach), along the fixed-grips branch: 0 before
         contact and after detachment."""
-        from scipy.interpolate import CubicSpline
-
         self.calls += 1
-        depth = np.asarray(indentation, dtype=np.float64)
+        depth = np.ascontiguousarray(indentation, dtype=np.float64)
         if not (np.isfinite(youngs_modulus) and youngs_modulus > 0.0):
             raise InvalidInputError(f"youngs_modulus {youngs_modulus}: expected > 0 (Pa)")
         if not (np.isfinite(work_of_adhesion) and work_of_adhesion >= 0.0):
@@ -208,58 +159,9 @@ class CurveModel:
             raise InvalidInputError(
                 f"indentation {np.nanmax(depth)}: beyond the model's max_depth {self.max_depth}"
             )
-        estar_table, a, d0, f0, k, psi1 = self._table(youngs_modulus)
-        estar = self.sample.contact_modulus(youngs_modulus)
-        scale = estar / estar_table
-        shift = np.sqrt(2.0 * np.pi * a * work_of_adhesion / estar) / psi1
-        d = d0 - shift
-        f = scale * (f0 - k * shift)
-        out = np.zeros_like(depth)
-        if self.tip == "flat_punch":
-            attached = depth >= d[0]
-            out[attached] = scale * k[0] * depth[attached]
-            return out
-        if work_of_adhesion == 0.0:
-            # Without adhesion the curve is the table's times the modulus:
-            # one spline of log F against log d per table, cached (smooth
-            # there: a power law and its corrections).
-            key = 1.0 if self.sample.scales_with_modulus else youngs_modulus
-            dry = self._dry.get(key)
-            if dry is None:
-                dry = self._dry[key] = CubicSpline(np.log(d0), np.log(f0))
-            on = depth >= d0[0]
-            out[on] = scale * np.exp(dry(np.log(depth[on])))
-            # Below the table's smallest contact: the half-space's power
-            # law (F ~ d^2 for a cone, d^(3/2) for a round tip), matched to
-            # the first entry.
-            small = (depth > 0.0) & (depth < d0[0])
-            power = 2.0 if self.tip == "cone" else 1.5
-            out[small] = scale * f0[0] * (depth[small] / d0[0]) ** power
-            return out
-        # The fixed-grips branch: from the smallest depth on, as functions
-        # of the contact radius (smooth there, where the force against the
-        # depth turns with an infinite slope at the branch's start); each
-        # depth's radius by safeguarded Newton steps on its table interval.
-        start = int(np.argmin(d))
-        a, d, f = a[start:], d[start:], f[start:]
-        on = depth >= d[0]
-        if a.size >= 2 and on.any():
-            depth_of, force_of = CubicSpline(a, d), CubicSpline(a, f)
-            slope_of = depth_of.derivative()
-            target = depth[on]
-            k = np.clip(np.searchsorted(d, target) - 1, 0, a.size - 2)
-            lo, hi = a[k], a[k + 1]
-            x = lo + (hi - lo) * np.clip((target - d[k]) / (d[k + 1] - d[k]), 0.0, 1.0)
-            for _ in range(_NEWTON_STEPS):
-                miss = depth_of(x) - target
-                lo = np.where(miss < 0.0, x, lo)
-                hi = np.where(miss > 0.0, x, hi)
-                slope = slope_of(x)
-                step = np.where(slope > 0.0, miss / np.where(slope > 0.0, slope, 1.0), np.inf)
-                newton = x - step
-                x = np.where((newton >= lo) & (newton <= hi), newton, 0.5 * (lo + hi))
-            out[on] = force_of(x)
-        return out
+        table = self._table(youngs_modulus)
+        ratio = self.sample.contact_modulus(youngs_modulus) / table.contact_modulus
+        return table.forces(depth, ratio, work_of_adhesion)
 
 
 @dataclass

@@ -19,6 +19,7 @@
 
 use super::{Axisymmetric, Tip};
 use crate::error::{positive_finite, Error, Result};
+use crate::substrate::Substrate;
 
 /// Radii in the table, spaced evenly in `ln a` from `SMALLEST` times the
 /// largest: 500 over five decades, a step of 2.3 %. Interpolation error,
@@ -138,6 +139,32 @@ impl ForceCurve {
         })
     }
 
+    /// The curve of `tip` on `substrate` to `max_depth` (m), with the exact
+    /// solutions built as far as the table needs: eight times Hertz's or
+    /// Sneddon's contact radius at that depth, within
+    /// [`Axisymmetric::MAX_RADIUS_OVER_THICKNESS`] layer thicknesses (the
+    /// table widens itself within that range if the layer stiffens the
+    /// contact less).
+    ///
+    /// # Errors
+    /// As [`ForceCurve::new`] and [`Axisymmetric::new`].
+    pub fn on(substrate: &Substrate, tip: Tip, max_depth: f64) -> Result<Self> {
+        let max_depth = positive_finite("max_depth", max_depth)?;
+        let reach = 8.0 * first_radius(tip.validated()?, max_depth);
+        let exact = Axisymmetric::up_to_contact_radius(substrate, within_range(substrate, reach))?;
+        Self::new(&exact, tip, max_depth)
+    }
+
+    /// The bonded flat punch of `radius` (m) on `substrate`.
+    ///
+    /// # Errors
+    /// As [`ForceCurve::flat_punch`].
+    pub fn flat_punch_on(substrate: &Substrate, radius: f64) -> Result<Self> {
+        let radius = positive_finite("radius", radius)?;
+        let exact = Axisymmetric::up_to_contact_radius(substrate, radius)?;
+        Self::flat_punch(&exact, radius)
+    }
+
     /// The bonded flat punch of `radius` (m) on the body of `exact`: the
     /// force is `K d` until it detaches at `d = -sqrt(2 pi a w / E*) / psi1`.
     ///
@@ -248,6 +275,13 @@ impl ForceCurve {
             })
             .collect()
     }
+}
+
+/// `reach` (m) within the exact solution's range on `substrate`.
+fn within_range(substrate: &Substrate, reach: f64) -> f64 {
+    substrate.top_thickness().map_or(reach, |h| {
+        reach.min(h * Axisymmetric::MAX_RADIUS_OVER_THICKNESS)
+    })
 }
 
 /// A contact radius (m) near the deepest indentation's: Hertz's for a

@@ -89,7 +89,7 @@ pub enum Tip {
 }
 
 impl Tip {
-    fn validate(self) -> Result<Self> {
+    pub(super) fn validated(self) -> Result<Self> {
         let angle = |theta: f64| {
             if theta > 0.0 && theta < FRAC_PI_2 {
                 Ok(theta)
@@ -262,7 +262,7 @@ impl Axisymmetric {
     pub fn tip(&self, tip: Tip, work_of_adhesion: f64) -> Result<LayeredTip<'_>> {
         Ok(LayeredTip {
             body: self,
-            tip: tip.validate()?,
+            tip: tip.validated()?,
             work_of_adhesion: non_negative_finite("work_of_adhesion", work_of_adhesion)?,
         })
     }

@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
 use nalgebra_lm::{DMatrix, DVector, Dyn, Owned};
 
-use layered_contact::analytic::{Axisymmetric, ForceCurve, Tip};
+use layered_contact::analytic::{ForceCurve, Tip};
 use layered_contact::{Material, Substrate};
 
 use super::Result;
@@ -118,18 +118,9 @@ fn build_table(
     modulus: f64,
 ) -> Result<ForceCurve> {
     let substrate = sample.substrate(modulus)?;
-    // Contact radii the table may need: four times Hertz's or Sneddon's.
-    let reach = match tip {
-        Some(Tip::Cone { half_angle }) => 4.0 * max_depth * half_angle.tan(),
-        Some(Tip::RoundedCone { half_angle, .. }) => {
-            (4.0 * max_depth * half_angle.tan()).max(4.0 * (radius * max_depth).sqrt())
-        }
-        _ => 4.0 * (radius * max_depth).sqrt().max(radius),
-    };
-    let exact = Axisymmetric::up_to_contact_radius(&substrate, reach)?;
     Ok(match tip {
-        Some(tip) => ForceCurve::new(&exact, tip, max_depth)?,
-        None => ForceCurve::flat_punch(&exact, radius)?,
+        Some(tip) => ForceCurve::on(&substrate, tip, max_depth)?,
+        None => ForceCurve::flat_punch_on(&substrate, radius)?,
     })
 }
 
