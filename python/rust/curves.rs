@@ -83,7 +83,7 @@ impl ForceCurve {
         let depths: Vec<f64> = depth.as_array().iter().copied().collect();
         let inner = &self.inner;
         let forces = py.detach(|| inner.forces(&depths, modulus_ratio, work_of_adhesion));
-        Ok(PyArray1::from_vec(py, forces).reshape(shape)?)
+        PyArray1::from_vec(py, forces).reshape(shape)
     }
 
     /// The contact modulus `E1*` of the table's body, Pa.
