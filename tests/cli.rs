@@ -281,4 +281,14 @@ fn fit_recovers_the_film_from_a_curve() {
         assert!(!out.status.success());
         assert!(text(&out.stderr).contains(message), "{}", text(&out.stderr));
     }
+    // A layer under the film needs three numbers.
+    let mut stacked = args.to_vec();
+    stacked.extend(["--below", "1e6,0.4"]);
+    let out = tool(&stacked, &dir);
+    assert!(!out.status.success());
+    assert!(
+        text(&out.stderr).contains("E,nu,thickness"),
+        "{}",
+        text(&out.stderr)
+    );
 }

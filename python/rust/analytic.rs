@@ -173,3 +173,14 @@ pub(crate) fn flat_punch_pull_off_force(
     })
     .py_err()
 }
+
+/// The exact bottom-effect series of a paraboloid on a layer of Poisson
+/// ratio `poisson_ratio` bonded to a rigid base: the coefficients of
+/// `chi`, `chi^2`, `chi^3`, `chi^4` in `F / F_Hertz`, `chi = sqrt(R d)/h`
+/// (`analytic::ParaboloidForceSeries`).
+#[pyfunction]
+pub(crate) fn paraboloid_series(poisson_ratio: f64) -> PyResult<[f64; 4]> {
+    Ok(lc::analytic::ParaboloidForceSeries::new(poisson_ratio)
+        .py_err()?
+        .coefficients())
+}

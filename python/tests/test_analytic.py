@@ -83,3 +83,23 @@ def test_exact_paraboloid_on_a_film_is_stiffer_than_hertz():
     assert depth[0] == pytest.approx(1e-8 / 0.05, rel=0.03)
     hertz = lc.analytic.hertz_force(lc.Material(0.324e6, 0.48), 0.05, depth)
     assert np.all(force > hertz)
+
+
+def test_bottom_effect_series_matches_the_exact_forces():
+    # Least squares through exact forces at chi <= 0.1 (paraboloid_state,
+    # the Nystrom solution) against the series from the kernel's moments:
+    # the first coefficient to 1e-8, the second to 1e-6 (the fit's own
+    # precision at this number of points).
+    c = lc.analytic.bottom_effect_series(0.5)
+    assert abs(c[1] / c[0] ** 2 - 7.0 / 6.0) < 1e-14
+    h = 1e-5
+    film = lc.Substrate.layer_on_rigid_base(lc.Material(1e6, 0.5), h)
+    radii = np.linspace(1e-3, 0.1, 60) * h
+    force, depth = lc.analytic.paraboloid_state(film, h, 0.0, radii)
+    chi = np.sqrt(h * depth) / h
+    ratio = force / lc.analytic.hertz_force(lc.Material(1e6, 0.5), h, depth)
+    fitted = np.linalg.lstsq(np.vander(chi, 10, increasing=True)[:, 1:], ratio - 1, rcond=None)[0]
+    assert abs(fitted[0] - c[0]) < 1e-8
+    assert abs(fitted[1] - c[1]) < 1e-6
+    # Dimitriadis' first coefficient, from a fit in nu, is 0.54 % high.
+    assert abs(lc.analytic.DIMITRIADIS_BONDED[0] / c[0] - 1.00537) < 1e-4

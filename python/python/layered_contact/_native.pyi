@@ -1,6 +1,6 @@
 """Type stubs of the compiled extension (see the Rust sources in python/rust/lib.rs)."""
 
-from typing import Any, Callable, Dict, Optional, Sequence, Tuple
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -126,6 +126,8 @@ def paraboloid_state(
     substrate: Substrate, radius: float, work_of_adhesion: float, contact_radius: npt.NDArray[np.float64]
 ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
 def flat_punch_pull_off_force(substrate: Substrate, radius: float, work_of_adhesion: float) -> float: ...
+def paraboloid_series(poisson_ratio: float) -> List[float]: ...
+
 class ForceCurve:
     def __init__(
         self, substrate: Substrate, kind: str, radius: float, max_depth: float, half_angle: float = ...

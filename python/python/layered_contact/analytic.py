@@ -13,11 +13,14 @@ from typing import Any, Tuple, Union
 import numpy as np
 
 from . import _native
-from ._native import InvalidInputError, Material, Substrate
+from ._native import ForceCurve, InvalidInputError, Material, Substrate
 
 ArrayLike = Union[float, "np.typing.ArrayLike"]
 
 __all__ = [
+    "DIMITRIADIS_BONDED",
+    "ForceCurve",
+    "bottom_effect_series",
     "flat_punch_pull_off_force",
     "flat_punch_stiffness",
     "hertz_contact_radius",
@@ -137,3 +140,18 @@ def tip_pull_off(
     return _native.tip_pull_off(
         substrate, tip, radius, work_of_adhesion, half_angle=half_angle, spring=spring
     )
+
+
+#: Dimitriadis et al. (2002), bonded layer, nu = 0.5: the coefficients of
+#: ``chi`` to ``chi^4`` in ``F / F_Hertz`` that AFM software fits (see
+#: :func:`bottom_effect_series` for the exact ones).
+DIMITRIADIS_BONDED = (1.133, 1.283, 0.769, 0.0975)
+
+
+def bottom_effect_series(poisson_ratio: float) -> Tuple[float, float, float, float]:
+    """The exact small-indentation series of a paraboloid on a layer of
+    Poisson ratio ``poisson_ratio`` bonded to a rigid base: the coefficients
+    of ``chi``, ``chi^2``, ``chi^3``, ``chi^4`` in ``F / F_Hertz`` with
+    ``chi = sqrt(R d)/h`` (1.1270, 1.4817, 1.4700, 1.0047 at 0.5; the
+    crate's ``doc::bottom_effect`` compares them with Dimitriadis')."""
+    return tuple(_native.paraboloid_series(poisson_ratio))

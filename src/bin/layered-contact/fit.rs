@@ -10,7 +10,7 @@ use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
 use nalgebra_lm::{DMatrix, DVector, Dyn, Owned};
 
 use layered_contact::analytic::{ForceCurve, Tip};
-use layered_contact::{Material, Substrate};
+use layered_contact::{Base, Material, Substrate};
 
 use super::Result;
 
@@ -45,6 +45,10 @@ pub(crate) struct FitArgs {
     /// Poisson ratio of the elastic support.
     #[arg(long, default_value_t = 0.3)]
     base_poisson: f64,
+    /// A bonded layer under the film, `E,nu,thickness` (Pa, -, m); repeat
+    /// from the top down for a stack.
+    #[arg(long, value_parser = layer)]
+    below: Vec<(f64, f64, f64)>,
     /// approach (no adhesion) or retract (fits the work of adhesion too).
     #[arg(long, default_value = "approach")]
     segment: String,
@@ -81,7 +85,8 @@ struct Problem<'a> {
 }
 
 /// The exact model: one table at the starting modulus, rescaled on glass
-/// or a half-space; rebuilt for each modulus on an elastic support.
+/// or a half-space; rebuilt for each modulus on an elastic support or a
+/// stack.
 struct Model {
     sample: Sample,
     tip: Option<Tip>,
@@ -95,11 +100,29 @@ struct Sample {
     thickness: Option<f64>,
     poisson: f64,
     base: Option<Material>,
+    below: Vec<(f64, f64, f64)>,
 }
 
 impl Sample {
+    /// Whether the force scales with the film's modulus (one layer on
+    /// glass, or a half-space).
+    fn scales(&self) -> bool {
+        self.base.is_none() && self.below.is_empty()
+    }
+
     fn substrate(&self, modulus: f64) -> Result<Substrate> {
         let film = Material::new(modulus, self.poisson)?;
+        if !self.below.is_empty() {
+            let h = self
+                .thickness
+                .ok_or("--below needs the film's --thickness")?;
+            let mut layers = vec![(film, h)];
+            for &(e, nu, t) in &self.below {
+                layers.push((Material::new(e, nu)?, t));
+            }
+            let base = self.base.map_or(Base::Rigid, Base::Elastic);
+            return Ok(Substrate::stack(&layers, base)?);
+        }
         Ok(match (self.thickness, self.base) {
             (None, _) => Substrate::half_space(film),
             (Some(h), None) => Substrate::layer_on_rigid_base(film, h)?,
@@ -126,7 +149,7 @@ fn build_table(
 
 impl Model {
     fn forces(&self, depths: &[f64], modulus: f64, work: f64) -> Vec<f64> {
-        if self.sample.base.is_none() {
+        if self.sample.scales() {
             return self
                 .table
                 .forces(depths, modulus / self.table_modulus, work);
@@ -233,6 +256,19 @@ fn read_curve(path: &Path) -> Result<(Vec<f64>, Vec<f64>)> {
     Ok((z, f))
 }
 
+/// `E,nu,thickness` of a layer under the film.
+fn layer(text: &str) -> std::result::Result<(f64, f64, f64), String> {
+    let values: Vec<f64> = text
+        .split(',')
+        .map(|v| v.trim().parse::<f64>())
+        .collect::<std::result::Result<_, _>>()
+        .map_err(|e| format!("{text}: {e}; expected E,nu,thickness"))?;
+    match values[..] {
+        [e, nu, t] => Ok((e, nu, t)),
+        _ => Err(format!("{text}: expected three numbers E,nu,thickness")),
+    }
+}
+
 fn positive(name: &str, value: Option<f64>) -> Result<f64> {
     match value {
         Some(v) if v > 0.0 && v.is_finite() => Ok(v),
@@ -311,6 +347,7 @@ pub(crate) fn fit(args: &FitArgs) -> Result<()> {
         thickness: args.thickness,
         poisson: args.poisson,
         base,
+        below: args.below.clone(),
     };
     let max_depth = (deepest + 0.5 * span).max(f64::MIN_POSITIVE);
     let table = build_table(&sample, tip, radius, max_depth, modulus)?;
