@@ -131,6 +131,15 @@ impl Substrate {
         }
     }
 
+    /// A layer of thickness `thickness` (m) resting on a rigid base without
+    /// friction (Dimitriadis et al. 2002's unbonded layer).
+    #[staticmethod]
+    fn layer_resting_on_rigid_base(layer: &Material, thickness: f64) -> PyResult<Self> {
+        Ok(Substrate {
+            inner: lc::Substrate::layer_resting_on_rigid_base(layer.inner, thickness).py_err()?,
+        })
+    }
+
     /// A layer of thickness `thickness` (m) bonded to a rigid base.
     #[staticmethod]
     fn layer_on_rigid_base(layer: &Material, thickness: f64) -> PyResult<Self> {

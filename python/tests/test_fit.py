@@ -175,3 +175,18 @@ def test_force_piezo_curves_are_fitted_through_the_cantilever():
     with pytest.raises(lc.InvalidInputError, match="spring_constant"):
         fit_curve(piezo, f, tip="paraboloid", radius=R, sample=LAYER, youngs_modulus=5e3,
                   spring_constant=-1.0)
+
+
+def test_an_unbonded_film_is_fitted_with_its_own_model():
+    # A gel resting on glass without friction: the bonded model, stiffer,
+    # reads it softer than it is (by more than 20 %); its own recovers it.
+    resting = Sample(thickness=H, poisson_ratio=NU, bonded=False)
+    truth = CurveModel("paraboloid", R, resting, max_depth=2.5e-6)
+    z = np.linspace(-0.3e-6, 0.5 * H, 600)
+    f = truth.force(z - Z0, E)
+    fit = fit_curve(z, f, tip="paraboloid", radius=R, sample=resting, youngs_modulus=5e3)
+    assert abs(fit.params["youngs_modulus"] / E - 1) < 1e-6, fit.params
+    bonded = fit_curve(z, f, tip="paraboloid", radius=R, sample=LAYER, youngs_modulus=5e3)
+    assert bonded.params["youngs_modulus"] < 0.8 * E, bonded.params
+    with pytest.raises(lc.InvalidInputError, match="unbonded"):
+        Sample(thickness=H, bonded=False, base_youngs_modulus=1e6).substrate(E)

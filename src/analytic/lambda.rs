@@ -90,7 +90,26 @@ const PANEL_ORDER: usize = 24;
 /// [`Error::NoConvergence`] if the tail has not decayed after `m + 2000`
 /// panels (not observed).
 pub fn a_m(m: u32, nu: f64) -> Result<f64> {
-    let functions = CoatingFunctions::rigid_base(nu)?;
+    a_m_of(m, &CoatingFunctions::rigid_base(nu)?)
+}
+
+/// The moment `a_m` of [`a_m`] for any single coating's `Lambda_g`: a
+/// layer on an elastic base, or one resting on a rigid base without
+/// friction ([`CoatingFunctions::frictionless_rigid_base`]: `a_0 =
+/// 1.16757683740435`, `a_1 = -0.395381386454349`).
+///
+/// ```
+/// use layered_contact::analytic::a_m_of;
+/// use layered_contact::substrate::CoatingFunctions;
+///
+/// let resting = CoatingFunctions::frictionless_rigid_base();
+/// assert!((a_m_of(0, &resting)? - 1.1675768374043457).abs() < 1e-14);
+/// Ok::<(), layered_contact::Error>(())
+/// ```
+///
+/// # Errors
+/// As [`a_m`].
+pub fn a_m_of(m: u32, functions: &CoatingFunctions) -> Result<f64> {
     if m > UNDERFLOW_ORDER {
         // |a_m| ~ m^2 / 4^m is below the smallest subnormal f64.
         return Ok(0.0);

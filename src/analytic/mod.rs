@@ -44,12 +44,12 @@ pub use axisymmetric::{
 pub use cone::SneddonCone;
 pub use hertz::Hertz;
 pub use jkr::JkrSphere;
-pub use lambda::{a_m, lambda, lambda_g};
+pub use lambda::{a_m, a_m_of, lambda, lambda_g};
 pub use layered_jkr::LayeredJkrCycle;
 pub use punch::{BoussinesqPunch, JkrFlatPunch};
 pub use series::{
     truncated_series, ParaboloidForceSeries, PunchStiffnessSeries, SeriesStiffness,
-    DIMITRIADIS_BONDED,
+    DIMITRIADIS_BONDED, DIMITRIADIS_UNBONDED,
 };
 pub use sinusoid::JkrSinusoid;
 

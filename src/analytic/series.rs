@@ -157,6 +157,12 @@ impl PunchStiffnessSeries {
 /// [`ParaboloidForceSeries`].
 pub const DIMITRIADIS_BONDED: [f64; 4] = [1.133, 1.283, 0.769, 0.0975];
 
+/// The unbonded-layer coefficients of Dimitriadis et al. (2002, Eq. 13 at
+/// `nu = 0.5`): 0.884, 0.781, 0.386, 0.0048. The exact ones
+/// ([`ParaboloidForceSeries::frictionless`]) do not depend on `nu`: 0.7433,
+/// 0.6446, 0.3399, 0.0076.
+pub const DIMITRIADIS_UNBONDED: [f64; 4] = [0.884, 0.781, 0.386, 0.0048];
+
 /// The force of a paraboloid pressed into a layer bonded to a rigid base,
 /// expanded in `chi = sqrt(R d)/h` to fourth order: the exact small-
 /// indentation series (see the [module docs](self)).
@@ -183,17 +189,40 @@ impl ParaboloidForceSeries {
     /// [`Error::InvalidPoissonRatio`](crate::Error::InvalidPoissonRatio) if
     /// `poisson_ratio` is outside `[0, 0.5]`.
     pub fn new(poisson_ratio: f64) -> Result<Self> {
+        Ok(Self::from_moments(
+            a_m(0, poisson_ratio)?,
+            a_m(1, poisson_ratio)?,
+        ))
+    }
+
+    /// The series for a layer resting on a rigid base without friction
+    /// (Dimitriadis et al. 2002's unbonded layer), the same for every
+    /// Poisson ratio: `1 + 0.7433 chi + 0.6446 chi^2 + 0.3399 chi^3 +
+    /// 0.0076 chi^4`; against least-squares fits of exact forces to the
+    /// fits' precision, as for bonded layers (`tests/unbonded.rs`).
+    ///
+    /// # Errors
+    /// As [`a_m_of`](super::a_m_of).
+    pub fn frictionless() -> Result<Self> {
+        let resting = crate::substrate::CoatingFunctions::frictionless_rigid_base();
+        Ok(Self::from_moments(
+            super::a_m_of(0, &resting)?,
+            super::a_m_of(1, &resting)?,
+        ))
+    }
+
+    /// The series from the moments `a0`, `a1` of the layer's `Lambda_g`.
+    fn from_moments(a0: f64, a1: f64) -> Self {
         use std::f64::consts::PI;
-        let (a0, a1) = (a_m(0, poisson_ratio)?, a_m(1, poisson_ratio)?);
         let c = 2.0 * a0 / PI;
-        Ok(ParaboloidForceSeries {
+        ParaboloidForceSeries {
             coefficients: [
                 c,
                 7.0 / 6.0 * c * c,
                 40.0 / 27.0 * c.powi(3) + 32.0 * a1 / (15.0 * PI),
                 143.0 / 72.0 * c.powi(4) + 32.0 * c * a1 / (5.0 * PI),
             ],
-        })
+        }
     }
 
     /// The coefficients of `chi`, `chi^2`, `chi^3`, `chi^4`.

@@ -53,8 +53,30 @@
 //! it; its `chi^3` and `chi^4` terms carry the factors 1 and `24/(5 pi)`
 //! where the paraboloid's carry 40/27, 143/72 and `32/(5 pi)`), and its
 //! `a0`, `a1` come from polynomial fits in `nu` (0.5 % and 5 % off at
-//! `nu = 0.5`). The unbonded coefficients of the same paper need a
-//! frictionless interface, which this crate does not model yet.
+//! `nu = 0.5`).
+//!
+//! # The unbonded layer
+//!
+//! A layer resting on glass without friction
+//! ([`Substrate::layer_resting_on_rigid_base`](crate::Substrate::layer_resting_on_rigid_base))
+//! behaves as one half of a free slab of twice its thickness loaded on both
+//! faces alike; its coating factor, `R(t) = 2 sinh^2 t / (2t + sinh 2t)`
+//! ([`CoatingFunctions::frictionless_rigid_base`](crate::substrate::CoatingFunctions::frictionless_rigid_base)),
+//! does not depend on `nu`, and neither does its series
+//! ([`ParaboloidForceSeries::frictionless`](crate::analytic::ParaboloidForceSeries::frictionless);
+//! `tests/unbonded.rs` checks it against exact forces to the same
+//! precision as the bonded one):
+//!
+//! | unbonded | `chi` | `chi^2` | `chi^3` | `chi^4` |
+//! |---|---|---|---|---|
+//! | exact, every `nu` | 0.7433 | 0.6446 | 0.3399 | 0.0076 |
+//! | Dimitriadis et al. (2002), `nu = 0.5` | 0.884 | 0.781 | 0.386 | 0.0048 |
+//!
+//! Their `alpha0 = -0.347 (3 - 2 nu)/(1 - nu)` varies with `nu` and meets
+//! the exact first coefficient only near `nu = 0.27`: for cells and gels
+//! (`nu = 0.5`) it is 19 % high. A shear-free film much thinner than the
+//! contact is in uniaxial stress, `p = E* d / h` (`R ~ t/2`), where a
+//! bonded incompressible one is confined (`R ~ 2 t^3 / 3`).
 //!
 //! # Where each truncated series leaves the exact curve
 //!

@@ -103,6 +103,9 @@ const T_NEGLIGIBLE: f64 = 400.0;
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CoatingFunctions {
+    /// A layer resting on a rigid base without friction (then the other
+    /// constants are unused).
+    frictionless: bool,
     /// `G = mu1 / mu2` (0 for a rigid base).
     shear_ratio: f64,
     kappa1: f64,
@@ -149,6 +152,7 @@ impl CoatingFunctions {
         let one_plus_g_kappa2 = 1.0 + g * kappa2;
         let g_plus_kappa1 = g + kappa1;
         CoatingFunctions {
+            frictionless: false,
             shear_ratio: g,
             kappa1,
             kappa2,
@@ -161,6 +165,51 @@ impl CoatingFunctions {
                 / g_plus_kappa1,
             one_plus_lam: 2.0 * (g * kappa2 - 2.0 * (0.5 - nu1)) / one_plus_g_kappa2,
         }
+    }
+
+    /// The functions of a layer resting on a rigid base without friction
+    /// (shear-free and in contact everywhere: Dimitriadis et al. 2002's
+    /// unbonded layer). A layer of thickness `h` then behaves as one half of
+    /// a free slab of thickness `2h` loaded on both faces alike, and
+    /// (plane strain, Airy stress function; independent of `nu`)
+    ///
+    /// ```text
+    /// R(t) = 2 sinh^2 t / (2t + sinh 2t) = (1 - e^(-2t))^2 / D(t),   D(t) = 1 - e^(-4t) + 4t e^(-2t),
+    /// Lambda_g(t) = 2 e^(-2t) (1 + 2t - e^(-2t)) / D(t),
+    /// ```
+    ///
+    /// every term of one sign; `R ~ t/2` at small `t` (a shear-free film
+    /// under a long load is in uniaxial stress, `u = p h / E1*`).
+    ///
+    /// ```
+    /// use layered_contact::substrate::CoatingFunctions;
+    ///
+    /// let f = CoatingFunctions::frictionless_rigid_base();
+    /// assert!((f.r(1.0) - 2.0 * 1f64.sinh().powi(2) / (2.0 + 2f64.sinh())).abs() < 1e-15);
+    /// assert!((f.r_over_t(0.0) - 0.5).abs() < 1e-15);
+    /// ```
+    pub fn frictionless_rigid_base() -> Self {
+        CoatingFunctions {
+            frictionless: true,
+            ..Self::from_constants(0.5, 0.0, 0.5)
+        }
+    }
+
+    /// Whether the layer rests on its base without friction.
+    pub fn is_frictionless(&self) -> bool {
+        self.frictionless
+    }
+
+    /// `D(t) / t` and `(1 + 2t - e^(-2t)) / t` of the frictionless layer,
+    /// both finite and positive at `t = 0` (8 and 4).
+    fn frictionless_parts(t: f64) -> (f64, f64) {
+        if t == 0.0 {
+            return (8.0, 4.0);
+        }
+        let e2 = (-2.0 * t).exp();
+        let d = -(-4.0 * t).exp_m1() / t + 4.0 * e2;
+        let n = 2.0 - (-2.0 * t).exp_m1() / t;
+        (d, n)
     }
 
     /// `G = mu1 / mu2`, the shear-modulus ratio of layer to base (0 for a
@@ -199,6 +248,9 @@ impl CoatingFunctions {
         if t > T_NEGLIGIBLE {
             return 1.0;
         }
+        if self.frictionless {
+            return t * self.r_over_t(t);
+        }
         let d = self.denominator(t);
         if d > 0.0 {
             self.numerator(t) / d
@@ -215,6 +267,9 @@ impl CoatingFunctions {
         let t = t.abs();
         if t > T_NEGLIGIBLE {
             return 0.0;
+        }
+        if self.frictionless {
+            return (-2.0 * t).exp() * self.lambda_scaled(t);
         }
         let d = self.denominator(t);
         if d > 0.0 {
@@ -252,6 +307,10 @@ impl CoatingFunctions {
     /// `Lambda_g` multiplies a large power of `t` (the `a_m` integrals).
     pub(crate) fn lambda_scaled(&self, t: f64) -> f64 {
         let t = t.abs();
+        if self.frictionless {
+            let (d, n) = Self::frictionless_parts(t);
+            return 2.0 * n / d;
+        }
         self.lambda_numerator_scaled(t) / self.denominator(t)
     }
 
@@ -261,6 +320,18 @@ impl CoatingFunctions {
     /// is `+inf` at `t = 0`.
     pub fn r_over_t(&self, t: f64) -> f64 {
         let t = t.abs();
+        if self.frictionless {
+            if t > T_NEGLIGIBLE {
+                return 1.0 / t;
+            }
+            // (1 - e^(-2t))^2 / (t D) = g^2 / (D / t), g = (1 - e^(-2t)) / t.
+            let g = if t == 0.0 {
+                2.0
+            } else {
+                -(-2.0 * t).exp_m1() / t
+            };
+            return g * g / Self::frictionless_parts(t).0;
+        }
         if self.shear_ratio > 0.0 || t > T_NEGLIGIBLE {
             return self.r(t) / t;
         }
@@ -283,6 +354,22 @@ impl CoatingFunctions {
     /// `t = 0`, by truncated power-series arithmetic on the cancellation-free
     /// forms of `D` and `D - N` (so `D(0) = a b > 0` is exact).
     pub(crate) fn lambda_taylor(&self) -> Series {
+        if self.frictionless {
+            // 2 e^(-2t) [(1 + 2t - e^(-2t)) / t] / [D(t) / t], each bracket
+            // summed term by term (the division by t exact).
+            let mut n = [0.0; super::series::TAYLOR_TERMS];
+            let mut d = [0.0; super::series::TAYLOR_TERMS];
+            let mut factorial = 1.0;
+            for j in 0..super::series::TAYLOR_TERMS {
+                let next = factorial * (j + 1) as f64;
+                n[j] = -(-2.0f64).powi(j as i32 + 1) / next;
+                d[j] = -(-4.0f64).powi(j as i32 + 1) / next
+                    + 4.0 * (-2.0f64).powi(j as i32) / factorial;
+                factorial = next;
+            }
+            n[0] += 2.0;
+            return Series::exp(-2.0).mul(&Series(n)).scale(2.0).div(&Series(d));
+        }
         let (a, b, lam, m) = (self.a, self.b, self.lam, self.m);
         let e1 = Series::exp(-1.0);
         let e2 = Series::exp(-2.0);

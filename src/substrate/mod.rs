@@ -36,6 +36,8 @@ pub struct Coating {
     layer: Material,
     thickness: f64,
     base: Base,
+    /// Resting on a rigid base without friction instead of bonded.
+    frictionless: bool,
 }
 
 impl Coating {
@@ -54,9 +56,19 @@ impl Coating {
         &self.base
     }
 
+    /// Whether the layer rests on its (rigid) base without friction
+    /// ([`Substrate::layer_resting_on_rigid_base`]) instead of being bonded.
+    pub fn is_frictionless(&self) -> bool {
+        self.frictionless
+    }
+
     /// The functions `R(t)` and `Lambda_g(t)` of this coating.
     pub fn functions(&self) -> CoatingFunctions {
-        CoatingFunctions::new(&self.layer, &self.base)
+        if self.frictionless {
+            CoatingFunctions::frictionless_rigid_base()
+        } else {
+            CoatingFunctions::new(&self.layer, &self.base)
+        }
     }
 }
 
@@ -137,6 +149,39 @@ impl Substrate {
         Ok(Self::coated(layer, thickness, Base::Rigid))
     }
 
+    /// A layer of `thickness` (m) resting on a rigid base without friction:
+    /// in contact everywhere, free to slide (the unbonded layer of
+    /// Dimitriadis et al. 2002, Biophys. J. 82, 2798; a gel or a cell on
+    /// glass it does not stick to). See
+    /// [`CoatingFunctions::frictionless_rigid_base`] for its coating
+    /// factor. `thickness = +inf` gives the layer's half-space.
+    ///
+    /// ```
+    /// use layered_contact::{Material, Substrate};
+    /// use layered_contact::analytic::Axisymmetric;
+    ///
+    /// let gel = Material::new(10e3, 0.5)?;
+    /// let bonded = Substrate::layer_on_rigid_base(gel, 4e-6)?;
+    /// let resting = Substrate::layer_resting_on_rigid_base(gel, 4e-6)?;
+    /// let k = |s: &Substrate| Axisymmetric::new(s, 1.0)?.flat_punch(2e-6).map(|p| p.stiffness());
+    /// // Free to slide, the film is softer than bonded, stiffer than a half-space.
+    /// let half = 2.0 * 2e-6 * gel.contact_modulus();
+    /// assert!(half < k(&resting)? && k(&resting)? < k(&bonded)?);
+    /// Ok::<(), layered_contact::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`Substrate::layer_on_rigid_base`].
+    pub fn layer_resting_on_rigid_base(layer: Material, thickness: f64) -> Result<Self> {
+        Ok(match Self::layer_on_rigid_base(layer, thickness)? {
+            Substrate::Coated(coating) => Substrate::Coated(Coating {
+                frictionless: true,
+                ..coating
+            }),
+            other => other,
+        })
+    }
+
     /// A layer of `thickness` (m) bonded to an elastic half-space of `base`.
     ///
     /// `thickness = 0` gives the base's half-space, `thickness = +inf` or
@@ -183,6 +228,7 @@ impl Substrate {
                 layer,
                 thickness,
                 base,
+                frictionless: false,
             })
         }
     }

@@ -66,6 +66,9 @@ class Sample:
     base_youngs_modulus: Optional[float] = None
     base_poisson_ratio: float = 0.3
     below: Tuple[Tuple[float, float, float], ...] = ()
+    #: False: the layer rests on a rigid support without friction
+    #: (Dimitriadis et al. 2002's unbonded layer).
+    bonded: bool = True
 
     def substrate(self, youngs_modulus: float) -> Substrate:
         """The layered body for a top layer of modulus ``youngs_modulus`` (Pa)."""
@@ -80,6 +83,12 @@ class Sample:
             layers = [(layer, self.thickness)] + [
                 (Material(e, nu), t) for e, nu, t in self.below]
             return Substrate.stack(layers, base)
+        if not self.bonded:
+            if base is not None or self.below:
+                raise InvalidInputError(
+                    "bonded=False: an unbonded layer is modelled on a rigid support only"
+                )
+            return Substrate.layer_resting_on_rigid_base(layer, self.thickness)
         if base is None:
             return Substrate.layer_on_rigid_base(layer, self.thickness)
         return Substrate.layer_on_elastic_base(layer, self.thickness, base)
