@@ -281,6 +281,16 @@ fn fit_recovers_the_film_from_a_curve() {
         assert!(!out.status.success());
         assert!(text(&out.stderr).contains(message), "{}", text(&out.stderr));
     }
+    // An unbonded film rests on glass only.
+    let mut resting = args.to_vec();
+    resting.extend(["--unbonded", "--base-modulus", "1e6"]);
+    let out = tool(&resting, &dir);
+    assert!(!out.status.success());
+    assert!(
+        text(&out.stderr).contains("--unbonded"),
+        "{}",
+        text(&out.stderr)
+    );
     // A layer under the film needs three numbers.
     let mut stacked = args.to_vec();
     stacked.extend(["--below", "1e6,0.4"]);

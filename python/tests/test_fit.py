@@ -190,3 +190,24 @@ def test_an_unbonded_film_is_fitted_with_its_own_model():
     assert bonded.params["youngs_modulus"] < 0.8 * E, bonded.params
     with pytest.raises(lc.InvalidInputError, match="unbonded"):
         Sample(thickness=H, bonded=False, base_youngs_modulus=1e6).substrate(E)
+
+
+def test_the_thickness_and_the_support_can_be_fitted_too():
+    # A film of unknown thickness on glass, and one of known thickness on a
+    # support of unknown modulus: each value tried builds its own table.
+    z = np.linspace(-0.3e-6, 0.5 * H, 300)
+    truth = CurveModel("paraboloid", R, LAYER, max_depth=2.5e-6)
+    f = truth.force(z - Z0, E)
+    guess = Sample(thickness=1.3 * H, poisson_ratio=NU)
+    fit = fit_curve(z, f, tip="paraboloid", radius=R, sample=guess, youngs_modulus=E,
+                    vary=("thickness", "contact_point"))
+    assert abs(fit.params["thickness"] / H - 1) < 1e-5, fit.params
+    soft = Sample(thickness=H, poisson_ratio=NU, base_youngs_modulus=3 * E)
+    f = CurveModel("paraboloid", R, soft, max_depth=2.5e-6).force(z - Z0, E)
+    start = Sample(thickness=H, poisson_ratio=NU, base_youngs_modulus=6 * E)
+    fit = fit_curve(z, f, tip="paraboloid", radius=R, sample=start, youngs_modulus=E,
+                    vary=("base_youngs_modulus", "contact_point"))
+    assert abs(fit.params["base_youngs_modulus"] / (3 * E) - 1) < 1e-5, fit.params
+    with pytest.raises(lc.InvalidInputError, match="rigid support"):
+        fit_curve(z, f, tip="paraboloid", radius=R, sample=LAYER, youngs_modulus=E,
+                  vary=("base_youngs_modulus",))

@@ -37,7 +37,7 @@ hundred times slower (``BENCHMARKS.md``).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Dict, Optional, Sequence, Tuple
 
 import numpy as np
@@ -48,6 +48,9 @@ from ._native import ConvergenceError, InvalidInputError, Material, Substrate
 __all__ = ["Sample", "CurveModel", "FitResult", "fit_curve"]
 
 _TIPS = ("paraboloid", "sphere", "cone", "rounded_cone", "flat_punch")
+# What a fit may vary (the last two rebuild the exact table for each value).
+_FITTABLE = ("youngs_modulus", "work_of_adhesion", "contact_point", "thickness",
+             "base_youngs_modulus")
 
 # Model evaluations a fit may take (the tests' fits take 15 to 80).
 _MAX_CALLS = 2000
@@ -245,7 +248,10 @@ def fit_curve(
     fixed-grips curve's steep tail). ``youngs_modulus``
     (Pa), ``work_of_adhesion`` (J/m^2, default 0) and ``contact_point`` (m)
     are the starting values; the names in ``vary`` are fitted (the work of
-    adhesion only on a retract segment), the others held. With
+    adhesion only on a retract segment), the others held. ``vary`` may also
+    name ``"thickness"`` and ``"base_youngs_modulus"`` (starting from the
+    sample's): each value tried then builds its own exact table, so such a
+    fit takes seconds to minutes. With
     ``spring_constant`` (N/m, the cantilever's) ``indentation`` is the piezo
     position of a force-piezo curve, and the tip's is ``z - F / k`` (the
     measured force bends the cantilever away from the sample).
@@ -268,9 +274,13 @@ def fit_curve(
         z = z - f / spring_constant
     if segment not in ("approach", "retract"):
         raise InvalidInputError(f"segment {segment!r}: expected 'approach' or 'retract'")
-    unknown = set(vary) - {"youngs_modulus", "work_of_adhesion", "contact_point"}
+    unknown = set(vary) - set(_FITTABLE)
     if unknown:
         raise InvalidInputError(f"vary: unknown names {sorted(unknown)}")
+    if "thickness" in vary and sample.thickness is None:
+        raise InvalidInputError("vary: a half-space has no thickness to fit")
+    if "base_youngs_modulus" in vary and sample.base_youngs_modulus is None:
+        raise InvalidInputError("vary: a rigid support has no modulus to fit")
     if segment == "retract":
         # Up to the jump off the sample (after the most tensile point, the
         # first point whose force is back above half of it): beyond it the
@@ -292,7 +302,7 @@ def fit_curve(
                 "tensile point); give the segment from the deepest point on"
             )
     w0 = 0.0 if work_of_adhesion is None else float(work_of_adhesion)
-    names = [n for n in ("youngs_modulus", "work_of_adhesion", "contact_point") if n in vary]
+    names = [n for n in _FITTABLE if n in vary]
     if segment == "approach" and "work_of_adhesion" in names:
         names.remove("work_of_adhesion")
         w0 = 0.0
@@ -303,19 +313,33 @@ def fit_curve(
     span = float(np.ptp(z)) or 1.0
     # The model reaches past the deepest point by the contact point's range
     # (half the span either way).
-    model = CurveModel(tip, radius, sample,
-                       max_depth=float(np.max(z) - contact_point) + 0.5 * span,
-                       half_angle=half_angle)
+    depth = float(np.max(z) - contact_point) + 0.5 * span
+    # One model per film: the thickness and the support's modulus, when
+    # fitted, change the exact solution itself (a table per value tried).
+    models: Dict[tuple, CurveModel] = {}
+
+    def model_for(v: Dict[str, float]) -> CurveModel:
+        key = (v["thickness"], v["base_youngs_modulus"])
+        if key not in models:
+            film = replace(sample, thickness=v["thickness"],
+                           base_youngs_modulus=v["base_youngs_modulus"])
+            models[key] = CurveModel(tip, radius, film, max_depth=depth, half_angle=half_angle)
+        return models[key]
+
     start = {"youngs_modulus": float(youngs_modulus), "work_of_adhesion": w0,
-             "contact_point": float(contact_point)}
-    # Fit in scaled units: moduli and works relative to their starting
-    # values, the contact point in units of the curve's span.
+             "contact_point": float(contact_point), "thickness": sample.thickness,
+             "base_youngs_modulus": sample.base_youngs_modulus}
+    # Fit in scaled units: moduli, works and the thickness relative to their
+    # starting values, the contact point in units of the curve's span.
     unit = {"youngs_modulus": start["youngs_modulus"], "work_of_adhesion": w0 or 1.0,
-            "contact_point": span}
+            "contact_point": span, "thickness": sample.thickness or 1.0,
+            "base_youngs_modulus": sample.base_youngs_modulus or 1.0}
     lower = {"youngs_modulus": 1e-6, "work_of_adhesion": 0.0,
-             "contact_point": (contact_point - 0.5 * span) / span}
+             "contact_point": (contact_point - 0.5 * span) / span,
+             "thickness": 1e-3, "base_youngs_modulus": 1e-6}
     upper = {"youngs_modulus": 1e6, "work_of_adhesion": 1e6,
-             "contact_point": (contact_point + 0.5 * span) / span}
+             "contact_point": (contact_point + 0.5 * span) / span,
+             "thickness": 1e3, "base_youngs_modulus": 1e6}
 
     def values(p) -> Dict[str, float]:
         out = dict(start)
@@ -325,7 +349,8 @@ def fit_curve(
 
     def evaluate(zz, *p):
         v = values(p)
-        return model.force(zz - v["contact_point"], v["youngs_modulus"], v["work_of_adhesion"])
+        return model_for(v).force(zz - v["contact_point"], v["youngs_modulus"],
+                                  v["work_of_adhesion"])
 
     # Forces in units of the largest measured one: in newtons the gradient
     # of the squared residuals is far below the optimiser's tolerances.
@@ -342,7 +367,8 @@ def fit_curve(
             f"the fit did not converge within {_MAX_CALLS} model evaluations ({error}); "
             "check the tip, the sample and the starting values"
         ) from error
-    params = values(popt)
+    fitted_values = values(popt)
+    params = {n: float(v) for n, v in fitted_values.items() if v is not None}
     errors = np.sqrt(np.clip(np.diag(pcov), 0.0, np.inf)) if np.all(np.isfinite(pcov)) \
         else np.full(len(names), np.inf)
     stderr = {n: float(e * unit[n]) for n, e in zip(names, errors)}
@@ -351,5 +377,6 @@ def fit_curve(
     fitted = evaluate(z, *popt)
     return FitResult(
         params=params, stderr=stderr, indentation=z, force=f, fitted=fitted,
-        residuals=f - fitted, calls=model.calls, model=model,
+        residuals=f - fitted, calls=sum(m.calls for m in models.values()),
+        model=model_for(fitted_values),
     )

@@ -45,6 +45,9 @@ pub(crate) struct FitArgs {
     /// Poisson ratio of the elastic support.
     #[arg(long, default_value_t = 0.3)]
     base_poisson: f64,
+    /// The film rests on glass without friction instead of being bonded.
+    #[arg(long)]
+    unbonded: bool,
     /// A bonded layer under the film, `E,nu,thickness` (Pa, -, m); repeat
     /// from the top down for a stack.
     #[arg(long, value_parser = layer)]
@@ -101,6 +104,7 @@ struct Sample {
     poisson: f64,
     base: Option<Material>,
     below: Vec<(f64, f64, f64)>,
+    unbonded: bool,
 }
 
 impl Sample {
@@ -112,6 +116,14 @@ impl Sample {
 
     fn substrate(&self, modulus: f64) -> Result<Substrate> {
         let film = Material::new(modulus, self.poisson)?;
+        if self.unbonded {
+            return match (self.thickness, self.base, self.below.is_empty()) {
+                (Some(h), None, true) => Ok(Substrate::layer_resting_on_rigid_base(film, h)?),
+                _ => Err("--unbonded: a film of --thickness resting on glass only \
+                          (no --base-modulus or --below)"
+                    .into()),
+            };
+        }
         if !self.below.is_empty() {
             let h = self
                 .thickness
@@ -348,6 +360,7 @@ pub(crate) fn fit(args: &FitArgs) -> Result<()> {
         poisson: args.poisson,
         base,
         below: args.below.clone(),
+        unbonded: args.unbonded,
     };
     let max_depth = (deepest + 0.5 * span).max(f64::MIN_POSITIVE);
     let table = build_table(&sample, tip, radius, max_depth, modulus)?;
