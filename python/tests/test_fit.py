@@ -80,7 +80,7 @@ def test_flat_punch_on_a_stiff_supported_layer():
     (dict(tip="pyramid"), "tip"),
     (dict(tip="cone"), "half_angle"),
     (dict(segment="sideways"), "segment"),
-    (dict(vary=("thickness",)), "vary"),
+    (dict(vary=("radius",)), "vary"),
     (dict(segment="retract", work_of_adhesion=0.0), "work_of_adhesion"),
 ])
 def test_bad_requests_are_refused(kwargs, match):
