@@ -180,3 +180,50 @@ fn the_exact_unbonded_series_and_dimitriadis() {
     // at nu = 0.5 (their alpha0 depends on nu; the exact one does not).
     assert!((DIMITRIADIS_UNBONDED[0] / series[0] - 1.1893).abs() < 1e-3);
 }
+
+#[test]
+fn scene_files_take_the_resting_film() {
+    // kind = "layer_resting_on_rigid_base": the scene's reference is the
+    // exact stiffness on the resting film, and its BEM curve meets it.
+    let toml = r#"
+[substrate]
+kind = "layer_resting_on_rigid_base"
+youngs_modulus = 1e4
+poisson_ratio = 0.5
+thickness = 4e-6
+
+[indenter]
+kind = "flat_punch"
+radius = 4e-6
+
+[protocol]
+kind = "cycle"
+max_depth = 1e-7
+steps = 3
+
+[resolution]
+cells_across = 32
+"#;
+    let scene = layered_contact::scene::Scene::from_toml(toml).unwrap();
+    let body = Substrate::layer_resting_on_rigid_base(gel(), 4e-6).unwrap();
+    assert_eq!(scene.substrate.build().unwrap(), body);
+    let reference = scene
+        .reference()
+        .unwrap()
+        .into_iter()
+        .find(|r| r.quantity == layered_contact::scene::Quantity::Stiffness)
+        .unwrap()
+        .value;
+    let exact = Axisymmetric::new(&body, 1.0)
+        .unwrap()
+        .flat_punch(4e-6)
+        .unwrap()
+        .stiffness();
+    assert!((reference / exact - 1.0).abs() < 1e-12);
+    let curve = scene.run(&mut |_| {}).unwrap();
+    let bem = layered_contact::scene::Quantity::Stiffness
+        .of(&curve)
+        .unwrap();
+    // 32 cells across: within 2 % (-0.6 % at 64, first order).
+    assert!((bem / reference - 1.0).abs() < 0.02, "{}", bem / reference);
+}

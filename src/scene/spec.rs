@@ -35,6 +35,16 @@ pub enum SubstrateSpec {
         /// `h`, m.
         thickness: f64,
     },
+    /// A layer resting on a rigid base without friction (see
+    /// [`Substrate::layer_resting_on_rigid_base`]).
+    LayerRestingOnRigidBase {
+        /// `E1`, Pa.
+        youngs_modulus: f64,
+        /// `nu1`.
+        poisson_ratio: f64,
+        /// `h`, m.
+        thickness: f64,
+    },
     /// A layer on an elastic half-space.
     LayerOnElasticBase {
         /// `E1`, Pa.
@@ -134,6 +144,14 @@ impl SubstrateSpec {
                 poisson_ratio,
                 thickness,
             } => Substrate::layer_on_rigid_base(
+                Material::new(youngs_modulus, poisson_ratio)?,
+                thickness,
+            ),
+            SubstrateSpec::LayerRestingOnRigidBase {
+                youngs_modulus,
+                poisson_ratio,
+                thickness,
+            } => Substrate::layer_resting_on_rigid_base(
                 Material::new(youngs_modulus, poisson_ratio)?,
                 thickness,
             ),
