@@ -181,6 +181,7 @@ fn the_exact_unbonded_series_and_dimitriadis() {
     assert!((DIMITRIADIS_UNBONDED[0] / series[0] - 1.1893).abs() < 1e-3);
 }
 
+#[cfg(feature = "serde")]
 #[test]
 fn scene_files_take_the_resting_film() {
     // kind = "layer_resting_on_rigid_base": the scene's reference is the
