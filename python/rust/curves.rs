@@ -122,12 +122,8 @@ pub(crate) fn tip_pull_off<'py>(
             || -> lc::Result<Vec<(&'static str, lc::analytic::ContactState)>> {
                 let modulus = substrate.surface_material().contact_modulus();
                 let (_, reach) = tip.pull_off_radii(work_of_adhesion, modulus);
-                // At most the exact solution's range; the search stays inside it.
-                let most = substrate.top_thickness().map_or(f64::INFINITY, |h| {
-                    h * lc::analytic::Axisymmetric::MAX_RADIUS_OVER_THICKNESS
-                });
                 let exact =
-                    lc::analytic::Axisymmetric::up_to_contact_radius(&substrate, reach.min(most))?;
+                    lc::analytic::Axisymmetric::up_to_contact_radius_in_range(&substrate, reach)?;
                 let states = exact.tip(tip, work_of_adhesion)?;
                 let pull = states.pull_off()?;
                 let mut out = vec![
@@ -151,4 +147,26 @@ pub(crate) fn tip_pull_off<'py>(
         d.set_item(name, entry)?;
     }
     Ok(d)
+}
+
+/// Which points of a retract segment (`position`, `force`: 1-D arrays of
+/// one length) are still on the sample (`analytic::before_jump_off`).
+#[pyfunction]
+pub(crate) fn before_jump_off<'py>(
+    py: Python<'py>,
+    position: PyReadonlyArrayDyn<'py, f64>,
+    force: PyReadonlyArrayDyn<'py, f64>,
+) -> PyResult<Bound<'py, PyArray1<bool>>> {
+    let n = checked_len("position", position.shape())?;
+    if checked_len("force", force.shape())? != n {
+        return Err(super::InvalidInputError::new_err(
+            "position and force: expected arrays of one length",
+        ));
+    }
+    let position: Vec<f64> = position.as_array().iter().copied().collect();
+    let force: Vec<f64> = force.as_array().iter().copied().collect();
+    Ok(PyArray1::from_vec(
+        py,
+        lc::analytic::before_jump_off(&position, &force),
+    ))
 }

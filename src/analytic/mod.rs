@@ -38,8 +38,8 @@ mod punch;
 mod sinusoid;
 
 pub use axisymmetric::{
-    Axisymmetric, ContactState, ForceCurve, LayeredFlatPunch, LayeredParaboloid, LayeredTip,
-    PullOff, Tip,
+    before_jump_off, Axisymmetric, ContactState, ForceCurve, LayeredFlatPunch, LayeredParaboloid,
+    LayeredTip, PullOff, Tip,
 };
 pub use cone::SneddonCone;
 pub use hertz::Hertz;

@@ -282,19 +282,9 @@ def fit_curve(
     if "base_youngs_modulus" in vary and sample.base_youngs_modulus is None:
         raise InvalidInputError("vary: a rigid support has no modulus to fit")
     if segment == "retract":
-        # Up to the jump off the sample (after the most tensile point, the
-        # first point whose force is back above half of it): beyond it the
-        # cantilever is free and the points say nothing of the sample,
-        # while the model's detachment is a jump that least squares cannot
-        # straddle.
-        # The jump: the first point after the most tensile one whose force
-        # is back above half of it.
-        order = np.argsort(-z, kind="stable")
-        zs, fs = z[order], f[order]
-        lowest = int(np.argmin(fs))
-        after = np.nonzero(fs[lowest:] > 0.5 * fs[lowest])[0]
-        last = lowest + (after[0] - 1 if after.size else fs.size - 1 - lowest)
-        keep = z >= zs[last]
+        # Up to the jump off the sample: beyond it the cantilever is free
+        # (analytic::before_jump_off).
+        keep = _native.before_jump_off(z, f)
         z, f = z[keep], f[keep]
         if z.size < 4:
             raise InvalidInputError(

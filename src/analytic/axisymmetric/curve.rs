@@ -81,11 +81,7 @@ impl ForceCurve {
             Tip::Paraboloid { radius } => Some(exact.paraboloid(radius, 0.0)?),
             _ => None,
         };
-        let limit = match tip {
-            Tip::Sphere { radius } => 0.95 * radius,
-            _ => f64::INFINITY,
-        }
-        .min(exact.max_contact_radius());
+        let limit = tip.max_contact_radius().min(exact.max_contact_radius());
         let mut largest = first_radius(tip, max_depth).min(limit);
         for _ in 0..WIDENINGS {
             let step = -SMALLEST.ln() / (POINTS - 1) as f64;
@@ -151,7 +147,7 @@ impl ForceCurve {
     pub fn on(substrate: &Substrate, tip: Tip, max_depth: f64) -> Result<Self> {
         let max_depth = positive_finite("max_depth", max_depth)?;
         let reach = 8.0 * first_radius(tip.validated()?, max_depth);
-        let exact = Axisymmetric::up_to_contact_radius(substrate, within_range(substrate, reach))?;
+        let exact = Axisymmetric::up_to_contact_radius_in_range(substrate, reach)?;
         Self::new(&exact, tip, max_depth)
     }
 
@@ -277,13 +273,6 @@ impl ForceCurve {
     }
 }
 
-/// `reach` (m) within the exact solution's range on `substrate`.
-fn within_range(substrate: &Substrate, reach: f64) -> f64 {
-    substrate.top_thickness().map_or(reach, |h| {
-        reach.min(h * Axisymmetric::MAX_RADIUS_OVER_THICKNESS)
-    })
-}
-
 /// A contact radius (m) near the deepest indentation's: Hertz's for a
 /// round tip, Sneddon's for a cone (the larger for a rounded cone).
 fn first_radius(tip: Tip, depth: f64) -> f64 {
@@ -391,4 +380,37 @@ fn invert(x: &[f64], y: &[f64], target: f64, start: usize) -> f64 {
         };
     }
     t
+}
+
+/// Which points of a measured retract segment (`position` into the sample,
+/// `force`) are still on the sample: those deeper than the jump off it,
+/// taken as the first point past the most tensile one, in order of
+/// decreasing position, whose force is back above half of it (the jump of
+/// an AFM cantilever, or the end of a fixed-grips curve's steep tail).
+/// Beyond it the cantilever is free and the points say nothing of the
+/// sample, while a model's detachment is a jump that least squares cannot
+/// straddle. Where no point comes back (the curve ends on the jump), or
+/// the most tensile point comes first, every point is kept.
+///
+/// ```
+/// use layered_contact::analytic::before_jump_off;
+///
+/// let z = [3.0, 2.0, 1.0, 0.0, -1.0];
+/// let f = [5.0, 1.0, -2.0, -0.5, 0.0];
+/// assert_eq!(before_jump_off(&z, &f), [true, true, true, false, false]);
+/// ```
+pub fn before_jump_off(position: &[f64], force: &[f64]) -> Vec<bool> {
+    let n = position.len().min(force.len());
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_by(|&a, &b| position[b].total_cmp(&position[a]));
+    let Some(lowest) = (0..n).min_by(|&a, &b| force[order[a]].total_cmp(&force[order[b]])) else {
+        return Vec::new();
+    };
+    let least = force[order[lowest]];
+    let last = match (lowest..n).find(|&k| force[order[k]] > 0.5 * least) {
+        Some(k) if k > 0 => k - 1,
+        _ => n - 1,
+    };
+    let cut = position[order[last]];
+    position[..n].iter().map(|&z| z >= cut).collect()
 }

@@ -39,7 +39,7 @@ mod paraboloid;
 mod punch;
 mod tip;
 
-pub use curve::ForceCurve;
+pub use curve::{before_jump_off, ForceCurve};
 
 use paraboloid::minimise;
 pub use paraboloid::{ContactState, LayeredParaboloid, PullOff};
@@ -400,6 +400,24 @@ impl Axisymmetric {
             .top_thickness()
             .map_or(1.0, |thickness| radius / thickness);
         Self::new(substrate, eps)
+    }
+
+    /// [`Axisymmetric::up_to_contact_radius`] with `max_contact_radius`
+    /// reduced to the most the solutions offer
+    /// ([`MAX_RADIUS_OVER_THICKNESS`](Self::MAX_RADIUS_OVER_THICKNESS)
+    /// layer thicknesses), for callers that search within whatever range
+    /// there is (a force curve's table, a pull-off's scan).
+    ///
+    /// # Errors
+    /// As [`Axisymmetric::up_to_contact_radius`].
+    pub fn up_to_contact_radius_in_range(
+        substrate: &Substrate,
+        max_contact_radius: f64,
+    ) -> Result<Self> {
+        let most = substrate
+            .top_thickness()
+            .map_or(f64::INFINITY, |h| h * Self::MAX_RADIUS_OVER_THICKNESS);
+        Self::up_to_contact_radius(substrate, max_contact_radius.min(most))
     }
 
     /// The flat cylindrical punch of `radius` (m), bonded or not.

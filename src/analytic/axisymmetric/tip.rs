@@ -170,6 +170,16 @@ impl Tip {
         }
     }
 
+    /// The largest contact radius the tip admits, m: `0.95 R` for a
+    /// spherical cap (its slope grows without bound at the equator),
+    /// unbounded otherwise.
+    pub(super) fn max_contact_radius(&self) -> f64 {
+        match *self {
+            Tip::Sphere { radius } => MAX_CAP * radius,
+            _ => f64::INFINITY,
+        }
+    }
+
     /// Where `g` has a kink (the rounded cone's `b`), m.
     fn kink(&self) -> Option<f64> {
         match *self {
@@ -193,7 +203,7 @@ impl Tip {
         let cone = |theta: f64| work * theta.tan().powi(2) / modulus;
         match *self {
             Tip::Paraboloid { radius } => (ball(radius) / 100.0, 10.0 * ball(radius)),
-            Tip::Sphere { radius } => (ball(radius) / 100.0, MAX_CAP * radius),
+            Tip::Sphere { radius } => (ball(radius) / 100.0, self.max_contact_radius()),
             Tip::Cone { half_angle } => (cone(half_angle) / 100.0, 100.0 * cone(half_angle)),
             Tip::RoundedCone {
                 half_angle,
@@ -277,7 +287,7 @@ impl LayeredTip<'_> {
     fn solved(&self, contact_radius: f64) -> Result<Solved> {
         let a = positive_finite("contact_radius", contact_radius)?;
         if let Tip::Sphere { radius } = self.tip {
-            if a > MAX_CAP * radius {
+            if a > self.tip.max_contact_radius() {
                 return Err(Error::InvalidParameter {
                     name: "contact_radius / sphere radius",
                     value: a / radius,
@@ -474,10 +484,7 @@ impl LayeredTip<'_> {
         let k = positive_finite("stiffness", stiffness)?;
         let pull = self.pull_off()?;
         let lo = pull.displacement_control.contact_radius;
-        let limit = self.range()?.1.min(match self.tip {
-            Tip::Sphere { radius } => MAX_CAP * radius,
-            _ => f64::INFINITY,
-        });
+        let limit = self.range()?.1.min(self.tip.max_contact_radius());
         let short = |a: f64| -> Result<bool> {
             let s = self.at_contact_radius(a)?;
             Ok(s.force + k * s.depth < 0.0)

@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
 use nalgebra_lm::{DMatrix, DVector, Dyn, Owned};
 
-use layered_contact::analytic::{ForceCurve, Tip};
+use layered_contact::analytic::{before_jump_off, ForceCurve, Tip};
 use layered_contact::{Base, Material, Substrate};
 
 use super::Result;
@@ -303,20 +303,14 @@ pub(crate) fn fit(args: &FitArgs) -> Result<()> {
         other => return Err(format!("--segment {other}: expected approach or retract").into()),
     };
     if adhesive {
-        // Up to the jump off the sample: after the most tensile point, the
-        // first whose force is back above half of it (as in Python).
-        let mut order: Vec<usize> = (0..z.len()).collect();
-        order.sort_by(|&a, &b| z[b].total_cmp(&z[a]));
-        let lowest = (0..order.len())
-            .min_by(|&a, &b| force[order[a]].total_cmp(&force[order[b]]))
-            .unwrap_or(0);
-        let least = force[order[lowest]];
-        let last = (lowest..order.len())
-            .find(|&k| force[order[k]] > 0.5 * least)
-            .map_or(order.len() - 1, |k| k.saturating_sub(1));
-        let kept: Vec<usize> = order[..=last].to_vec();
-        z = kept.iter().map(|&i| z[i]).collect();
-        force = kept.iter().map(|&i| force[i]).collect();
+        let keep = before_jump_off(&z, &force);
+        z = z.iter().zip(&keep).filter(|k| *k.1).map(|k| *k.0).collect();
+        force = force
+            .iter()
+            .zip(&keep)
+            .filter(|k| *k.1)
+            .map(|k| *k.0)
+            .collect();
         if z.len() < 4 {
             return Err("retract segment: fewer than 4 points before the pull-off".into());
         }
