@@ -190,6 +190,8 @@ def test_an_unbonded_film_is_fitted_with_its_own_model():
     assert bonded.params["youngs_modulus"] < 0.8 * E, bonded.params
     with pytest.raises(lc.InvalidInputError, match="unbonded"):
         Sample(thickness=H, bonded=False, base_youngs_modulus=1e6).substrate(E)
+    with pytest.raises(lc.InvalidInputError, match="unbonded"):
+        Sample(thickness=H, bonded=False, below=((1e6, 0.4, 1e-6),)).substrate(E)
 
 
 def test_the_thickness_and_the_support_can_be_fitted_too():

@@ -82,16 +82,16 @@ class Sample:
             return Substrate.half_space(layer)
         base = None if self.base_youngs_modulus is None else Material(
             self.base_youngs_modulus, self.base_poisson_ratio)
-        if self.below:
-            layers = [(layer, self.thickness)] + [
-                (Material(e, nu), t) for e, nu, t in self.below]
-            return Substrate.stack(layers, base)
         if not self.bonded:
             if base is not None or self.below:
                 raise InvalidInputError(
                     "bonded=False: an unbonded layer is modelled on a rigid support only"
                 )
             return Substrate.layer_resting_on_rigid_base(layer, self.thickness)
+        if self.below:
+            layers = [(layer, self.thickness)] + [
+                (Material(e, nu), t) for e, nu, t in self.below]
+            return Substrate.stack(layers, base)
         if base is None:
             return Substrate.layer_on_rigid_base(layer, self.thickness)
         return Substrate.layer_on_elastic_base(layer, self.thickness, base)
