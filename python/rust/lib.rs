@@ -140,6 +140,20 @@ impl Substrate {
         })
     }
 
+    /// A layer of thickness `thickness` (m) resting without friction on an
+    /// elastic half-space of `base`.
+    #[staticmethod]
+    fn layer_resting_on_elastic_base(
+        layer: &Material,
+        thickness: f64,
+        base: &Material,
+    ) -> PyResult<Self> {
+        Ok(Substrate {
+            inner: lc::Substrate::layer_resting_on_elastic_base(layer.inner, thickness, base.inner)
+                .py_err()?,
+        })
+    }
+
     /// A layer of thickness `thickness` (m) bonded to a rigid base.
     #[staticmethod]
     fn layer_on_rigid_base(layer: &Material, thickness: f64) -> PyResult<Self> {

@@ -189,7 +189,27 @@ def test_an_unbonded_film_is_fitted_with_its_own_model():
     bonded = fit_curve(z, f, tip="paraboloid", radius=R, sample=LAYER, youngs_modulus=5e3)
     assert bonded.params["youngs_modulus"] < 0.8 * E, bonded.params
     with pytest.raises(lc.InvalidInputError, match="unbonded"):
-        Sample(thickness=H, bonded=False, base_youngs_modulus=1e6).substrate(E)
+        Sample(thickness=H, bonded=False, below=((1e6, 0.4, 1e-6),)).substrate(E)
+
+
+def test_an_unbonded_film_on_a_gel_is_softer_than_bonded_and_stiffer_than_on_nothing():
+    # The native resting-on-an-elastic-base body: its punch stiffness lies
+    # between the bonded film on the same gel and the gel-free limit of an
+    # infinitely soft support, and a base far stiffer than the film tends
+    # to the film resting on glass (first order in E1*/E2*: 1e-4 here).
+    gel = dict(base_youngs_modulus=2.5e3, base_poisson_ratio=0.5)
+    resting = Sample(thickness=H, poisson_ratio=NU, bonded=False, **gel)
+    bonded = Sample(thickness=H, poisson_ratio=NU, **gel)
+    a = 2e-6
+
+    def stiffness(sample):
+        return float(lc.analytic.flat_punch_stiffness(sample.substrate(E), a))
+
+    assert stiffness(resting) < stiffness(bonded)
+    stiff = Sample(thickness=H, poisson_ratio=NU, bonded=False,
+                   base_youngs_modulus=1e4 * E, base_poisson_ratio=NU)
+    glass = Sample(thickness=H, poisson_ratio=NU, bonded=False)
+    assert abs(stiffness(stiff) / stiffness(glass) - 1.0) < 1e-3
     with pytest.raises(lc.InvalidInputError, match="unbonded"):
         Sample(thickness=H, bonded=False, below=((1e6, 0.4, 1e-6),)).substrate(E)
 

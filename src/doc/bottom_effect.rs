@@ -78,6 +78,15 @@
 //! contact is in uniaxial stress, `p = E* d / h` (`R ~ t/2`), where a
 //! bonded incompressible one is confined (`R ~ 2 t^3 / 3`).
 //!
+//! On an elastic support
+//! ([`Substrate::layer_resting_on_elastic_base`](crate::Substrate::layer_resting_on_elastic_base),
+//! [`CoatingFunctions::frictionless`](crate::substrate::CoatingFunctions::frictionless))
+//! the bottom face is pressed on by the support's compliance `2/(E2* q)`
+//! instead of held; long waves see the support alone (`R(0) = E1*/E2*`, as
+//! bonded), so the bottom effect starts at zeroth order and no Hertz-times-
+//! series form applies. Fit such a sample with the exact model
+//! (`layered_contact.fit.Sample(bonded=False, base_youngs_modulus=...)`).
+//!
 //! # Where each truncated series leaves the exact curve
 //!
 //! Paraboloid on an incompressible layer bonded to a rigid base, `R = h`

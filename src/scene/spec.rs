@@ -45,6 +45,20 @@ pub enum SubstrateSpec {
         /// `h`, m.
         thickness: f64,
     },
+    /// A layer resting on an elastic half-space without friction (see
+    /// [`Substrate::layer_resting_on_elastic_base`]).
+    LayerRestingOnElasticBase {
+        /// `E1`, Pa.
+        youngs_modulus: f64,
+        /// `nu1`.
+        poisson_ratio: f64,
+        /// `h`, m.
+        thickness: f64,
+        /// `E2`, Pa.
+        base_youngs_modulus: f64,
+        /// `nu2`.
+        base_poisson_ratio: f64,
+    },
     /// A layer on an elastic half-space.
     LayerOnElasticBase {
         /// `E1`, Pa.
@@ -154,6 +168,17 @@ impl SubstrateSpec {
             } => Substrate::layer_resting_on_rigid_base(
                 Material::new(youngs_modulus, poisson_ratio)?,
                 thickness,
+            ),
+            SubstrateSpec::LayerRestingOnElasticBase {
+                youngs_modulus,
+                poisson_ratio,
+                thickness,
+                base_youngs_modulus,
+                base_poisson_ratio,
+            } => Substrate::layer_resting_on_elastic_base(
+                Material::new(youngs_modulus, poisson_ratio)?,
+                thickness,
+                Material::new(base_youngs_modulus, base_poisson_ratio)?,
             ),
             SubstrateSpec::LayerOnElasticBase {
                 youngs_modulus,

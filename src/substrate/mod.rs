@@ -36,7 +36,7 @@ pub struct Coating {
     layer: Material,
     thickness: f64,
     base: Base,
-    /// Resting on a rigid base without friction instead of bonded.
+    /// Resting on its base without friction instead of bonded.
     frictionless: bool,
 }
 
@@ -56,8 +56,9 @@ impl Coating {
         &self.base
     }
 
-    /// Whether the layer rests on its (rigid) base without friction
-    /// ([`Substrate::layer_resting_on_rigid_base`]) instead of being bonded.
+    /// Whether the layer rests on its base without friction
+    /// ([`Substrate::layer_resting_on_rigid_base`],
+    /// [`Substrate::layer_resting_on_elastic_base`]) instead of being bonded.
     pub fn is_frictionless(&self) -> bool {
         self.frictionless
     }
@@ -65,7 +66,7 @@ impl Coating {
     /// The functions `R(t)` and `Lambda_g(t)` of this coating.
     pub fn functions(&self) -> CoatingFunctions {
         if self.frictionless {
-            CoatingFunctions::frictionless_rigid_base()
+            CoatingFunctions::frictionless(&self.layer, &self.base)
         } else {
             CoatingFunctions::new(&self.layer, &self.base)
         }
@@ -179,6 +180,49 @@ impl Substrate {
                 ..coating
             }),
             other => other,
+        })
+    }
+
+    /// A layer of `thickness` (m) resting without friction on an elastic
+    /// half-space of `base` (a gel on a softer or stiffer gel, a cell on a
+    /// soft substrate): shear-free interface, continuous normal displacement
+    /// and traction. See [`CoatingFunctions::frictionless`] for its coating
+    /// factor. `thickness = 0` gives the base's half-space and `thickness =
+    /// +inf` the layer's; a layer of the base's own material stays a layer
+    /// (the interface still slides).
+    ///
+    /// ```
+    /// use layered_contact::{Material, Substrate};
+    /// use layered_contact::analytic::Axisymmetric;
+    ///
+    /// let gel = Material::new(10e3, 0.5)?;
+    /// let bonded = Substrate::layer_on_elastic_base(gel, 4e-6, gel)?; // the half-space
+    /// let resting = Substrate::layer_resting_on_elastic_base(gel, 4e-6, gel)?;
+    /// let k = |s: &Substrate| Axisymmetric::new(s, 1.0)?.flat_punch(2e-6).map(|p| p.stiffness());
+    /// // Free to slide on its own material, the layer is softer than the half-space.
+    /// assert!(k(&resting)? < k(&bonded)?);
+    /// Ok::<(), layered_contact::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`Substrate::layer_on_elastic_base`].
+    pub fn layer_resting_on_elastic_base(
+        layer: Material,
+        thickness: f64,
+        base: Material,
+    ) -> Result<Self> {
+        // Validates as bonded (same limits), then keeps the layer even when
+        // it is of the base's material.
+        Self::layer_on_elastic_base(layer, thickness, base)?;
+        Ok(match thickness {
+            0.0 => Substrate::HalfSpace(base),
+            f64::INFINITY => Substrate::HalfSpace(layer),
+            _ => Substrate::Coated(Coating {
+                layer,
+                thickness,
+                base: Base::Elastic(base),
+                frictionless: true,
+            }),
         })
     }
 

@@ -26,6 +26,10 @@ class Substrate:
     @staticmethod
     def layer_resting_on_rigid_base(layer: Material, thickness: float) -> Substrate: ...
     @staticmethod
+    def layer_resting_on_elastic_base(
+        layer: Material, thickness: float, base: Material
+    ) -> Substrate: ...
+    @staticmethod
     def layer_on_elastic_base(layer: Material, thickness: float, base: Material) -> Substrate: ...
     @staticmethod
     def stack(

@@ -69,8 +69,8 @@ class Sample:
     base_youngs_modulus: Optional[float] = None
     base_poisson_ratio: float = 0.3
     below: Tuple[Tuple[float, float, float], ...] = ()
-    #: False: the layer rests on a rigid support without friction
-    #: (Dimitriadis et al. 2002's unbonded layer).
+    #: False: the layer rests on its support (rigid or elastic) without
+    #: friction (Dimitriadis et al. 2002's unbonded layer).
     bonded: bool = True
 
     def substrate(self, youngs_modulus: float) -> Substrate:
@@ -83,11 +83,14 @@ class Sample:
         base = None if self.base_youngs_modulus is None else Material(
             self.base_youngs_modulus, self.base_poisson_ratio)
         if not self.bonded:
-            if base is not None or self.below:
+            if self.below:
                 raise InvalidInputError(
-                    "bonded=False: an unbonded layer is modelled on a rigid support only"
+                    "bonded=False: an unbonded layer rests on a rigid or an elastic "
+                    "support, not on layers below"
                 )
-            return Substrate.layer_resting_on_rigid_base(layer, self.thickness)
+            if base is None:
+                return Substrate.layer_resting_on_rigid_base(layer, self.thickness)
+            return Substrate.layer_resting_on_elastic_base(layer, self.thickness, base)
         if self.below:
             layers = [(layer, self.thickness)] + [
                 (Material(e, nu), t) for e, nu, t in self.below]

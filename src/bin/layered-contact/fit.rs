@@ -68,28 +68,86 @@ pub(crate) struct FitArgs {
     /// tip's is `z - F/k`.
     #[arg(long)]
     spring_constant: Option<f64>,
+    /// Fit the film's thickness too (starting from --thickness).
+    #[arg(long)]
+    fit_thickness: bool,
+    /// Fit the elastic support's modulus too (starting from --base-modulus).
+    #[arg(long)]
+    fit_base_modulus: bool,
     /// Output folder for fit.csv (data, model, residuals).
     #[arg(short, long, default_value = "out")]
     out: PathBuf,
 }
 
-/// The least-squares problem in scaled parameters: the modulus over its
-/// start, the contact point over the curve's span, the work over its
-/// start; residuals in units of the largest measured force.
+/// A fitted parameter.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Param {
+    Modulus,
+    ContactPoint,
+    Work,
+    Thickness,
+    BaseModulus,
+}
+
+impl Param {
+    fn name(self) -> &'static str {
+        match self {
+            Param::Modulus => "youngs_modulus (Pa)",
+            Param::ContactPoint => "contact_point (m)",
+            Param::Work => "work_of_adhesion (J/m^2)",
+            Param::Thickness => "thickness (m)",
+            Param::BaseModulus => "base_youngs_modulus (Pa)",
+        }
+    }
+
+    /// The value at the scaled parameter `p`: `unit e^p` for the positive
+    /// quantities (so that no step of the optimiser leaves their range),
+    /// `unit p` for the contact point.
+    fn value(self, p: f64, unit: f64) -> f64 {
+        match self {
+            Param::ContactPoint => unit * p,
+            _ => unit * p.exp(),
+        }
+    }
+
+    /// The scaled parameter of `value`.
+    fn scaled(self, value: f64, unit: f64) -> f64 {
+        match self {
+            Param::ContactPoint => value / unit,
+            _ => (value / unit).ln(),
+        }
+    }
+}
+
+/// The least-squares problem in scaled parameters: the logarithm of each
+/// positive quantity over its start, the contact point over the curve's
+/// span (see [`Param::value`]); residuals in units of the largest measured
+/// force.
 #[derive(Clone)]
 struct Problem<'a> {
     model: &'a Model,
     z: &'a [f64],
     force: &'a [f64],
-    unit: [f64; 3],
+    fitted: &'a [Param],
+    unit: Vec<f64>,
     params: DVector<f64>,
-    adhesive: bool,
     force_unit: f64,
+}
+
+/// The model's inputs at one set of parameters.
+#[derive(Clone, Copy, Debug)]
+struct Values {
+    modulus: f64,
+    contact: f64,
+    work: f64,
+    thickness: Option<f64>,
+    /// Young's modulus of the elastic support.
+    base_modulus: Option<f64>,
 }
 
 /// The exact model: one table at the starting modulus, rescaled on glass
 /// or a half-space; rebuilt for each modulus on an elastic support or a
-/// stack.
+/// stack, and for each thickness or support modulus when they are fitted.
 struct Model {
     sample: Sample,
     tip: Option<Tip>,
@@ -119,8 +177,11 @@ impl Sample {
         if self.unbonded {
             return match (self.thickness, self.base, self.below.is_empty()) {
                 (Some(h), None, true) => Ok(Substrate::layer_resting_on_rigid_base(film, h)?),
-                _ => Err("--unbonded: a film of --thickness resting on glass only \
-                          (no --base-modulus or --below)"
+                (Some(h), Some(base), true) => {
+                    Ok(Substrate::layer_resting_on_elastic_base(film, h, base)?)
+                }
+                _ => Err("--unbonded: a film of --thickness resting on glass or on \
+                          --base-modulus (not on --below layers)"
                     .into()),
             };
         }
@@ -160,37 +221,68 @@ fn build_table(
 }
 
 impl Model {
-    fn forces(&self, depths: &[f64], modulus: f64, work: f64) -> Vec<f64> {
-        if self.sample.scales() {
+    fn forces(&self, depths: &[f64], v: &Values) -> Vec<f64> {
+        let base = self.sample.base;
+        let fixed = v.thickness == self.sample.thickness
+            && v.base_modulus == base.map(|b| b.youngs_modulus());
+        if fixed && self.sample.scales() {
             return self
                 .table
-                .forces(depths, modulus / self.table_modulus, work);
+                .forces(depths, v.modulus / self.table_modulus, v.work);
         }
-        match build_table(&self.sample, self.tip, self.radius, self.max_depth, modulus) {
-            Ok(table) => table.forces(depths, 1.0, work),
+        // The support's Poisson ratio stays as given.
+        let table = match (base, v.base_modulus) {
+            (Some(b), Some(e)) => Material::new(e, b.poisson_ratio()).map(Some),
+            _ => Ok(base),
+        }
+        .map_err(Into::into)
+        .and_then(|base| {
+            let sample = Sample {
+                thickness: v.thickness,
+                base,
+                below: self.sample.below.clone(),
+                ..self.sample
+            };
+            build_table(&sample, self.tip, self.radius, self.max_depth, v.modulus)
+        });
+        match table {
+            Ok(table) => table.forces(depths, 1.0, v.work),
             Err(_) => vec![f64::NAN; depths.len()],
         }
     }
 }
 
 impl Problem<'_> {
-    fn values(&self) -> [f64; 3] {
-        let p = &self.params;
-        [
-            p[0] * self.unit[0],
-            p[1] * self.unit[1],
-            if self.adhesive {
-                p[2] * self.unit[2]
-            } else {
-                0.0
-            },
-        ]
+    fn values(&self) -> Values {
+        let sample = &self.model.sample;
+        let mut v = Values {
+            modulus: f64::NAN,
+            contact: f64::NAN,
+            work: 0.0,
+            thickness: sample.thickness,
+            base_modulus: sample.base.map(|b| b.youngs_modulus()),
+        };
+        for (k, param) in self.fitted.iter().enumerate() {
+            let value = self.value_of(k);
+            match param {
+                Param::Modulus => v.modulus = value,
+                Param::ContactPoint => v.contact = value,
+                Param::Work => v.work = value,
+                Param::Thickness => v.thickness = Some(value),
+                Param::BaseModulus => v.base_modulus = Some(value),
+            }
+        }
+        v
+    }
+
+    fn value_of(&self, k: usize) -> f64 {
+        self.fitted[k].value(self.params[k], self.unit[k])
     }
 
     fn model(&self) -> Vec<f64> {
-        let [modulus, contact, work] = self.values();
-        let depths: Vec<f64> = self.z.iter().map(|z| z - contact).collect();
-        self.model.forces(&depths, modulus, work)
+        let v = self.values();
+        let depths: Vec<f64> = self.z.iter().map(|z| z - v.contact).collect();
+        self.model.forces(&depths, &v)
     }
 }
 
@@ -372,25 +464,43 @@ pub(crate) fn fit(args: &FitArgs) -> Result<()> {
         .fold(0.0, f64::max)
         .max(f64::MIN_POSITIVE);
     let work = positive("work", Some(args.work))?;
-    let start: Vec<f64> = if adhesive {
-        vec![1.0, args.contact_point / span, 1.0]
-    } else {
-        vec![1.0, args.contact_point / span]
-    };
+    let mut fitted = vec![(Param::Modulus, modulus), (Param::ContactPoint, span)];
+    if adhesive {
+        fitted.push((Param::Work, work));
+    }
+    if args.fit_thickness {
+        let h = args
+            .thickness
+            .ok_or("--fit-thickness starts from --thickness")?;
+        fitted.push((Param::Thickness, h));
+    }
+    if args.fit_base_modulus {
+        let e = base
+            .map(|b| b.youngs_modulus())
+            .ok_or("--fit-base-modulus starts from --base-modulus")?;
+        fitted.push((Param::BaseModulus, e));
+    }
+    let start = fitted
+        .iter()
+        .map(|&(param, unit)| match param {
+            Param::ContactPoint => param.scaled(args.contact_point, unit),
+            _ => 0.0,
+        })
+        .collect();
+    let params: Vec<Param> = fitted.iter().map(|f| f.0).collect();
     let problem = Problem {
         model: &model,
         z: &z,
         force: &force,
-        unit: [modulus, span, work],
+        fitted: &params,
+        unit: fitted.iter().map(|f| f.1).collect(),
         params: DVector::from_vec(start),
-        adhesive,
         force_unit,
     };
     let (problem, report) = LevenbergMarquardt::new().minimize(problem);
     if !report.termination.was_successful() {
         return Err(format!("the fit did not converge: {:?}", report.termination).into());
     }
-    let values = problem.values();
     let residuals = problem
         .residuals()
         .ok_or("the model is not finite at the fit")?;
@@ -400,14 +510,19 @@ pub(crate) fn fit(args: &FitArgs) -> Result<()> {
     let covariance = (jacobian.transpose() * &jacobian)
         .try_inverse()
         .ok_or("the parameters are not determined by the curve (singular normal matrix)")?;
-    let names = [
-        "youngs_modulus (Pa)",
-        "contact_point (m)",
-        "work_of_adhesion (J/m^2)",
-    ];
-    for k in 0..problem.params.len() {
-        let stderr = (covariance[(k, k)] * variance).sqrt() * problem.unit[k];
-        say!("{:>26} = {:.6e} +- {:.2e}", names[k], values[k], stderr);
+    for (k, param) in params.iter().enumerate() {
+        // d value / d p: the unit, or the value itself for a logarithm.
+        let slope = match param {
+            Param::ContactPoint => problem.unit[k],
+            _ => problem.value_of(k),
+        };
+        let stderr = (covariance[(k, k)] * variance).sqrt() * slope;
+        say!(
+            "{:>26} = {:.6e} +- {:.2e}",
+            param.name(),
+            problem.value_of(k),
+            stderr
+        );
     }
     say!(
         "{} points, {} model evaluations, rms residual {:.3e} N",
