@@ -100,6 +100,7 @@ mod numerics;
 mod parallel;
 pub mod scene;
 pub mod solver;
+pub mod stress;
 pub mod substrate;
 pub mod topography;
 

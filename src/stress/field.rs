@@ -1,0 +1,363 @@
+//! [`SubsurfaceStress`]: the modes of a body solved once per grid, then
+//! depth planes of any pressure by inverse FFTs.
+
+use std::collections::HashMap;
+
+use num_complex::Complex;
+
+use crate::error::{Error, Result};
+use crate::grid::{Boundary, Grid};
+use crate::substrate::{Base, Substrate};
+
+use super::fft::Fft2;
+use super::mode::{Column, Ply};
+use super::{InterfaceTractions, Side, StressPlane, DEFAULT_PADDING, MAX_PADDED_CELLS};
+
+/// Plans the stresses below a grid on one body: the exact solution of
+/// every distinct wavenumber once, then any number of planes for any
+/// pressure.
+pub struct SubsurfaceStress {
+    column: Column,
+    grid: Grid,
+    boundary: Boundary,
+    /// Rows and columns of the (padded) FFT grid.
+    size: (usize, usize),
+    fft: Fft2,
+    /// Per spectrum bin (rows x half), the index of its wavenumber in
+    /// `coefficients` (`u32::MAX` for the mean).
+    bins: Vec<u32>,
+    /// Per distinct wavenumber: `q` and the basis coefficients.
+    wavenumbers: Vec<f64>,
+    coefficients: Vec<f64>,
+    /// Direction cosines of each bin's wavevector, 0 where the mode is its
+    /// own mirror image (a Nyquist row or column), so that odd multipliers
+    /// keep the spectrum Hermitian.
+    cosines: Vec<(f64, f64)>,
+    /// The pressure's spectrum and one component's.
+    spectrum: Vec<Complex<f64>>,
+    work: Vec<Complex<f64>>,
+}
+
+/// Poisson ratio of the material at `z`.
+fn poisson_at(column: &Column, index: usize) -> f64 {
+    column
+        .plies
+        .get(index)
+        .or(column.base.as_ref())
+        .map_or(0.0, |p| p.nu)
+}
+
+impl SubsurfaceStress {
+    /// Plans the stresses in `substrate` under `grid`; an isolated grid is
+    /// padded [`DEFAULT_PADDING`] times.
+    ///
+    /// # Errors
+    /// As [`SubsurfaceStress::with_padding`].
+    pub fn new(substrate: &Substrate, grid: &Grid, boundary: Boundary) -> Result<Self> {
+        let padding = match boundary {
+            Boundary::Isolated => DEFAULT_PADDING,
+            Boundary::Periodic => 1,
+        };
+        Self::with_padding(substrate, grid, boundary, padding)
+    }
+
+    /// Plans the stresses with an isolated grid zero-padded `padding` times
+    /// along each axis (rounded up to a length whose FFT is fast); the
+    /// images' error falls about like `padding^-3` (see the [module
+    /// docs](super)).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for a padding below 2 on an isolated
+    /// grid, other than 1 on a periodic one, or a padded grid beyond
+    /// [`MAX_PADDED_CELLS`]; [`Error::Internal`] if a wavenumber's system
+    /// is singular (not seen on any body the constructors accept).
+    pub fn with_padding(
+        substrate: &Substrate,
+        grid: &Grid,
+        boundary: Boundary,
+        padding: usize,
+    ) -> Result<Self> {
+        let valid = match boundary {
+            Boundary::Isolated => padding >= 2,
+            Boundary::Periodic => padding == 1,
+        };
+        let (rows, columns) = match boundary {
+            Boundary::Isolated => (
+                crate::grid::fft_friendly(grid.rows().saturating_mul(padding)),
+                crate::grid::fft_friendly(grid.columns().saturating_mul(padding)),
+            ),
+            Boundary::Periodic => (grid.rows(), grid.columns()),
+        };
+        if !valid || rows.saturating_mul(columns) > MAX_PADDED_CELLS {
+            return Err(Error::InvalidParameter {
+                name: "padding of the subsurface stress grid",
+                value: padding as f64,
+                expected: "1 on a periodic grid; at least 2 on an isolated one, with at most \
+                           2^28 padded cells",
+            });
+        }
+        let column = column_of(substrate);
+        let half = columns / 2 + 1;
+        let dx = grid.spacing();
+        let mut bins = vec![u32::MAX; rows * half];
+        let mut cosines = vec![(0.0, 0.0); rows * half];
+        let mut index: HashMap<u64, u32> = HashMap::new();
+        let mut wavenumbers = Vec::new();
+        for i in 0..rows {
+            let ki = if 2 * i <= rows {
+                i as f64
+            } else {
+                i as f64 - rows as f64
+            };
+            let ky = 2.0 * std::f64::consts::PI * ki / (rows as f64 * dx);
+            let nyquist_y = rows % 2 == 0 && 2 * i == rows;
+            for j in 0..half {
+                let kx = 2.0 * std::f64::consts::PI * j as f64 / (columns as f64 * dx);
+                let nyquist_x = columns % 2 == 0 && 2 * j == columns;
+                let q = kx.hypot(ky);
+                if q == 0.0 {
+                    continue;
+                }
+                let next = wavenumbers.len() as u32;
+                let id = *index.entry(q.to_bits()).or_insert_with(|| {
+                    wavenumbers.push(q);
+                    next
+                });
+                bins[i * half + j] = id;
+                cosines[i * half + j] = (
+                    if nyquist_x { 0.0 } else { kx / q },
+                    if nyquist_y { 0.0 } else { ky / q },
+                );
+            }
+        }
+        let n = column.unknowns();
+        let mut coefficients = vec![0.0; n * wavenumbers.len()];
+        let mut matrix = Vec::new();
+        for (k, &q) in wavenumbers.iter().enumerate() {
+            column.solve(q, &mut matrix, &mut coefficients[k * n..(k + 1) * n])?;
+        }
+        Ok(SubsurfaceStress {
+            column,
+            grid: *grid,
+            boundary,
+            size: (rows, columns),
+            fft: Fft2::new(rows, columns),
+            bins,
+            wavenumbers,
+            coefficients,
+            cosines,
+            spectrum: vec![Complex::default(); rows * half],
+            work: vec![Complex::default(); rows * half],
+        })
+    }
+
+    /// The grid the stresses are computed on.
+    pub fn grid(&self) -> &Grid {
+        &self.grid
+    }
+
+    /// The depths of the interfaces (m), top down, and of the base's top
+    /// (the last entry; for a layer on a rigid base, the base).
+    pub fn interface_depths(&self) -> Vec<f64> {
+        let mut depth = 0.0;
+        self.column
+            .plies
+            .iter()
+            .map(|ply| {
+                depth += ply.thickness;
+                depth
+            })
+            .collect()
+    }
+
+    /// The six components on the plane `z = depth` (m) under `pressure`
+    /// (Pa, one value per cell, compressive positive), in the layer on the
+    /// given `side` of an interface at that depth.
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] if `pressure` does not fit the grid;
+    /// [`Error::InvalidParameter`] for a negative or non-finite depth, or
+    /// a depth in or below a rigid base; [`Error::NonFinite`] for a
+    /// non-finite pressure.
+    pub fn plane(&mut self, pressure: &[f64], depth: f64, side: Side) -> Result<StressPlane> {
+        self.check(pressure)?;
+        let total: f64 = self.column.plies.iter().map(|p| p.thickness).sum();
+        let rigid = self.column.base.is_none();
+        if !(depth >= 0.0 && depth.is_finite())
+            || (rigid && (depth > total || (depth == total && side == Side::Below)))
+        {
+            return Err(Error::InvalidParameter {
+                name: "depth of a stress plane (m)",
+                value: depth,
+                expected: "finite, at least 0, and above a rigid base",
+            });
+        }
+        let (layer, top) = self.column.locate(depth, side == Side::Above);
+        let (rows, columns) = self.size;
+        let width = self.grid.columns();
+        let mut padded = vec![0.0; rows * columns];
+        for (i, row) in pressure.chunks_exact(width).enumerate() {
+            padded[i * columns..i * columns + width].copy_from_slice(row);
+        }
+        self.fft.forward(&padded, &mut self.spectrum);
+        let n = self.column.unknowns();
+        // The six spectra, one after the other through the same buffer.
+        let mut out = StressPlane {
+            depth,
+            xx: vec![0.0; self.grid.len()],
+            yy: vec![0.0; self.grid.len()],
+            zz: vec![0.0; self.grid.len()],
+            xy: vec![0.0; self.grid.len()],
+            xz: vec![0.0; self.grid.len()],
+            yz: vec![0.0; self.grid.len()],
+        };
+        // Per bin, the mode's stresses (zz, xi xi, eta eta, xi z) per unit pressure.
+        let modes: Vec<[f64; 4]> = self
+            .bins
+            .iter()
+            .map(|&id| {
+                if id == u32::MAX {
+                    return [0.0; 4];
+                }
+                let id = id as usize;
+                let q = self.wavenumbers[id];
+                self.column.stress_at(
+                    layer,
+                    q * (depth - top),
+                    q,
+                    &self.coefficients[id * n..(id + 1) * n],
+                )
+            })
+            .collect();
+        // The mean mode's in-plane stress per unit pressure: uniaxial strain
+        // on a periodic grid (no mean strain in the plane), the direction
+        // average of the long-wave limit for an isolated contact.
+        let lateral = match self.boundary {
+            Boundary::Periodic => {
+                let nu = poisson_at(&self.column, layer);
+                -nu / (1.0 - nu)
+            }
+            Boundary::Isolated => {
+                let [_, xi, eta] = self.column.long_wave(layer);
+                0.5 * (xi + eta)
+            }
+        };
+        type Multiplier = fn(&[f64; 4], (f64, f64)) -> Complex<f64>;
+        let components: [(Multiplier, f64); 6] = [
+            (
+                |m, (c, s)| Complex::new(c * c * m[1] + s * s * m[2], 0.0),
+                lateral,
+            ),
+            (
+                |m, (c, s)| Complex::new(s * s * m[1] + c * c * m[2], 0.0),
+                lateral,
+            ),
+            (|m, _| Complex::new(m[0], 0.0), -1.0),
+            (|m, (c, s)| Complex::new(c * s * (m[1] - m[2]), 0.0), 0.0),
+            (|m, (c, _)| Complex::new(0.0, -c * m[3]), 0.0),
+            (|m, (_, s)| Complex::new(0.0, -s * m[3]), 0.0),
+        ];
+        let targets: [&mut Vec<f64>; 6] = [
+            &mut out.xx,
+            &mut out.yy,
+            &mut out.zz,
+            &mut out.xy,
+            &mut out.xz,
+            &mut out.yz,
+        ];
+        let mut field = vec![0.0; rows * columns];
+        for ((multiplier, uniform), target) in components.into_iter().zip(targets) {
+            for (k, w) in self.work.iter_mut().enumerate() {
+                *w = self.spectrum[k] * multiplier(&modes[k], self.cosines[k]);
+            }
+            self.work[0] = self.spectrum[0] * uniform;
+            self.fft.inverse(&mut self.work, &mut field);
+            for (i, row) in target.chunks_exact_mut(width).enumerate() {
+                row.copy_from_slice(&field[i * columns..i * columns + width]);
+            }
+        }
+        let components = [&out.xx, &out.yy, &out.zz, &out.xy, &out.xz, &out.yz];
+        for v in components.into_iter().flatten() {
+            if !v.is_finite() {
+                return Err(Error::NonFinite {
+                    what: "a subsurface stress",
+                    value: *v,
+                });
+            }
+        }
+        Ok(out)
+    }
+
+    /// The tractions on every interface (the planes at the layers'
+    /// bottoms; the last is the base's top).
+    ///
+    /// # Errors
+    /// As [`SubsurfaceStress::plane`].
+    pub fn interfaces(&mut self, pressure: &[f64]) -> Result<Vec<InterfaceTractions>> {
+        self.interface_depths()
+            .into_iter()
+            .map(|depth| {
+                let plane = self.plane(pressure, depth, Side::Above)?;
+                Ok(InterfaceTractions {
+                    depth,
+                    normal: plane.zz,
+                    shear_x: plane.xz,
+                    shear_y: plane.yz,
+                })
+            })
+            .collect()
+    }
+
+    fn check(&self, pressure: &[f64]) -> Result<()> {
+        if pressure.len() != self.grid.len() {
+            return Err(Error::ShapeMismatch {
+                field: "pressure",
+                found: pressure.len(),
+                expected: self.grid.len(),
+            });
+        }
+        if let Some(v) = pressure.iter().find(|v| !v.is_finite()) {
+            return Err(Error::NonFinite {
+                what: "the pressure given for the subsurface stresses",
+                value: *v,
+            });
+        }
+        Ok(())
+    }
+}
+
+/// The body as the mode solution sees it, in units of the top layer's
+/// shear modulus.
+fn column_of(substrate: &Substrate) -> Column {
+    let top = substrate.surface_material().shear_modulus();
+    let ply = |m: &crate::Material, thickness: f64| Ply {
+        mu: m.shear_modulus() / top,
+        nu: m.poisson_ratio(),
+        thickness,
+    };
+    let base = |b: &Base| match b {
+        Base::Rigid => None,
+        Base::Elastic(m) => Some(ply(m, 0.0)),
+    };
+    match substrate {
+        Substrate::HalfSpace(m) => Column {
+            plies: vec![],
+            base: Some(ply(m, 0.0)),
+            frictionless: false,
+        },
+        Substrate::Coated(c) => Column {
+            plies: vec![ply(c.layer(), c.thickness())],
+            base: base(c.base()),
+            frictionless: c.is_frictionless(),
+        },
+        Substrate::Stack(s) => Column {
+            plies: s
+                .layers()
+                .iter()
+                .map(|l| ply(l.material(), l.thickness()))
+                .collect(),
+            base: base(s.base()),
+            frictionless: false,
+        },
+    }
+}

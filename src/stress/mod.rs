@@ -1,0 +1,133 @@
+//! Stresses below the surface: the full tensor at any depth inside a
+//! half-space, a layer or a stack, from a surface pressure on the grid of
+//! a solve (periodic or isolated).
+//!
+//! Each Fourier mode of the pressure is carried through the layers exactly
+//! (see [`mode`](self::mode): an Airy stress function per layer written in
+//! functions that decay away from one of its faces, so no exponential
+//! grows), and a depth plane is six inverse FFTs of the modes' stresses.
+//! The pressure is taken as the trigonometric interpolant of the cell
+//! values (the band-limited field the grid represents, as in tamaas'
+//! volume operators); on planes shallower than a few cells its difference
+//! from a pressure uniform in each cell is visible (it decays like
+//! `e^(-pi z / Delta)`).
+//!
+//! On a periodic grid the result is exact for the interpolated pressure
+//! (the mean pressure puts every layer in uniaxial strain: a periodic body
+//! cannot strain on average in its plane). An isolated contact is computed
+//! on a grid zero-padded [`DEFAULT_PADDING`] times along each axis, with
+//! the mean mode set to the limit of long waves, whose direction average
+//! is the integral of the stress of an unbounded body over a plane. What
+//! the padding leaves is the field of the periodic images less their mean,
+//! which falls about like the cube of the period: on the axis of a Hertz
+//! contact 16 cells in radius on a grid 4 radii wide, 1.4e-2 `p0` padded
+//! twice, 1.9e-3 four times (the default) and 2.5e-4 eight times, where
+//! the cell size's own error takes over (`tests/stress.rs`; choose the
+//! padding with [`SubsurfaceStress::with_padding`]).//!
+//! ```
+//! use layered_contact::stress::{Side, SubsurfaceStress};
+//! use layered_contact::{Boundary, Grid, Material, Substrate};
+//!
+//! // A cosine pressure p0 cos(q x) on a periodic half-space: at depth z,
+//! // sigma_zz = -p0 (1 + q z) e^(-q z) cos(q x) (Johnson 1985, sec. 2.6).
+//! let body = Substrate::half_space(Material::new(1e9, 0.3)?);
+//! let grid = Grid::new(8, 64, 1e-6)?;
+//! let mut stress = SubsurfaceStress::new(&body, &grid, Boundary::Periodic)?;
+//! let q = 2.0 * std::f64::consts::PI / 64e-6;
+//! let x = |j: usize| (j as f64 + 0.5) * 1e-6;
+//! let pressure: Vec<f64> = (0..grid.len()).map(|k| 1e6 * (q * x(k % 64)).cos()).collect();
+//! let z = 5e-6;
+//! let plane = stress.plane(&pressure, z, Side::Below)?;
+//! let expected = -1e6 * (1.0 + q * z) * (-q * z).exp() * (q * x(3)).cos();
+//! assert!((plane.zz[3] - expected).abs() < 1e-6);
+//! # Ok::<(), layered_contact::Error>(())
+//! ```
+
+mod fft;
+mod field;
+mod mode;
+mod tensor;
+
+pub use field::SubsurfaceStress;
+pub use tensor::Stress;
+
+/// How many times an isolated grid is padded along each axis by
+/// [`SubsurfaceStress::new`].
+pub const DEFAULT_PADDING: usize = 4;
+
+/// The most cells a padded stress grid may have (2^28: 4 GiB per complex
+/// spectrum).
+pub const MAX_PADDED_CELLS: usize = 1 << 28;
+
+/// Which side of an interface a plane at exactly its depth lies on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Side {
+    /// In the layer above (or the top layer at `z = 0`).
+    Above,
+    /// In the layer (or base) below; inside a layer both are the same.
+    #[default]
+    Below,
+}
+
+/// The six stress components on one plane `z = depth`, Pa, each a
+/// row-major field of the grid's cells (the cell centres).
+#[derive(Debug, Clone, PartialEq)]
+pub struct StressPlane {
+    /// Depth below the surface, m.
+    pub depth: f64,
+    /// `sigma_xx` (`x` along the grid's columns).
+    pub xx: Vec<f64>,
+    /// `sigma_yy` (`y` along its rows).
+    pub yy: Vec<f64>,
+    /// `sigma_zz`.
+    pub zz: Vec<f64>,
+    /// `sigma_xy`.
+    pub xy: Vec<f64>,
+    /// `sigma_xz`.
+    pub xz: Vec<f64>,
+    /// `sigma_yz`.
+    pub yz: Vec<f64>,
+}
+
+impl StressPlane {
+    /// The tensor at cell `k`.
+    pub fn at(&self, k: usize) -> Stress {
+        Stress {
+            xx: self.xx[k],
+            yy: self.yy[k],
+            zz: self.zz[k],
+            xy: self.xy[k],
+            xz: self.xz[k],
+            yz: self.yz[k],
+        }
+    }
+
+    /// A derived field, `measure` applied at every cell (for example
+    /// `Stress::von_mises`).
+    pub fn map(&self, measure: impl Fn(&Stress) -> f64) -> Vec<f64> {
+        (0..self.zz.len()).map(|k| measure(&self.at(k))).collect()
+    }
+
+    /// The largest value of `measure` on the plane and the cell holding it.
+    pub fn max_of(&self, measure: impl Fn(&Stress) -> f64) -> (f64, usize) {
+        (0..self.zz.len()).map(|k| (measure(&self.at(k)), k)).fold(
+            (f64::NEG_INFINITY, 0),
+            |best, v| if v.0 > best.0 { v } else { best },
+        )
+    }
+}
+
+/// The tractions an interface carries, Pa, on the grid's cells: the
+/// normal `sigma_zz` and the shears `sigma_xz`, `sigma_yz`, continuous
+/// across it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct InterfaceTractions {
+    /// Depth of the interface, m.
+    pub depth: f64,
+    /// `sigma_zz` (negative in compression).
+    pub normal: Vec<f64>,
+    /// `sigma_xz`.
+    pub shear_x: Vec<f64>,
+    /// `sigma_yz`.
+    pub shear_y: Vec<f64>,
+}
