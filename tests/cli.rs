@@ -128,6 +128,50 @@ fn run_writes_curve_fields_and_plot() {
     assert!(stdout.contains("stiffness:"), "{stdout}");
 }
 
+/// The example scene of a coating on steel writes its stresses: each
+/// component as `planes x rows x columns` equal to the library's planes,
+/// the depths, the interfaces, the section figure and the maxima.
+#[test]
+fn run_writes_the_stresses_below_a_coating() {
+    let dir = folder("stresses");
+    let source = include_str!("../examples/scenes/coating_stresses.toml");
+    std::fs::write(dir.join("coating.toml"), source).unwrap();
+    let out = tool(&["run", "coating.toml", "-o", "result"], &dir);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let scene: Scene = toml::from_str(source).unwrap();
+    let curve = scene.run(&mut |_| {}).unwrap();
+    let stresses = curve.stresses.as_ref().unwrap();
+    let result = dir.join("result");
+    let zz: ndarray::Array3<f64> = ndarray_npy::read_npy(result.join("stress_zz.npy")).unwrap();
+    let grid = curve.grid;
+    assert_eq!(zz.dim(), (41, grid.rows(), grid.columns()));
+    for (k, plane) in stresses.planes.iter().enumerate() {
+        assert_eq!(
+            zz.index_axis(ndarray::Axis(0), k)
+                .iter()
+                .copied()
+                .collect::<Vec<_>>(),
+            plane.zz
+        );
+    }
+    let depths: ndarray::Array1<f64> =
+        ndarray_npy::read_npy(result.join("stress_depths.npy")).unwrap();
+    assert_eq!(depths.len(), 41);
+    assert!((depths[40] - 8e-6).abs() < 1e-18);
+    let interfaces: ndarray::Array1<f64> =
+        ndarray_npy::read_npy(result.join("interface_depths.npy")).unwrap();
+    assert_eq!(interfaces.to_vec(), [2e-6, 3e-6]);
+    let svg = std::fs::read_to_string(result.join("section.svg")).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("von Mises"));
+    let stdout = text(&out.stdout);
+    let vm = stresses.von_mises.unwrap();
+    assert!(
+        stdout.contains(&format!("largest von Mises stress: {:.6e} Pa", vm.value)),
+        "{stdout}"
+    );
+    assert!(stdout.contains("interface at 2.0000e-6 m"), "{stdout}");
+}
+
 /// `check` prints the grid; `reference` the exact stiffness `2 E* a`.
 #[test]
 fn check_and_reference() {

@@ -99,6 +99,7 @@ fn fields_only_on_request() {
             pressure: true,
             ..Fields::default()
         },
+        ..Outputs::default()
     };
     let curve = scene.run(&mut |_| {}).unwrap();
     let peak = curve.peak.clone().unwrap();

@@ -220,6 +220,7 @@ fn rough_surface_scene() {
                 pressure: true,
                 ..Fields::default()
             },
+            ..Outputs::default()
         },
         ..Scene::default()
     };

@@ -71,6 +71,9 @@ pub struct Curve {
     /// (empty when they are not): the tool prints them, Python returns
     /// them as `Curve.caveats`.
     pub caveats: Vec<Caveat>,
+    /// The stresses below the surface at the most loaded step, when the
+    /// scene's outputs ask for them.
+    pub stresses: Option<super::SubsurfaceResult>,
 }
 
 /// A known limit of the method that computed a [`Curve`], reported with it

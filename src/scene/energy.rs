@@ -59,7 +59,7 @@ pub(super) fn run(
             force_cycle(&branches, &mut recorder, max_force, steps)?
         }
     };
-    let fields = scene.outputs.fields;
+    let fields = scene.outputs.kept_fields();
     let peak_solution = if fields == crate::solver::Fields::default() {
         None
     } else {
@@ -92,6 +92,7 @@ fn done(
         } else {
             Vec::new()
         },
+        stresses: None,
     }))
 }
 

@@ -43,6 +43,7 @@ mod reference;
 mod runner;
 mod sizing;
 mod spec;
+mod stresses;
 
 pub use accuracy::{richardson, Converged, Quantity};
 pub use curve::{Caveat, Curve, Phase, Step};
@@ -50,6 +51,7 @@ pub use reference::Reference;
 pub use spec::{
     Adhesion, CustomIndenter, IndenterSpec, LayerSpec, MaterialSpec, SubstrateSpec, Tilt,
 };
+pub use stresses::{DepthGrid, StressOutputs, SubsurfaceResult, MAX_STRESS_PLANES};
 
 use crate::error::{positive_finite, Error, Result};
 use crate::grid::{Boundary, Grid};
@@ -148,12 +150,26 @@ impl Default for Resolution {
 }
 
 /// What a scene keeps.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(default, deny_unknown_fields))]
 pub struct Outputs {
     /// Fields of the most loaded step to keep in [`Curve::peak`].
     pub fields: Fields,
+    /// Stresses below the surface at the most loaded step, in
+    /// [`Curve::stresses`].
+    pub stresses: StressOutputs,
+}
+
+impl Outputs {
+    /// The fields the most loaded solve keeps: those asked for, and the
+    /// pressure when stresses are asked for.
+    pub(crate) fn kept_fields(&self) -> Fields {
+        Fields {
+            pressure: self.fields.pressure || self.stresses.any(),
+            ..self.fields
+        }
+    }
 }
 
 /// Solver settings of a scene.
@@ -283,7 +299,8 @@ impl Scene {
 
     /// Checks everything but the indenter (whose map may be costly to read).
     fn validate_settings(&self) -> Result<()> {
-        self.substrate.build()?;
+        let substrate = self.substrate.build()?;
+        self.outputs.stresses.plane_depths(&substrate)?;
         if let Some((loading, unloading)) = self.adhesion.works() {
             crate::error::works_of_adhesion(loading, unloading)?;
         }
@@ -404,7 +421,31 @@ impl Scene {
                 _ => Runner::new(self, active, &indenter).run(progress)?,
             };
             match outcome {
-                Outcome::Done(curve) => return Ok(*curve),
+                Outcome::Done(mut curve) => {
+                    if self.outputs.stresses.any() {
+                        let peak = curve.peak.as_ref().ok_or(Error::Internal {
+                            what: "scene stresses",
+                            detail: "no most loaded step was kept".into(),
+                        })?;
+                        curve.stresses = Some(stresses::compute(
+                            &self.outputs.stresses,
+                            &self.substrate.build()?,
+                            &curve.grid,
+                            self.boundary,
+                            peak,
+                        )?);
+                        // Keep only what was asked for (the pressure was
+                        // kept for the stresses).
+                        if self.outputs.fields == Fields::default() {
+                            curve.peak = None;
+                        } else if !self.outputs.fields.pressure {
+                            if let Some(peak) = curve.peak.as_mut() {
+                                peak.pressure = None;
+                            }
+                        }
+                    }
+                    return Ok(*curve);
+                }
                 Outcome::ReachedEdge if self.indenter.is_map() => {
                     return Err(Error::Unsupported {
                         feature: "an adhesive contact reaching the edge of a height map",

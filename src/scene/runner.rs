@@ -93,7 +93,7 @@ impl<'a> Runner<'a> {
     /// [`Runner::solve`] at the most loaded point: keeps the requested fields
     /// of this very solve as the curve's peak.
     fn solve_peak(&mut self, control: Control) -> Result<Solution> {
-        let fields = self.scene.outputs.fields;
+        let fields = self.scene.outputs.kept_fields();
         if fields == Fields::default() {
             return self.solve(control);
         }
@@ -173,6 +173,7 @@ impl<'a> Runner<'a> {
             grid: *self.solver.grid(),
             peak: self.peak,
             caveats: Vec::new(),
+            stresses: None,
         })))
     }
 

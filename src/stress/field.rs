@@ -109,11 +109,12 @@ impl SubsurfaceStress {
             } else {
                 i as f64 - rows as f64
             };
-            let ky = 2.0 * std::f64::consts::PI * ki / (rows as f64 * dx);
-            let nyquist_y = rows % 2 == 0 && 2 * i == rows;
+            // x along the rows' index, y along the columns' (as Grid::cell_centre).
+            let kx = 2.0 * std::f64::consts::PI * ki / (rows as f64 * dx);
+            let nyquist_x = rows % 2 == 0 && 2 * i == rows;
             for j in 0..half {
-                let kx = 2.0 * std::f64::consts::PI * j as f64 / (columns as f64 * dx);
-                let nyquist_x = columns % 2 == 0 && 2 * j == columns;
+                let ky = 2.0 * std::f64::consts::PI * j as f64 / (columns as f64 * dx);
+                let nyquist_y = columns % 2 == 0 && 2 * j == columns;
                 let q = kx.hypot(ky);
                 if q == 0.0 {
                     continue;

@@ -31,15 +31,15 @@
 //! // A cosine pressure p0 cos(q x) on a periodic half-space: at depth z,
 //! // sigma_zz = -p0 (1 + q z) e^(-q z) cos(q x) (Johnson 1985, sec. 2.6).
 //! let body = Substrate::half_space(Material::new(1e9, 0.3)?);
-//! let grid = Grid::new(8, 64, 1e-6)?;
+//! let grid = Grid::new(64, 8, 1e-6)?; // x along the 64 rows
 //! let mut stress = SubsurfaceStress::new(&body, &grid, Boundary::Periodic)?;
 //! let q = 2.0 * std::f64::consts::PI / 64e-6;
-//! let x = |j: usize| (j as f64 + 0.5) * 1e-6;
-//! let pressure: Vec<f64> = (0..grid.len()).map(|k| 1e6 * (q * x(k % 64)).cos()).collect();
+//! let x = |i: usize| (i as f64 + 0.5) * 1e-6;
+//! let pressure: Vec<f64> = (0..grid.len()).map(|k| 1e6 * (q * x(k / 8)).cos()).collect();
 //! let z = 5e-6;
 //! let plane = stress.plane(&pressure, z, Side::Below)?;
 //! let expected = -1e6 * (1.0 + q * z) * (-q * z).exp() * (q * x(3)).cos();
-//! assert!((plane.zz[3] - expected).abs() < 1e-6);
+//! assert!((plane.zz[3 * 8] - expected).abs() < 1e-6);
 //! # Ok::<(), layered_contact::Error>(())
 //! ```
 
@@ -75,9 +75,10 @@ pub enum Side {
 pub struct StressPlane {
     /// Depth below the surface, m.
     pub depth: f64,
-    /// `sigma_xx` (`x` along the grid's columns).
+    /// `sigma_xx` (`x` along the row index `i`, `y` along the column
+    /// index `j`, as [`Grid::cell_centre`](crate::Grid::cell_centre)).
     pub xx: Vec<f64>,
-    /// `sigma_yy` (`y` along its rows).
+    /// `sigma_yy`.
     pub yy: Vec<f64>,
     /// `sigma_zz`.
     pub zz: Vec<f64>,
@@ -114,6 +115,34 @@ impl StressPlane {
             (f64::NEG_INFINITY, 0),
             |best, v| if v.0 > best.0 { v } else { best },
         )
+    }
+}
+
+/// The largest value of a measure over a set of planes and where it lies.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct VolumeMaximum {
+    /// The value, Pa.
+    pub value: f64,
+    /// Depth of its plane, m.
+    pub depth: f64,
+    /// The cell holding it (row-major index on the grid).
+    pub cell: usize,
+}
+
+impl VolumeMaximum {
+    /// The largest value of `measure` over `planes` (`None` for no planes).
+    pub fn over(planes: &[StressPlane], measure: impl Fn(&Stress) -> f64) -> Option<Self> {
+        planes
+            .iter()
+            .map(|plane| {
+                let (value, cell) = plane.max_of(&measure);
+                VolumeMaximum {
+                    value,
+                    depth: plane.depth,
+                    cell,
+                }
+            })
+            .reduce(|best, next| if next.value > best.value { next } else { best })
     }
 }
 

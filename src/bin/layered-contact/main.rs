@@ -1,7 +1,7 @@
 //! `layered-contact`: runs contact scenes from TOML or JSON files.
 //!
 //! ```text
-//! layered-contact run scene.toml -o out/     # curve.csv, fields as .npy, curve.svg
+//! layered-contact run scene.toml -o out/     # curve.csv, fields and stresses as .npy, curve.svg, section.svg
 //! layered-contact check scene.toml           # validate; grid and memory
 //! layered-contact reference scene.toml       # exact values where they exist
 //! layered-contact paper [--out DIR] [--fine] # the reference experiment
@@ -17,6 +17,7 @@ mod fit;
 mod output;
 mod paper;
 mod progress;
+mod stress_output;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -121,6 +122,11 @@ fn run(scene: &Scene, out: &std::path::Path) -> Result<()> {
     }
     if let Some(p) = curve.pull_off() {
         say!("pull-off: {:.6e} N at depth {:.6e} m", p.force, p.depth);
+    }
+    if let Some(result) = &curve.stresses {
+        for line in stress_output::summary(&curve.grid, result) {
+            say!("{line}");
+        }
     }
     for r in scene.reference()? {
         if let Some(bem) = r.quantity.of(&curve) {

@@ -15,6 +15,7 @@ use crate::Result;
 pub fn write_all(scene: &Scene, curve: &Curve, out: &Path) -> Result<Vec<PathBuf>> {
     let mut written = vec![write_csv(curve, &out.join("curve.csv"))?];
     written.extend(write_fields(scene, curve, out)?);
+    written.extend(crate::stress_output::write(curve, out)?);
     let svg = out.join("curve.svg");
     plot(curve, &svg)?;
     written.push(svg);
