@@ -20,6 +20,7 @@ use layered_contact as lc;
 mod adhesion;
 mod analytic;
 mod curves;
+mod stresses;
 
 create_exception!(
     layered_contact,
@@ -592,6 +593,9 @@ struct Curve {
     /// Known limits of the method behind these numbers, as sentences
     /// (empty when there are none): see `layered_contact::scene::Caveat`.
     caveats: Vec<String>,
+    /// The stresses below the surface at the most loaded step, when the
+    /// scene's `outputs.stresses` asks for them (see `subsurface_stress`).
+    stresses: Option<Py<PyDict>>,
 }
 
 #[pymethods]
@@ -710,6 +714,14 @@ fn run_scene(
         ),
         peak,
         caveats: curve.caveats.iter().map(ToString::to_string).collect(),
+        stresses: curve
+            .stresses
+            .as_ref()
+            .map(|r| {
+                stresses::stresses_dict(py, &curve.grid, &r.planes, &r.interfaces, &r.boundaries)
+                    .map(Bound::unbind)
+            })
+            .transpose()?,
     })
 }
 
@@ -784,6 +796,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<ContactSolver>()?;
     m.add_class::<Curve>()?;
     m.add_function(wrap_pyfunction!(run_scene, m)?)?;
+    m.add_function(wrap_pyfunction!(stresses::subsurface_stress, m)?)?;
     m.add_function(wrap_pyfunction!(check_scene, m)?)?;
     m.add_function(wrap_pyfunction!(scene_reference, m)?)?;
     m.add_function(wrap_pyfunction!(analytic::hertz_force, m)?)?;

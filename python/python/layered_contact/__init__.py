@@ -25,6 +25,8 @@ import os
 from typing import Any, Callable, Mapping, Optional, Union
 
 from . import analytic
+from ._native import subsurface_stress
+from .stress import plot_section
 from ._native import (
     ConvergenceError,
     ContactSolver,
@@ -57,8 +59,10 @@ __all__ = [
     "check_scene",
     "curve_to_dict",
     "edge_release",
+    "plot_section",
     "run_scene",
     "scene_reference",
+    "subsurface_stress",
 ]
 
 

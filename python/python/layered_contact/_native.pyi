@@ -101,11 +101,22 @@ class Curve:
     grid: Tuple[int, int, float]
     peak: Optional[Solution]
     caveats: list[str]
+    stresses: Optional[dict]
     def __len__(self) -> int: ...
 
 def run_scene(
     scene: Any, progress: Optional[Callable[[dict], None]] = None, indenter: Optional[Indenter] = None
 ) -> Curve: ...
+def subsurface_stress(
+    substrate: Substrate,
+    pressure: npt.NDArray[np.float64],
+    spacing: float,
+    depths: List[float],
+    periodic: bool = False,
+    padding: Optional[int] = None,
+    side: str = "below",
+    interfaces: bool = False,
+) -> dict: ...
 def check_scene(scene: Any) -> Tuple[int, int, float, int]: ...
 def scene_reference(scene: Any) -> dict: ...
 def hertz_force(material: Material, radius: float, depth: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]: ...
