@@ -3,7 +3,9 @@
 
 use crate::error::{Error, Result};
 use crate::solver::Solution;
-use crate::stress::{InterfaceTractions, Side, StressPlane, SubsurfaceStress, VolumeMaximum};
+use crate::stress::{
+    InterfaceTractions, Side, StressPlane, SubsurfaceStress, VolumeMaximum, DEFAULT_PADDING,
+};
 use crate::substrate::{Base, Substrate};
 use crate::{Boundary, Grid};
 
@@ -18,6 +20,7 @@ pub const MAX_STRESS_PLANES: usize = 1000;
 /// depths = [0.5e-6, 2e-6]              # planes at these depths
 /// depth_grid = { to = 6e-6, planes = 25 } # and evenly from the surface
 /// interfaces = true                      # the tractions on every interface
+/// padding = 8                            # an isolated grid padded 8 times
 /// ```
 #[derive(Debug, Clone, PartialEq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -29,6 +32,9 @@ pub struct StressOutputs {
     pub depth_grid: Option<DepthGrid>,
     /// The tractions on every interface of a layered body.
     pub interfaces: bool,
+    /// How many times an isolated grid is padded (default
+    /// [`DEFAULT_PADDING`]; see [`SubsurfaceStress::with_padding`]).
+    pub padding: Option<usize>,
 }
 
 /// `planes` evenly spaced planes from the surface to `to` (both included).
@@ -126,7 +132,11 @@ pub(super) fn compute(
         detail: "the peak kept no pressure".into(),
     })?;
     let pressure: Vec<f64> = pressure.iter().copied().collect();
-    let mut stress = SubsurfaceStress::new(substrate, grid, boundary)?;
+    let padding = match boundary {
+        Boundary::Isolated => outputs.padding.unwrap_or(DEFAULT_PADDING),
+        Boundary::Periodic => 1,
+    };
+    let mut stress = SubsurfaceStress::with_padding(substrate, grid, boundary, padding)?;
     let planes = depths
         .iter()
         .map(|&depth| stress.plane(&pressure, depth, Side::Below))
