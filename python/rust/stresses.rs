@@ -153,10 +153,7 @@ pub(crate) fn subsurface_stress<'py>(
         .detach(|| -> lc::Result<_> {
             let mut stress =
                 lc::stress::SubsurfaceStress::with_padding(&body, &grid, boundary, padding)?;
-            let planes = depths
-                .iter()
-                .map(|&z| stress.plane(&values, z, side))
-                .collect::<lc::Result<Vec<_>>>()?;
+            let planes = stress.planes(&values, &depths, side)?;
             let tractions = if interfaces {
                 stress.interfaces(&values)?
             } else {

@@ -137,10 +137,7 @@ pub(super) fn compute(
         Boundary::Periodic => 1,
     };
     let mut stress = SubsurfaceStress::with_padding(substrate, grid, boundary, padding)?;
-    let planes = depths
-        .iter()
-        .map(|&depth| stress.plane(&pressure, depth, Side::Below))
-        .collect::<Result<Vec<_>>>()?;
+    let planes = stress.planes(&pressure, &depths, Side::Below)?;
     let interfaces = if outputs.interfaces {
         stress.interfaces(&pressure)?
     } else {

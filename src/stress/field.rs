@@ -23,8 +23,8 @@ pub struct SubsurfaceStress {
     /// Rows and columns of the (padded) FFT grid.
     size: (usize, usize),
     fft: Fft2,
-    /// Per spectrum bin (rows x half), the index of its wavenumber in
-    /// `coefficients` (`u32::MAX` for the mean).
+    /// Per spectrum bin (column by column, `half x rows`), the index of its
+    /// wavenumber in `wavenumbers` (`u32::MAX` for the mean).
     bins: Vec<u32>,
     /// Per distinct wavenumber: `q` and the basis coefficients.
     wavenumbers: Vec<f64>,
@@ -33,10 +33,10 @@ pub struct SubsurfaceStress {
     /// own mirror image (a Nyquist row or column), so that odd multipliers
     /// keep the spectrum Hermitian.
     cosines: Vec<(f64, f64)>,
-    /// The pressure's spectrum and one component's.
-    spectrum: Vec<Complex<f64>>,
-    work: Vec<Complex<f64>>,
 }
+
+/// Distinct wavenumbers solved per parallel task while planning.
+const SOLVES_PER_TASK: usize = 256;
 
 /// Poisson ratio of the material at `z`.
 fn poisson_at(column: &Column, index: usize) -> f64 {
@@ -124,8 +124,8 @@ impl SubsurfaceStress {
                     wavenumbers.push(q);
                     next
                 });
-                bins[i * half + j] = id;
-                cosines[i * half + j] = (
+                bins[j * rows + i] = id;
+                cosines[j * rows + i] = (
                     if nyquist_x { 0.0 } else { kx / q },
                     if nyquist_y { 0.0 } else { ky / q },
                 );
@@ -133,22 +133,25 @@ impl SubsurfaceStress {
         }
         let n = column.unknowns();
         let mut coefficients = vec![0.0; n * wavenumbers.len()];
-        let mut matrix = Vec::new();
-        for (k, &q) in wavenumbers.iter().enumerate() {
-            column.solve(q, &mut matrix, &mut coefficients[k * n..(k + 1) * n])?;
-        }
+        let failures =
+            crate::parallel::map_rows(&mut coefficients, n * SOLVES_PER_TASK, |t, chunk| {
+                let mut matrix = Vec::new();
+                for (k, out) in chunk.chunks_mut(n).enumerate() {
+                    column.solve(wavenumbers[t * SOLVES_PER_TASK + k], &mut matrix, out)?;
+                }
+                Ok(())
+            });
+        failures.into_iter().collect::<Result<Vec<()>>>()?;
         Ok(SubsurfaceStress {
             column,
             grid: *grid,
             boundary,
             size: (rows, columns),
-            fft: Fft2::new(rows, columns),
+            fft: Fft2::new(rows, columns, grid.rows(), grid.columns()),
             bins,
             wavenumbers,
             coefficients,
             cosines,
-            spectrum: vec![Complex::default(); rows * half],
-            work: vec![Complex::default(); rows * half],
         })
     }
 
@@ -181,55 +184,75 @@ impl SubsurfaceStress {
     /// a depth in or below a rigid base; [`Error::NonFinite`] for a
     /// non-finite pressure.
     pub fn plane(&mut self, pressure: &[f64], depth: f64, side: Side) -> Result<StressPlane> {
+        let mut planes = self.planes(pressure, &[depth], side)?;
+        planes.pop().ok_or(Error::Internal {
+            what: "subsurface stress",
+            detail: "no plane for one depth".into(),
+        })
+    }
+
+    /// The planes at `depths` (m) under one `pressure`, transformed once:
+    /// each plane then costs six inverse FFTs.
+    ///
+    /// # Errors
+    /// As [`SubsurfaceStress::plane`].
+    pub fn planes(
+        &mut self,
+        pressure: &[f64],
+        depths: &[f64],
+        side: Side,
+    ) -> Result<Vec<StressPlane>> {
         self.check(pressure)?;
         let total: f64 = self.column.plies.iter().map(|p| p.thickness).sum();
         let rigid = self.column.base.is_none();
-        if !(depth >= 0.0 && depth.is_finite())
-            || (rigid && (depth > total || (depth == total && side == Side::Below)))
-        {
-            return Err(Error::InvalidParameter {
-                name: "depth of a stress plane (m)",
-                value: depth,
-                expected: "finite, at least 0, and above a rigid base",
-            });
+        for &depth in depths {
+            if !(depth >= 0.0 && depth.is_finite())
+                || (rigid && (depth > total || (depth == total && side == Side::Below)))
+            {
+                return Err(Error::InvalidParameter {
+                    name: "depth of a stress plane (m)",
+                    value: depth,
+                    expected: "finite, at least 0, and above a rigid base",
+                });
+            }
         }
-        let (layer, top) = self.column.locate(depth, side == Side::Above);
-        let (rows, columns) = self.size;
-        let width = self.grid.columns();
-        let mut padded = vec![0.0; rows * columns];
-        for (i, row) in pressure.chunks_exact(width).enumerate() {
-            padded[i * columns..i * columns + width].copy_from_slice(row);
-        }
-        self.fft.forward(&padded, &mut self.spectrum);
-        let n = self.column.unknowns();
-        // The six spectra, one after the other through the same buffer.
-        let mut out = StressPlane {
-            depth,
-            xx: vec![0.0; self.grid.len()],
-            yy: vec![0.0; self.grid.len()],
-            zz: vec![0.0; self.grid.len()],
-            xy: vec![0.0; self.grid.len()],
-            xz: vec![0.0; self.grid.len()],
-            yz: vec![0.0; self.grid.len()],
-        };
-        // Per bin, the mode's stresses (zz, xi xi, eta eta, xi z) per unit pressure.
-        let modes: Vec<[f64; 4]> = self
-            .bins
+        let bins = self.size.0 * self.fft.half();
+        let mut spectrum = vec![Complex::default(); bins];
+        self.fft.forward(pressure, &mut spectrum);
+        let mut work = vec![Complex::default(); bins];
+        depths
             .iter()
-            .map(|&id| {
-                if id == u32::MAX {
-                    return [0.0; 4];
-                }
-                let id = id as usize;
-                let q = self.wavenumbers[id];
-                self.column.stress_at(
+            .map(|&depth| self.one_plane(&spectrum, &mut work, depth, side))
+            .collect()
+    }
+
+    /// One plane from the pressure's `spectrum`; `work` is scratch.
+    fn one_plane(
+        &mut self,
+        spectrum: &[Complex<f64>],
+        work: &mut [Complex<f64>],
+        depth: f64,
+        side: Side,
+    ) -> Result<StressPlane> {
+        let (layer, top) = self.column.locate(depth, side == Side::Above);
+        let n = self.column.unknowns();
+        // Per distinct wavenumber, the mode's stresses (zz, xi xi, eta eta,
+        // xi z) per unit pressure.
+        let mut modes = vec![[0.0; 4]; self.wavenumbers.len()];
+        let (column, wavenumbers, coefficients) =
+            (&self.column, &self.wavenumbers, &self.coefficients);
+        crate::parallel::for_each_row(&mut modes, SOLVES_PER_TASK, |t, chunk| {
+            for (k, mode) in chunk.iter_mut().enumerate() {
+                let id = t * SOLVES_PER_TASK + k;
+                let q = wavenumbers[id];
+                *mode = column.stress_at(
                     layer,
                     q * (depth - top),
                     q,
-                    &self.coefficients[id * n..(id + 1) * n],
-                )
-            })
-            .collect();
+                    &coefficients[id * n..(id + 1) * n],
+                );
+            }
+        });
         // The mean mode's in-plane stress per unit pressure: uniaxial strain
         // on a periodic grid (no mean strain in the plane), the direction
         // average of the long-wave limit for an isolated contact.
@@ -258,6 +281,16 @@ impl SubsurfaceStress {
             (|m, (c, _)| Complex::new(0.0, -c * m[3]), 0.0),
             (|m, (_, s)| Complex::new(0.0, -s * m[3]), 0.0),
         ];
+        let cells = self.grid.len();
+        let mut out = StressPlane {
+            depth,
+            xx: vec![0.0; cells],
+            yy: vec![0.0; cells],
+            zz: vec![0.0; cells],
+            xy: vec![0.0; cells],
+            xz: vec![0.0; cells],
+            yz: vec![0.0; cells],
+        };
         let targets: [&mut Vec<f64>; 6] = [
             &mut out.xx,
             &mut out.yy,
@@ -266,16 +299,19 @@ impl SubsurfaceStress {
             &mut out.xz,
             &mut out.yz,
         ];
-        let mut field = vec![0.0; rows * columns];
+        let rows = self.size.0;
+        let (bins, cosines) = (&self.bins, &self.cosines);
         for ((multiplier, uniform), target) in components.into_iter().zip(targets) {
-            for (k, w) in self.work.iter_mut().enumerate() {
-                *w = self.spectrum[k] * multiplier(&modes[k], self.cosines[k]);
-            }
-            self.work[0] = self.spectrum[0] * uniform;
-            self.fft.inverse(&mut self.work, &mut field);
-            for (i, row) in target.chunks_exact_mut(width).enumerate() {
-                row.copy_from_slice(&field[i * columns..i * columns + width]);
-            }
+            crate::parallel::for_each_row(work, rows, |j, line| {
+                for (i, w) in line.iter_mut().enumerate() {
+                    let k = j * rows + i;
+                    *w = match bins[k] {
+                        u32::MAX => spectrum[k] * uniform,
+                        id => spectrum[k] * multiplier(&modes[id as usize], cosines[k]),
+                    };
+                }
+            });
+            self.fft.inverse(work, target);
         }
         let components = [&out.xx, &out.yy, &out.zz, &out.xy, &out.xz, &out.yz];
         for v in components.into_iter().flatten() {
@@ -295,18 +331,17 @@ impl SubsurfaceStress {
     /// # Errors
     /// As [`SubsurfaceStress::plane`].
     pub fn interfaces(&mut self, pressure: &[f64]) -> Result<Vec<InterfaceTractions>> {
-        self.interface_depths()
+        let depths = self.interface_depths();
+        Ok(self
+            .planes(pressure, &depths, Side::Above)?
             .into_iter()
-            .map(|depth| {
-                let plane = self.plane(pressure, depth, Side::Above)?;
-                Ok(InterfaceTractions {
-                    depth,
-                    normal: plane.zz,
-                    shear_x: plane.xz,
-                    shear_y: plane.yz,
-                })
+            .map(|plane| InterfaceTractions {
+                depth: plane.depth,
+                normal: plane.zz,
+                shear_x: plane.xz,
+                shear_y: plane.yz,
             })
-            .collect()
+            .collect())
     }
 
     fn check(&self, pressure: &[f64]) -> Result<()> {
