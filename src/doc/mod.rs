@@ -5,6 +5,7 @@
 //! * [`axisymmetric`]: the exact axisymmetric solutions and their Fredholm equation.
 //! * [`bottom_effect`]: the small-indentation series AFM users fit against the exact solution.
 //! * [`multilayer`]: stacks of bonded layers: the recursion for the coating factor, and how the kernels split it by interface.
+//! * [`subsurface`]: stresses inside the layers and at their interfaces, and where a coating first yields.
 //! * [`adhesion`]: the two JKR adhesion methods, energy balance and mesh criterion, and the local release rates along an edge.
 //! * [`accuracy`]: what each part achieves, and what it costs.
 //! * [`reliability`]: the promise (no panic, hang, NaN or silent wrong answer), the guaranteed ranges, and how they are tested.
@@ -16,4 +17,5 @@ pub mod bottom_effect;
 pub mod conventions;
 pub mod multilayer;
 pub mod reliability;
+pub mod subsurface;
 pub mod theory;

@@ -3,9 +3,10 @@
 //! a solve (periodic or isolated).
 //!
 //! Each Fourier mode of the pressure is carried through the layers exactly
-//! (see [`mode`](self::mode): an Airy stress function per layer written in
-//! functions that decay away from one of its faces, so no exponential
-//! grows), and a depth plane is six inverse FFTs of the modes' stresses.
+//! (an Airy stress function per layer written in functions that decay
+//! away from one of its faces, so no exponential grows; see
+//! [`doc::subsurface`](crate::doc::subsurface)), and a depth plane is six
+//! inverse FFTs of the modes' stresses.
 //! The pressure is taken as the trigonometric interpolant of the cell
 //! values (the band-limited field the grid represents, as in tamaas'
 //! volume operators); on planes shallower than a few cells its difference
