@@ -161,6 +161,9 @@ fn run_writes_the_stresses_below_a_coating() {
     let interfaces: ndarray::Array1<f64> =
         ndarray_npy::read_npy(result.join("interface_depths.npy")).unwrap();
     assert_eq!(interfaces.to_vec(), [2e-6, 3e-6]);
+    // The coordinates come with the stresses even when no field is asked for.
+    let x: ndarray::Array1<f64> = ndarray_npy::read_npy(result.join("x.npy")).unwrap();
+    assert_eq!(x.len(), grid.rows());
     let svg = std::fs::read_to_string(result.join("section.svg")).unwrap();
     assert!(svg.starts_with("<svg") && svg.contains("von Mises"));
     let stdout = text(&out.stdout);

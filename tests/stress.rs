@@ -702,3 +702,54 @@ fn a_three_layer_pavement_matches_kenpave() {
         "{dz} {relative} {small}"
     );
 }
+
+#[test]
+fn one_loaded_cell_gives_boussinesq_far_from_it() {
+    // One cell of pressure p (a force P = p Delta^2) in the middle of an
+    // isolated 65 x 65 grid, padded 8 times: at distances of 6 to 20 cells
+    // and depths of 4 to 12 the field is Boussinesq's point load (Johnson
+    // 1985, eqs. 3.18-3.19), with rho = sqrt(r^2 + z^2):
+    // sigma_z = -3 P z^3 / (2 pi rho^5),  tau_rz = -3 P r z^2 / (2 pi rho^5),
+    // sigma_r = P/(2 pi) [(1 - 2 nu)/r^2 (1 - z/rho) - 3 z r^2/rho^5],
+    // sigma_theta = -(1 - 2 nu) P/(2 pi) [1/r^2 (1 - z/rho) - z/rho^3].
+    // The cell's size changes the field by about (Delta/rho)^2 / 24 of
+    // itself (1.6e-3 at the nearest point), the periodic images the
+    // in-plane stresses by about (r/L)^2 of the load's (L = 520 cells).
+    // Measured, relative to the largest component at each point: 2.3e-4,
+    // 1.2e-4 and 6.2e-4 (the farthest point sees the images most;
+    // sigma_z and tau_rz agree to 3e-7 there). Asserted 1e-3.
+    let nu = 0.3;
+    let body = Substrate::half_space(Material::new(1e9, nu).unwrap());
+    let (n, dx) = (65usize, 1e-6);
+    let grid = Grid::new(n, n, dx).unwrap();
+    let mut pressure = vec![0.0; n * n];
+    let centre = (n / 2) * n + n / 2;
+    pressure[centre] = 1.0;
+    let force = dx * dx;
+    let mut stress = SubsurfaceStress::with_padding(&body, &grid, Boundary::Isolated, 8).unwrap();
+    let mut errors = Vec::new();
+    for (cells_out, cells_down) in [(6usize, 4usize), (10, 8), (20, 12)] {
+        let (r, z) = (cells_out as f64 * dx, cells_down as f64 * dx);
+        let plane = stress.plane(&pressure, z, Side::Below).unwrap();
+        // x along the rows: the cell `cells_out` rows below the centre.
+        let s = plane.at(centre + cells_out * n);
+        let rho = r.hypot(z);
+        let k = force / (2.0 * PI);
+        let exact = [
+            -3.0 * k * z.powi(3) / rho.powi(5),
+            k * ((1.0 - 2.0 * nu) / (r * r) * (1.0 - z / rho) - 3.0 * z * r * r / rho.powi(5)),
+            -(1.0 - 2.0 * nu) * k * ((1.0 - z / rho) / (r * r) - z / rho.powi(3)),
+            -3.0 * k * r * z * z / rho.powi(5),
+        ];
+        let got = [s.zz, s.xx, s.yy, s.xz];
+        let scale = exact.iter().map(|v| v.abs()).fold(0.0, f64::max);
+        let error = got
+            .iter()
+            .zip(&exact)
+            .map(|(g, e)| (g - e).abs() / scale)
+            .fold(0.0, f64::max);
+        println!("r = {cells_out}, z = {cells_down} cells: {got:?} against {exact:?}, {error:.2e}");
+        errors.push(error);
+    }
+    assert!(errors.iter().all(|e| *e < 1e-3), "{errors:?}");
+}

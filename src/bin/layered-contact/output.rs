@@ -14,8 +14,13 @@ use crate::Result;
 /// Writes every output of `curve` into `out`; the paths written.
 pub fn write_all(scene: &Scene, curve: &Curve, out: &Path) -> Result<Vec<PathBuf>> {
     let mut written = vec![write_csv(curve, &out.join("curve.csv"))?];
-    written.extend(write_fields(scene, curve, out)?);
-    written.extend(crate::stress_output::write(curve, out)?);
+    let fields = write_fields(scene, curve, out)?;
+    let stresses = crate::stress_output::write(curve, out)?;
+    if fields.is_empty() && !stresses.is_empty() {
+        written.extend(write_coordinates(&curve.grid, out)?);
+    }
+    written.extend(fields);
+    written.extend(stresses);
     let svg = out.join("curve.svg");
     plot(curve, &svg)?;
     written.push(svg);
@@ -81,12 +86,16 @@ fn write_fields(scene: &Scene, curve: &Curve, out: &Path) -> Result<Vec<PathBuf>
             written.push(save(out, name, array)?);
         }
     }
-    let grid: &Grid = &curve.grid;
+    written.extend(write_coordinates(&curve.grid, out)?);
+    Ok(written)
+}
+
+/// `x.npy` and `y.npy`: the cell centres along the rows and the columns,
+/// m from the indenter's axis.
+pub fn write_coordinates(grid: &Grid, out: &Path) -> Result<Vec<PathBuf>> {
     let x = Array1::from_iter((0..grid.rows()).map(|i| grid.cell_centre(i, 0).0));
     let y = Array1::from_iter((0..grid.columns()).map(|j| grid.cell_centre(0, j).1));
-    written.push(save(out, "x.npy", &x)?);
-    written.push(save(out, "y.npy", &y)?);
-    Ok(written)
+    Ok(vec![save(out, "x.npy", &x)?, save(out, "y.npy", &y)?])
 }
 
 const FONT: &str = "sans-serif";

@@ -1,7 +1,8 @@
 //! What `run` writes of the stresses below the surface: each component on
-//! every plane as `.npy` (`planes x rows x columns`) with the planes'
-//! depths, the interface tractions, and an x-z section of the von Mises
-//! stress (`section.svg`) with the layer boundaries.
+//! every plane as `.npy` (`planes x rows x columns`, `[k, i, j]` at depth
+//! `stress_depths.npy[k]` and `x.npy[i]`, `y.npy[j]`), the interface
+//! tractions, and an x-z section of the von Mises stress (`section.svg`)
+//! with the layer boundaries.
 
 use std::path::{Path, PathBuf};
 
