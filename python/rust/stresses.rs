@@ -85,9 +85,18 @@ pub(crate) fn stresses_dict<'py>(
         "depth",
         PyArray1::from_vec(py, interfaces.iter().map(|i| i.depth).collect()),
     )?;
-    t.set_item("normal", stack(py, grid, interfaces.iter().map(|i| i.normal.clone()))?)?;
-    t.set_item("shear_x", stack(py, grid, interfaces.iter().map(|i| i.shear_x.clone()))?)?;
-    t.set_item("shear_y", stack(py, grid, interfaces.iter().map(|i| i.shear_y.clone()))?)?;
+    t.set_item(
+        "normal",
+        stack(py, grid, interfaces.iter().map(|i| i.normal.clone()))?,
+    )?;
+    t.set_item(
+        "shear_x",
+        stack(py, grid, interfaces.iter().map(|i| i.shear_x.clone()))?,
+    )?;
+    t.set_item(
+        "shear_y",
+        stack(py, grid, interfaces.iter().map(|i| i.shear_y.clone()))?,
+    )?;
     d.set_item("interfaces", t)?;
     d.set_item(
         "max_von_mises",
