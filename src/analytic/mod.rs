@@ -39,7 +39,7 @@ mod sinusoid;
 
 pub use axisymmetric::{
     before_jump_off, Axisymmetric, ContactState, ForceCurve, LayeredFlatPunch, LayeredParaboloid,
-    LayeredTip, PullOff, Tip,
+    LayeredTip, ModulusFamily, PullOff, Tip, MODULUS_NODES,
 };
 pub use cone::SneddonCone;
 pub use hertz::Hertz;

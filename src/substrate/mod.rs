@@ -354,6 +354,49 @@ impl Substrate {
         }
     }
 
+    /// The same body with the top layer's (or the half-space's) Young's
+    /// modulus `youngs_modulus` (Pa), its Poisson ratio, thickness, support
+    /// and interface kept: what a fit of the top layer's modulus varies.
+    ///
+    /// ```
+    /// use layered_contact::{Material, Substrate};
+    ///
+    /// let gel = Material::new(2.5e3, 0.5)?;
+    /// let film = Substrate::layer_resting_on_elastic_base(Material::new(1e4, 0.5)?, 4e-6, gel)?;
+    /// let stiffer = film.with_surface_youngs_modulus(2e4)?;
+    /// assert_eq!(stiffer.surface_material().youngs_modulus(), 2e4);
+    /// assert_eq!(stiffer, Substrate::layer_resting_on_elastic_base(Material::new(2e4, 0.5)?, 4e-6, gel)?);
+    /// # Ok::<(), layered_contact::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::InvalidYoungsModulus`] for a modulus out of range, and the
+    /// constructors' errors for the new contrast with the layers below.
+    pub fn with_surface_youngs_modulus(&self, youngs_modulus: f64) -> Result<Self> {
+        let top = Material::new(youngs_modulus, self.surface_material().poisson_ratio())?;
+        match self {
+            Substrate::HalfSpace(_) => Ok(Substrate::HalfSpace(top)),
+            Substrate::Coated(c) => match (c.base, c.frictionless) {
+                (Base::Rigid, false) => Self::layer_on_rigid_base(top, c.thickness),
+                (Base::Rigid, true) => Self::layer_resting_on_rigid_base(top, c.thickness),
+                (Base::Elastic(base), false) => Self::layer_on_elastic_base(top, c.thickness, base),
+                (Base::Elastic(base), true) => {
+                    Self::layer_resting_on_elastic_base(top, c.thickness, base)
+                }
+            },
+            Substrate::Stack(stack) => {
+                let layers: Vec<(Material, f64)> = std::iter::once((top, stack.top().thickness()))
+                    .chain(
+                        stack.layers()[1..]
+                            .iter()
+                            .map(|l| (*l.material(), l.thickness())),
+                    )
+                    .collect();
+                Self::stack(&layers, *stack.base())
+            }
+        }
+    }
+
     /// The thickness of the top layer (m), the length that scales the
     /// coating functions (`t = q h`); `None` for a half-space.
     pub fn top_thickness(&self) -> Option<f64> {

@@ -35,11 +35,13 @@ use crate::numerics::{gauss, oscillatory_integral, OctaveTable};
 use crate::substrate::Substrate;
 
 mod curve;
+mod family;
 mod paraboloid;
 mod punch;
 mod tip;
 
 pub use curve::{before_jump_off, ForceCurve};
+pub use family::{ModulusFamily, MODULUS_NODES};
 
 use paraboloid::minimise;
 pub use paraboloid::{ContactState, LayeredParaboloid, PullOff};

@@ -1,0 +1,169 @@
+//! Force curves over a range of top-layer moduli, for fits on supports
+//! where the force does not scale with the modulus (an elastic base, a
+//! stack): a few exact tables at Chebyshev nodes in `ln E`, interpolated.
+
+use crate::error::{Error, Result};
+use crate::substrate::Substrate;
+
+use super::{ForceCurve, Tip};
+
+/// The fewest and most Chebyshev nodes a [`ModulusFamily`] may have.
+pub const MODULUS_NODES: (usize, usize) = (4, 64);
+
+/// The approach curves (no adhesion) of one tip on a body whose top
+/// layer's Young's modulus ranges over `[lo, hi]`, the rest fixed
+/// ([`Substrate::with_surface_youngs_modulus`]): exact
+/// tables ([`ForceCurve`]) at `n` Chebyshev nodes of the second kind in
+/// `ln E`, and at any modulus in the range the barycentric interpolant
+/// (Berrut & Trefethen 2004, SIAM Rev. 46, 501) of `F / E*` at each depth.
+/// `F / E*` is analytic in `ln E` (it moves from the support-dominated to
+/// the layer-dominated limit over a decade or two), so the error falls
+/// geometrically with `n`; `tests/force_curve.rs` measures it. On glass or
+/// a half-space a single [`ForceCurve`] scales exactly and needs no family.
+///
+/// A fit on an elastic support otherwise builds a table per modulus it
+/// tries (0.3 to 3 s each); a force map of many curves on one sample
+/// builds the family once and then evaluates a curve in `n` table look-ups.
+///
+/// ```
+/// use layered_contact::analytic::{Axisymmetric, ForceCurve, ModulusFamily, Tip};
+/// use layered_contact::{Material, Substrate};
+///
+/// let gel = Material::new(2.5e3, 0.5)?;
+/// let film = Substrate::layer_on_elastic_base(Material::new(1e4, 0.5)?, 4e-6, gel)?;
+/// let tip = Tip::Paraboloid { radius: 5e-6 };
+/// let family = ModulusFamily::new(&film, Some(tip), 5e-6, 2e-6, (5e3, 20e3), 12)?;
+/// let direct = ForceCurve::on(&film.with_surface_youngs_modulus(8e3)?, tip, 2e-6)?;
+/// let (f, g) = (family.forces(&[1e-6], 8e3)[0], direct.force(1e-6, 1.0, 0.0));
+/// assert!((f / g - 1.0).abs() < 1e-6);
+/// # Ok::<(), layered_contact::Error>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct ModulusFamily {
+    /// `ln E` of the nodes, and the range's ends.
+    nodes: Vec<f64>,
+    range: (f64, f64),
+    /// The barycentric weights of the nodes.
+    weights: Vec<f64>,
+    curves: Vec<ForceCurve>,
+}
+
+impl ModulusFamily {
+    /// The family of `tip` (a flat punch of `radius`, m, if `None`; the
+    /// radius is unused otherwise) on `body` with its top layer's Young's
+    /// modulus anywhere in `youngs_range` (Pa), to `max_depth` (m), from
+    /// `nodes` exact tables. Twelve nodes per decade of modulus reach the
+    /// tables' own precision on a film over a softer gel and on a stack
+    /// (`tests/force_curve.rs`).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for a range that is not `0 < lo < hi <
+    /// inf` or a node count outside [`MODULUS_NODES`]; the errors of
+    /// [`Substrate::with_surface_youngs_modulus`] and of
+    /// [`ForceCurve::on`] at any node.
+    pub fn new(
+        body: &Substrate,
+        tip: Option<Tip>,
+        radius: f64,
+        max_depth: f64,
+        youngs_range: (f64, f64),
+        nodes: usize,
+    ) -> Result<Self> {
+        let (lo, hi) = youngs_range;
+        if !(lo > 0.0 && lo < hi && hi.is_finite()) {
+            return Err(Error::InvalidParameter {
+                name: "youngs_range (lower end)",
+                value: lo,
+                expected: "0 < lower < upper < inf (Pa)",
+            });
+        }
+        if !(MODULUS_NODES.0..=MODULUS_NODES.1).contains(&nodes) {
+            return Err(Error::InvalidParameter {
+                name: "nodes of a modulus family",
+                value: nodes as f64,
+                expected: "between 4 and 64",
+            });
+        }
+        let (a, b) = (lo.ln(), hi.ln());
+        let last = nodes - 1;
+        let x: Vec<f64> = (0..nodes)
+            .map(|k| {
+                let c = (std::f64::consts::PI * k as f64 / last as f64).cos();
+                0.5 * (a + b) + 0.5 * (b - a) * c
+            })
+            .collect();
+        // Chebyshev points of the second kind: weights (-1)^k, halved at the ends.
+        let weights = (0..nodes)
+            .map(|k| {
+                let sign = if k % 2 == 0 { 1.0 } else { -1.0 };
+                if k == 0 || k == last {
+                    0.5 * sign
+                } else {
+                    sign
+                }
+            })
+            .collect();
+        let curves = x
+            .iter()
+            .map(|&ln_e| {
+                let substrate = body.with_surface_youngs_modulus(ln_e.exp())?;
+                match tip {
+                    Some(tip) => ForceCurve::on(&substrate, tip, max_depth),
+                    None => ForceCurve::flat_punch_on(&substrate, radius),
+                }
+            })
+            .collect::<Result<Vec<_>>>()?;
+        Ok(ModulusFamily {
+            nodes: x,
+            range: (lo, hi),
+            weights,
+            curves,
+        })
+    }
+
+    /// The range of Young's moduli covered, Pa.
+    pub fn youngs_range(&self) -> (f64, f64) {
+        self.range
+    }
+
+    /// The approach force (N) at each of `depths` (m) for a top layer of
+    /// Young's modulus `youngs_modulus` (Pa): NaN outside the range, and
+    /// where a table gives NaN (beyond its depth).
+    pub fn forces(&self, depths: &[f64], youngs_modulus: f64) -> Vec<f64> {
+        let (lo, hi) = self.range;
+        if !(youngs_modulus >= lo && youngs_modulus <= hi) {
+            return vec![f64::NAN; depths.len()];
+        }
+        let x = youngs_modulus.ln();
+        // The node itself, or the barycentric coefficients.
+        let exact = self.nodes.iter().position(|&node| node == x);
+        let coefficients: Vec<f64> = match exact {
+            Some(k) => (0..self.nodes.len())
+                .map(|j| if j == k { 1.0 } else { 0.0 })
+                .collect(),
+            None => {
+                let raw: Vec<f64> = self
+                    .nodes
+                    .iter()
+                    .zip(&self.weights)
+                    .map(|(node, w)| w / (x - node))
+                    .collect();
+                let sum: f64 = raw.iter().sum();
+                raw.iter().map(|r| r / sum).collect()
+            }
+        };
+        let mut out = vec![0.0; depths.len()];
+        for ((curve, c), node) in self.curves.iter().zip(&coefficients).zip(&self.nodes) {
+            if *c == 0.0 {
+                continue;
+            }
+            // F / E* of this node, interpolated, times E* of the modulus
+            // wanted: E*/E*_node = E / E_node (one Poisson ratio).
+            let scale = c * (x - node).exp();
+            for (o, f) in out.iter_mut().zip(curve.forces(depths, 1.0, 0.0)) {
+                *o += scale * f;
+            }
+        }
+        out
+    }
+}
