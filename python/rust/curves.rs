@@ -99,6 +99,74 @@ impl ForceCurve {
     }
 }
 
+/// The approach curves of a tip (as [`ForceCurve`]) on `substrate` with
+/// its top layer's Young's modulus anywhere in `youngs_range` (Pa), from
+/// `nodes` exact tables at Chebyshev nodes in `ln E`
+/// (`analytic::ModulusFamily`): for fits and force maps on supports where
+/// the force does not scale with the modulus (an elastic base, a stack).
+#[pyclass(module = "layered_contact._native", frozen)]
+pub(crate) struct ModulusFamily {
+    inner: lc::analytic::ModulusFamily,
+}
+
+#[pymethods]
+impl ModulusFamily {
+    #[new]
+    #[pyo3(signature = (substrate, kind, radius, max_depth, youngs_range, nodes=12, half_angle=f64::NAN))]
+    #[allow(clippy::too_many_arguments)] // Python keyword arguments
+    fn new(
+        py: Python<'_>,
+        substrate: &Substrate,
+        kind: &str,
+        radius: f64,
+        max_depth: f64,
+        youngs_range: (f64, f64),
+        nodes: usize,
+        half_angle: f64,
+    ) -> PyResult<Self> {
+        let tip = match kind {
+            "flat_punch" => None,
+            other => Some(tip(other, radius, half_angle)?),
+        };
+        let substrate = substrate.inner.clone();
+        let inner = py
+            .detach(|| {
+                lc::analytic::ModulusFamily::new(
+                    &substrate,
+                    tip,
+                    radius,
+                    max_depth,
+                    youngs_range,
+                    nodes,
+                )
+            })
+            .py_err()?;
+        Ok(ModulusFamily { inner })
+    }
+
+    /// The approach forces (N) at `depth` (m, any shape) for a top layer of
+    /// Young's modulus `youngs_modulus` (Pa); NaN outside the range.
+    fn forces<'py>(
+        &self,
+        py: Python<'py>,
+        depth: PyReadonlyArrayDyn<'py, f64>,
+        youngs_modulus: f64,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        checked_len("depth", depth.shape())?;
+        let shape = depth.shape().to_vec();
+        let depths: Vec<f64> = depth.as_array().iter().copied().collect();
+        let inner = &self.inner;
+        let forces = py.detach(|| inner.forces(&depths, youngs_modulus));
+        PyArray1::from_vec(py, forces).reshape(shape)
+    }
+
+    /// The range of Young's moduli covered, Pa.
+    #[getter]
+    fn youngs_range(&self) -> (f64, f64) {
+        self.inner.youngs_range()
+    }
+}
+
 /// The pull-offs of a tip (as [`tip`]) with work of adhesion
 /// `work_of_adhesion` (J/m^2) on `substrate`: a dict of dicts (`force` N,
 /// `depth` m, `contact_radius` m) under `load_control`,

@@ -809,6 +809,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(analytic::paraboloid_pull_off_force, m)?)?;
     m.add_function(wrap_pyfunction!(analytic::paraboloid_state, m)?)?;
     m.add_class::<curves::ForceCurve>()?;
+    m.add_class::<curves::ModulusFamily>()?;
     m.add_function(wrap_pyfunction!(curves::before_jump_off, m)?)?;
     m.add_function(wrap_pyfunction!(analytic::paraboloid_series, m)?)?;
     m.add_function(wrap_pyfunction!(curves::tip_pull_off, m)?)?;

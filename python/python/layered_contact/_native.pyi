@@ -148,6 +148,21 @@ def before_jump_off(
     position: npt.NDArray[np.float64], force: npt.NDArray[np.float64]
 ) -> npt.NDArray[np.bool_]: ...
 
+class ModulusFamily:
+    def __init__(
+        self,
+        substrate: Substrate,
+        kind: str,
+        radius: float,
+        max_depth: float,
+        youngs_range: Tuple[float, float],
+        nodes: int = 12,
+        half_angle: float = ...,
+    ) -> None: ...
+    def forces(self, depth: npt.NDArray[np.float64], youngs_modulus: float) -> npt.NDArray[np.float64]: ...
+    @property
+    def youngs_range(self) -> Tuple[float, float]: ...
+
 class ForceCurve:
     def __init__(
         self, substrate: Substrate, kind: str, radius: float, max_depth: float, half_angle: float = ...
