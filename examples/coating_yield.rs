@@ -20,9 +20,17 @@ const LAYERS: [(&str, f64, f64, f64, f64); 3] = [
     ("steel", 210e9, 0.30, f64::INFINITY, 1.6e9),
 ];
 
-/// The largest von Mises / yield ratio, its plane's depth, its cell, and
-/// the force.
-type Found = (f64, f64, usize, f64);
+/// The most loaded point of a solve: the largest von Mises / yield ratio,
+/// its plane's depth and cell, and the solve's force, contact radius and
+/// pressure.
+struct Found {
+    ratio: f64,
+    depth: f64,
+    cell: usize,
+    force: f64,
+    contact_radius: f64,
+    pressure: Vec<f64>,
+}
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let material = |k: usize| Material::new(LAYERS[k].1, LAYERS[k].2);
@@ -52,31 +60,31 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             LAYERS[2].4
         }
     };
-    // The largest von Mises / yield over the planes, with its plane and cell.
     let mut worst = |depth: f64| -> Result<Found, Box<dyn std::error::Error>> {
         let (s, _) = solver.solve_depth(&Sphere::new(radius)?, depth, None, &mut ())?;
-        let p: Vec<f64> = s
-            .pressure
-            .as_ref()
-            .ok_or("no pressure")?
-            .iter()
-            .copied()
-            .collect();
-        let planes = stress.planes(&p, &depths, Side::Below)?;
-        let mut best = (0.0, 0.0, 0);
-        for plane in &planes {
+        let pressure: Vec<f64> = s.pressure.ok_or("no pressure")?.iter().copied().collect();
+        let mut found = Found {
+            ratio: 0.0,
+            depth: 0.0,
+            cell: 0,
+            force: s.force,
+            contact_radius: s.contact_radius,
+            pressure: Vec::new(),
+        };
+        for plane in stress.planes(&pressure, &depths, Side::Below)? {
             let (vm, cell) = plane.max_of(|t| t.von_mises());
             let ratio = vm / yield_at(plane.depth);
-            if ratio > best.0 {
-                best = (ratio, plane.depth, cell);
+            if ratio > found.ratio {
+                (found.ratio, found.depth, found.cell) = (ratio, plane.depth, cell);
             }
         }
-        Ok((best.0, best.1, best.2, s.force))
+        found.pressure = pressure;
+        Ok(found)
     };
     let (mut low, mut high) = (0.01e-6, 1e-6);
     for _ in 0..40 {
         let mid = 0.5 * (low + high);
-        if worst(mid)?.0 < 1.0 {
+        if worst(mid)?.ratio < 1.0 {
             low = mid;
         } else {
             high = mid;
@@ -85,42 +93,30 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             break;
         }
     }
-    let (ratio, z, cell, force) = worst(high)?;
+    let found = worst(high)?;
     let centre = |cell: usize| grid.cell_centre(cell / grid.columns(), cell % grid.columns());
-    let (x, y) = centre(cell);
-    println!("first yield: depth {high:.4e} m, force {force:.4e} N (von Mises / yield {ratio:.4})");
+    let (x, y) = centre(found.cell);
     println!(
-        "  at z = {z:.3e} m ({}), r = {:.3e} m",
-        if z < 2e-6 {
-            "TiN"
-        } else if z < 3e-6 {
-            "chromium"
-        } else {
-            "steel"
-        },
-        x.hypot(y)
+        "first yield: depth {high:.4e} m, force {:.4e} N (von Mises / yield {:.4})",
+        found.force, found.ratio
     );
-    let (s, _) = solver.solve_depth(&Sphere::new(radius)?, high, None, &mut ())?;
-    let p: Vec<f64> = s
-        .pressure
-        .as_ref()
-        .ok_or("no pressure")?
-        .iter()
-        .copied()
-        .collect();
+    let z = found.depth;
+    let layer = if z < 2e-6 {
+        "TiN"
+    } else if z < 3e-6 {
+        "chromium"
+    } else {
+        "steel"
+    };
+    println!("  at z = {z:.3e} m ({layer}), r = {:.3e} m", x.hypot(y));
+    let p = found.pressure;
     println!(
         "  contact radius {:.3e} m, peak pressure {:.4e} Pa",
-        s.contact_radius,
+        found.contact_radius,
         p.iter().copied().fold(0.0, f64::max)
     );
     for t in stress.interfaces(&p)? {
-        let (shear, k) = t
-            .shear_x
-            .iter()
-            .zip(&t.shear_y)
-            .map(|(a, b)| a.hypot(*b))
-            .enumerate()
-            .fold((0.0, 0), |b, (k, v)| if v > b.0 { (v, k) } else { b });
+        let (shear, k) = t.largest_shear();
         let (x, y) = centre(k);
         let normal = t.normal.iter().copied().fold(0.0, f64::min);
         println!(

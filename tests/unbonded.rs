@@ -41,6 +41,18 @@ fn gel() -> Material {
     Material::new(10e3, 0.5).unwrap()
 }
 
+/// The BEM force and contact radius of a flat punch of radius `a`, `across`
+/// cells across, pressed `d` into `body` (a grid one cell wider on each side).
+fn bem_punch(body: &Substrate, a: f64, across: usize, d: f64) -> (f64, f64) {
+    let grid = Grid::new(across + 2, across + 2, 2.0 * a / across as f64).unwrap();
+    let mut solver =
+        ContactSolver::new(body, &grid, Boundary::Isolated, SolverParams::default()).unwrap();
+    let (s, _) = solver
+        .solve_depth(&FlatPunch::new(a).unwrap(), d, None, &mut ())
+        .unwrap();
+    (s.force, s.contact_radius)
+}
+
 #[test]
 fn coating_factor_matches_the_closed_form() {
     let f = CoatingFunctions::frictionless_rigid_base();
@@ -118,17 +130,11 @@ fn boundary_elements_agree_with_the_exact_solution() {
     // asserted 1 % and 0.5 % (the grid's first-order edge error).
     let h = 4e-6;
     let body = Substrate::layer_resting_on_rigid_base(gel(), h).unwrap();
-    let (a, across) = (4e-6, 64);
-    let grid = Grid::new(across + 2, across + 2, 2.0 * a / across as f64).unwrap();
-    let mut solver =
-        ContactSolver::new(&body, &grid, Boundary::Isolated, SolverParams::default()).unwrap();
-    let d = 1e-7;
-    let (s, _) = solver
-        .solve_depth(&FlatPunch::new(a).unwrap(), d, None, &mut ())
-        .unwrap();
+    let (a, across, d) = (4e-6, 64, 1e-7);
+    let (force, contact_radius) = bem_punch(&body, a, across, d);
     let exact = Axisymmetric::up_to_contact_radius(&body, 4.0 * a).unwrap();
-    let k = exact.flat_punch(s.contact_radius).unwrap().stiffness();
-    let punch = s.force / d / k - 1.0;
+    let k = exact.flat_punch(contact_radius).unwrap().stiffness();
+    let punch = force / d / k - 1.0;
     let ball = exact
         .paraboloid(20e-6, 0.0)
         .unwrap()
@@ -327,23 +333,17 @@ fn boundary_elements_agree_on_an_elastic_base() {
     let soft = Material::new(2.5e3, 0.5).unwrap();
     let body = Substrate::layer_resting_on_elastic_base(gel(), h, soft).unwrap();
     let bonded = Substrate::layer_on_elastic_base(gel(), h, soft).unwrap();
-    let (a, across) = (4e-6, 64);
-    let grid = Grid::new(across + 2, across + 2, 2.0 * a / across as f64).unwrap();
-    let mut solver =
-        ContactSolver::new(&body, &grid, Boundary::Isolated, SolverParams::default()).unwrap();
-    let d = 1e-7;
-    let (s, _) = solver
-        .solve_depth(&FlatPunch::new(a).unwrap(), d, None, &mut ())
-        .unwrap();
+    let (a, d) = (4e-6, 1e-7);
+    let (force, contact_radius) = bem_punch(&body, a, 64, d);
     let k = |b: &Substrate| {
         Axisymmetric::up_to_contact_radius(b, 4.0 * a)
             .unwrap()
-            .flat_punch(s.contact_radius)
+            .flat_punch(contact_radius)
             .unwrap()
             .stiffness()
     };
     let exact = k(&body);
-    let error = s.force / d / exact - 1.0;
+    let error = force / d / exact - 1.0;
     println!(
         "punch on a resting film over a soft gel: {error:+.3e}, bonded/resting {}",
         k(&bonded) / exact

@@ -31,6 +31,14 @@ pub(crate) fn tip(kind: &str, radius: f64, half_angle: f64) -> PyResult<lc::anal
     })
 }
 
+/// [`tip`], or `None` for `"flat_punch"` (its radius passed apart).
+fn tip_or_punch(kind: &str, radius: f64, half_angle: f64) -> PyResult<Option<lc::analytic::Tip>> {
+    Ok(match kind {
+        "flat_punch" => None,
+        other => Some(tip(other, radius, half_angle)?),
+    })
+}
+
 /// The exact force curve of a tip on `substrate`, tabulated to
 /// `max_depth` (m) once and then evaluated for any modulus (on glass or a
 /// half-space) and work of adhesion (`analytic::ForceCurve`). `kind` as
@@ -52,10 +60,7 @@ impl ForceCurve {
         max_depth: f64,
         half_angle: f64,
     ) -> PyResult<Self> {
-        let tip = match kind {
-            "flat_punch" => None,
-            other => Some(tip(other, radius, half_angle)?),
-        };
+        let tip = tip_or_punch(kind, radius, half_angle)?;
         let substrate = substrate.inner.clone();
         let inner = py
             .detach(|| match tip {
@@ -124,10 +129,7 @@ impl ModulusFamily {
         nodes: usize,
         half_angle: f64,
     ) -> PyResult<Self> {
-        let tip = match kind {
-            "flat_punch" => None,
-            other => Some(tip(other, radius, half_angle)?),
-        };
+        let tip = tip_or_punch(kind, radius, half_angle)?;
         let substrate = substrate.inner.clone();
         let inner = py
             .detach(|| {

@@ -167,3 +167,19 @@ pub struct InterfaceTractions {
     /// `sigma_yz`.
     pub shear_y: Vec<f64>,
 }
+
+impl InterfaceTractions {
+    /// The largest resultant shear traction `sqrt(sigma_xz^2 + sigma_yz^2)`
+    /// (Pa) on the interface and the cell holding it.
+    pub fn largest_shear(&self) -> (f64, usize) {
+        self.shear_x
+            .iter()
+            .zip(&self.shear_y)
+            .map(|(a, b)| a.hypot(*b))
+            .enumerate()
+            .fold(
+                (0.0, 0),
+                |best, (k, v)| if v > best.0 { (v, k) } else { best },
+            )
+    }
+}

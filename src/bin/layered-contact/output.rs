@@ -53,7 +53,7 @@ fn write_csv(curve: &Curve, path: &Path) -> Result<PathBuf> {
 }
 
 /// Writes `array` to `out/name` as `.npy`; its path.
-fn save<D: ndarray::Dimension>(
+pub fn save<D: ndarray::Dimension>(
     out: &Path,
     name: &str,
     array: &ndarray::Array<f64, D>,

@@ -14,19 +14,8 @@ use layered_contact::scene::{Curve, SubsurfaceResult};
 use layered_contact::stress::{StressPlane, VolumeMaximum};
 use layered_contact::Grid;
 
+use crate::output::save;
 use crate::Result;
-
-/// Writes `array` to `out/name` as `.npy`; its path.
-fn save<D: ndarray::Dimension>(
-    out: &Path,
-    name: &str,
-    array: &ndarray::Array<f64, D>,
-) -> Result<PathBuf> {
-    let path = out.join(name);
-    ndarray_npy::write_npy(&path, array)
-        .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-    Ok(path)
-}
 
 /// `planes x rows x columns` of one field of each plane.
 fn stack<'a>(grid: &Grid, fields: impl Iterator<Item = &'a Vec<f64>>) -> Result<Array3<f64>> {
@@ -112,16 +101,7 @@ pub fn summary(grid: &Grid, result: &SubsurfaceResult) -> Vec<String> {
     .flatten()
     .collect();
     for t in &result.interfaces {
-        let (shear, k) = t
-            .shear_x
-            .iter()
-            .zip(&t.shear_y)
-            .map(|(a, b)| a.hypot(*b))
-            .enumerate()
-            .fold(
-                (0.0, 0),
-                |best, (k, v)| if v > best.0 { (v, k) } else { best },
-            );
+        let (shear, k) = t.largest_shear();
         let (x, y) = grid.cell_centre(k / grid.columns(), k % grid.columns());
         lines.push(format!(
             "interface at {:.4e} m: largest shear traction {shear:.6e} Pa at x {x:.4e} m, y {y:.4e} m",
