@@ -44,8 +44,9 @@ fn maximum<'py>(
 }
 
 /// The dict of `planes` (and `interfaces`) on `grid`: `depth` (m),
-/// `xx` ... `yz`, `von_mises`, `max_shear`, `hydrostatic` (Pa, `planes x
-/// rows x columns`), `x`, `y` (m), `boundaries` (the layers' bottoms, m),
+/// `xx` ... `yz`, `von_mises`, `max_shear`, `hydrostatic`, the principal
+/// stresses `principal_max`, `principal_mid`, `principal_min` (Pa, `planes
+/// x rows x columns`), `x`, `y` (m), `boundaries` (the layers' bottoms, m),
 /// `interfaces` (a dict of `depth`, `normal`, `shear_x`, `shear_y`) and the
 /// maxima over the planes (`max_von_mises`, `max_shear_stress`,
 /// `max_principal`: dicts of `value`, `depth`, `x`, `y`, `row`, `column`).
@@ -62,7 +63,7 @@ pub(crate) fn stresses_dict<'py>(
         PyArray1::from_vec(py, planes.iter().map(|p| p.depth).collect()),
     )?;
     type Field = fn(&StressPlane) -> Vec<f64>;
-    let fields: [(&str, Field); 9] = [
+    let fields: [(&str, Field); 12] = [
         ("xx", |p| p.xx.clone()),
         ("yy", |p| p.yy.clone()),
         ("zz", |p| p.zz.clone()),
@@ -72,6 +73,9 @@ pub(crate) fn stresses_dict<'py>(
         ("von_mises", |p| p.map(|s| s.von_mises())),
         ("max_shear", |p| p.map(|s| s.max_shear())),
         ("hydrostatic", |p| p.map(|s| s.hydrostatic())),
+        ("principal_max", |p| p.map(|s| s.principal()[0])),
+        ("principal_mid", |p| p.map(|s| s.principal()[1])),
+        ("principal_min", |p| p.map(|s| s.principal()[2])),
     ];
     for (name, field) in fields {
         d.set_item(name, stack(py, grid, planes.iter().map(field))?)?;

@@ -94,6 +94,12 @@ def test_scenes_return_their_stresses_and_a_section():
     vm = s["max_von_mises"]
     k = int(np.argmin(abs(s["depth"] - vm["depth"])))
     assert s["von_mises"][k, vm["row"], vm["column"]] == vm["value"]
+    # The principal stresses are ordered and keep the trace (3 x hydrostatic).
+    assert np.all(s["principal_max"] >= s["principal_mid"])
+    assert np.all(s["principal_mid"] >= s["principal_min"])
+    trace = s["principal_max"] + s["principal_mid"] + s["principal_min"]
+    np.testing.assert_allclose(trace, s["xx"] + s["yy"] + s["zz"], rtol=0, atol=1e-9 * p.max())
+    np.testing.assert_allclose(s["max_shear"], 0.5 * (s["principal_max"] - s["principal_min"]))
     ax = lc.plot_section(s)
     assert ax.get_ylabel() == "depth z [m]"
     assert len(ax.lines) == 2  # the two boundaries above 6 um
