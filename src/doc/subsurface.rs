@@ -76,14 +76,15 @@
 //!
 //! ## Cost (`benches/stress.rs`)
 //!
-//! On a 512 x 512 grid (this machine, 2 cores, 2026-11-24, load about 1):
-//! planning takes 11 ms (half-space) to 24 ms (a three-layer coating)
-//! periodic and 0.37 to 0.62 s isolated; ten planes of one pressure 0.18 s
-//! periodic and 1.8 to 1.9 s isolated, where one application of the surface
-//! compliance operator takes 1.8 ms periodic and 4.4 to 5.4 ms isolated. A
-//! plane costs six inverse FFTs of the padded grid: about ten operator
-//! applications periodic and forty isolated at the default padding, whose
-//! grid is four times the operator's.
+//! On a 512 x 512 grid (`BENCHMARKS.md` has the machine, the load and the
+//! date): planning takes 9 ms (half-space) to 23 ms (a three-layer
+//! coating) periodic and 0.3 to 0.55 s isolated; ten planes of one
+//! pressure 0.16 to 0.17 s periodic and 1.6 to 1.8 s isolated, where one
+//! application of the surface compliance operator takes 1.5 to 1.7 ms
+//! periodic and 4 to 5 ms isolated. A plane costs six inverse FFTs of the
+//! padded grid: about ten operator applications periodic and thirty to
+//! forty-five isolated at the default padding, whose grid is four times
+//! the operator's.
 //!
 //! ## Example: where a hard coating first yields
 //!

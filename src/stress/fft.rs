@@ -13,6 +13,9 @@ use rustfft::{Fft, FftPlanner};
 
 use crate::parallel::for_each_row;
 
+/// Spectrum columns transformed per call (and per parallel task).
+const COLUMN_BLOCK: usize = 16;
+
 pub(super) struct Fft2 {
     /// FFT rows and columns (padded).
     rows: usize,
@@ -66,15 +69,19 @@ impl Fft2 {
         let (rows, data_rows) = (self.rows, self.data_rows);
         let spectra = &self.rows_spectra;
         let plan = &self.column_forward;
-        for_each_row(spectrum, rows, |j, column| {
-            for (i, value) in column.iter_mut().enumerate() {
-                *value = if i < data_rows {
-                    spectra[i * half + j]
-                } else {
-                    Complex::default()
-                };
+        for_each_row(spectrum, rows * COLUMN_BLOCK, |b, block| {
+            for (c, column) in block.chunks_mut(rows).enumerate() {
+                let j = b * COLUMN_BLOCK + c;
+                for (i, value) in column.iter_mut().enumerate() {
+                    *value = if i < data_rows {
+                        spectra[i * half + j]
+                    } else {
+                        Complex::default()
+                    };
+                }
             }
-            plan.process(column);
+            // The columns of a block in one call: one scratch for all.
+            plan.process(block);
         });
     }
 
@@ -85,7 +92,7 @@ impl Fft2 {
     pub(super) fn inverse(&mut self, spectrum: &mut [Complex<f64>], field: &mut [f64]) {
         let (rows, half) = (self.rows, self.half());
         let plan = &self.column_inverse;
-        for_each_row(spectrum, rows, |_, column| plan.process(column));
+        for_each_row(spectrum, rows * COLUMN_BLOCK, |_, block| plan.process(block));
         let spectrum = &*spectrum;
         for_each_row(&mut self.rows_spectra, half, |i, row| {
             for (j, value) in row.iter_mut().enumerate() {
