@@ -92,7 +92,9 @@ impl Fft2 {
     pub(super) fn inverse(&mut self, spectrum: &mut [Complex<f64>], field: &mut [f64]) {
         let (rows, half) = (self.rows, self.half());
         let plan = &self.column_inverse;
-        for_each_row(spectrum, rows * COLUMN_BLOCK, |_, block| plan.process(block));
+        for_each_row(spectrum, rows * COLUMN_BLOCK, |_, block| {
+            plan.process(block)
+        });
         let spectrum = &*spectrum;
         for_each_row(&mut self.rows_spectra, half, |i, row| {
             for (j, value) in row.iter_mut().enumerate() {
