@@ -360,6 +360,61 @@ fn fit_finds_the_thickness_of_a_film_resting_on_a_gel() {
     );
 }
 
+/// `layered-contact fit --modulus-range` on a film bonded to a softer gel:
+/// the same estimate as the plain fit (a table per modulus tried) from
+/// tables built once at 12 Chebyshev nodes (within 1e-8 of the exact
+/// curves), and a range that is not one is refused.
+#[test]
+fn fit_with_a_modulus_range_matches_the_plain_fit() {
+    use layered_contact::analytic::{Axisymmetric, ForceCurve, Tip};
+    use layered_contact::{Material, Substrate};
+
+    let gel = Material::new(2.5e3, 0.5).unwrap();
+    let film =
+        Substrate::layer_on_elastic_base(Material::new(10e3, 0.5).unwrap(), 4e-6, gel).unwrap();
+    let exact = Axisymmetric::up_to_contact_radius(&film, 20e-6).unwrap();
+    let curve = ForceCurve::new(&exact, Tip::Paraboloid { radius: 5e-6 }, 2.5e-6).unwrap();
+    let z: Vec<f64> = (0..300).map(|k| 2.1e-6 * k as f64 / 299.0).collect();
+    let depths: Vec<f64> = z.iter().map(|z| z - 1e-7).collect();
+    let dir = folder("fit-range");
+    write_noisy_curve(&dir, &z, &curve.forces(&depths, 1.0, 0.0), 5);
+    let args = [
+        "fit",
+        "curve.csv",
+        "--tip",
+        "paraboloid",
+        "--radius",
+        "5e-6",
+        "--thickness",
+        "4e-6",
+        "--base-modulus",
+        "2.5e3",
+        "--base-poisson",
+        "0.5",
+        "--modulus",
+        "8e3",
+    ];
+    let plain = tool(&args, &dir);
+    let mut ranged: Vec<&str> = args.to_vec();
+    ranged.extend(["--modulus-range", "3e3,30e3"]);
+    let with_range = tool(&ranged, &dir);
+    let (a, b) = (text(&plain.stdout), text(&with_range.stdout));
+    assert!(
+        plain.status.success() && with_range.status.success(),
+        "{a}{b}"
+    );
+    let (e_plain, _) = estimate(&a, "youngs_modulus");
+    let (e_range, _) = estimate(&b, "youngs_modulus");
+    println!("plain {e_plain}, with the family {e_range}");
+    assert!((e_range / e_plain - 1.0).abs() < 1e-5, "{a}{b}");
+    assert!((e_plain / 10e3 - 1.0).abs() < 0.01, "{a}");
+    let last = ranged.len() - 1;
+    ranged[last] = "3e4,3e3";
+    let out = tool(&ranged, &dir);
+    assert!(!out.status.success());
+    assert!(text(&out.stderr).contains("LO,HI"), "{}", text(&out.stderr));
+}
+
 /// `layered-contact fit` recovers a film's modulus and work of adhesion
 /// from a synthetic retract curve (the exact model, `analytic::ForceCurve`,
 /// plus seeded noise of 1 % of the largest force), and refuses what it

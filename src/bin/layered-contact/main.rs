@@ -62,7 +62,7 @@ enum Command {
     /// on a retract segment, the work of adhesion) to a measured force
     /// curve; prints the estimates with standard errors and writes
     /// fit.csv.
-    Fit(fit::FitArgs),
+    Fit(Box<fit::FitArgs>),
     /// Reproduce the reference experiment (Lyashenko, Popov & Borysiuk
     /// 2023): CSV tables, SVG figures and a summary.
     Paper {

@@ -9,10 +9,18 @@ use std::path::{Path, PathBuf};
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
 use nalgebra_lm::{DMatrix, DVector, Dyn, Owned};
 
-use layered_contact::analytic::{before_jump_off, ForceCurve, Tip};
-use layered_contact::{Base, Material, Substrate};
+use layered_contact::analytic::{before_jump_off, ModulusFamily, Tip};
+use layered_contact::Material;
 
 use super::Result;
+
+mod model;
+
+use model::{build_table, Model, Sample, Values};
+
+/// Chebyshev nodes of a `--modulus-range` family: 8e-9 from the exact
+/// curves over a decade (`tests/force_curve.rs`).
+const FAMILY_NODES: usize = 12;
 
 /// Step of the central differences of the Jacobian, in scaled parameters.
 const JACOBIAN_STEP: f64 = 1e-6;
@@ -68,6 +76,12 @@ pub(crate) struct FitArgs {
     /// tip's is `z - F/k`.
     #[arg(long)]
     spring_constant: Option<f64>,
+    /// On an elastic support or layers below: build exact tables once at
+    /// Chebyshev nodes in ln E over this range of the film's modulus,
+    /// `LO,HI` (Pa), and interpolate the approach curves between them
+    /// (analytic::ModulusFamily) instead of a table per modulus tried.
+    #[arg(long, value_parser = range)]
+    modulus_range: Option<(f64, f64)>,
     /// Fit the film's thickness too (starting from --thickness).
     #[arg(long)]
     fit_thickness: bool,
@@ -132,124 +146,6 @@ struct Problem<'a> {
     unit: Vec<f64>,
     params: DVector<f64>,
     force_unit: f64,
-}
-
-/// The model's inputs at one set of parameters.
-#[derive(Clone, Copy, Debug)]
-struct Values {
-    modulus: f64,
-    contact: f64,
-    work: f64,
-    thickness: Option<f64>,
-    /// Young's modulus of the elastic support.
-    base_modulus: Option<f64>,
-}
-
-/// The exact model: one table at the starting modulus, rescaled on glass
-/// or a half-space; rebuilt for each modulus on an elastic support or a
-/// stack, and for each thickness or support modulus when they are fitted.
-struct Model {
-    sample: Sample,
-    tip: Option<Tip>,
-    radius: f64,
-    max_depth: f64,
-    table: ForceCurve,
-    table_modulus: f64,
-}
-
-struct Sample {
-    thickness: Option<f64>,
-    poisson: f64,
-    base: Option<Material>,
-    below: Vec<(f64, f64, f64)>,
-    unbonded: bool,
-}
-
-impl Sample {
-    /// Whether the force scales with the film's modulus (one layer on
-    /// glass, or a half-space).
-    fn scales(&self) -> bool {
-        self.base.is_none() && self.below.is_empty()
-    }
-
-    fn substrate(&self, modulus: f64) -> Result<Substrate> {
-        let film = Material::new(modulus, self.poisson)?;
-        if self.unbonded {
-            return match (self.thickness, self.base, self.below.is_empty()) {
-                (Some(h), None, true) => Ok(Substrate::layer_resting_on_rigid_base(film, h)?),
-                (Some(h), Some(base), true) => {
-                    Ok(Substrate::layer_resting_on_elastic_base(film, h, base)?)
-                }
-                _ => Err("--unbonded: a film of --thickness resting on glass or on \
-                          --base-modulus (not on --below layers)"
-                    .into()),
-            };
-        }
-        if !self.below.is_empty() {
-            let h = self
-                .thickness
-                .ok_or("--below needs the film's --thickness")?;
-            let mut layers = vec![(film, h)];
-            for &(e, nu, t) in &self.below {
-                layers.push((Material::new(e, nu)?, t));
-            }
-            let base = self.base.map_or(Base::Rigid, Base::Elastic);
-            return Ok(Substrate::stack(&layers, base)?);
-        }
-        Ok(match (self.thickness, self.base) {
-            (None, _) => Substrate::half_space(film),
-            (Some(h), None) => Substrate::layer_on_rigid_base(film, h)?,
-            (Some(h), Some(base)) => Substrate::layer_on_elastic_base(film, h, base)?,
-        })
-    }
-}
-
-/// The table of `tip` (a flat punch of `radius` if `None`) on `sample`
-/// with a film of `modulus`, to `max_depth`.
-fn build_table(
-    sample: &Sample,
-    tip: Option<Tip>,
-    radius: f64,
-    max_depth: f64,
-    modulus: f64,
-) -> Result<ForceCurve> {
-    let substrate = sample.substrate(modulus)?;
-    Ok(match tip {
-        Some(tip) => ForceCurve::on(&substrate, tip, max_depth)?,
-        None => ForceCurve::flat_punch_on(&substrate, radius)?,
-    })
-}
-
-impl Model {
-    fn forces(&self, depths: &[f64], v: &Values) -> Vec<f64> {
-        let base = self.sample.base;
-        let fixed = v.thickness == self.sample.thickness
-            && v.base_modulus == base.map(|b| b.youngs_modulus());
-        if fixed && self.sample.scales() {
-            return self
-                .table
-                .forces(depths, v.modulus / self.table_modulus, v.work);
-        }
-        // The support's Poisson ratio stays as given.
-        let table = match (base, v.base_modulus) {
-            (Some(b), Some(e)) => Material::new(e, b.poisson_ratio()).map(Some),
-            _ => Ok(base),
-        }
-        .map_err(Into::into)
-        .and_then(|base| {
-            let sample = Sample {
-                thickness: v.thickness,
-                base,
-                below: self.sample.below.clone(),
-                ..self.sample
-            };
-            build_table(&sample, self.tip, self.radius, self.max_depth, v.modulus)
-        });
-        match table {
-            Ok(table) => table.forces(depths, 1.0, v.work),
-            Err(_) => vec![f64::NAN; depths.len()],
-        }
-    }
 }
 
 impl Problem<'_> {
@@ -360,6 +256,19 @@ fn read_curve(path: &Path) -> Result<(Vec<f64>, Vec<f64>)> {
     Ok((z, f))
 }
 
+/// `LO,HI` of a range of moduli.
+fn range(text: &str) -> std::result::Result<(f64, f64), String> {
+    let values: Vec<f64> = text
+        .split(',')
+        .map(|v| v.trim().parse::<f64>())
+        .collect::<std::result::Result<_, _>>()
+        .map_err(|e| format!("{text}: {e}; expected LO,HI (Pa)"))?;
+    match values[..] {
+        [lo, hi] if lo > 0.0 && lo < hi && hi.is_finite() => Ok((lo, hi)),
+        _ => Err(format!("{text}: expected LO,HI with 0 < LO < HI (Pa)")),
+    }
+}
+
 /// `E,nu,thickness` of a layer under the film.
 fn layer(text: &str) -> std::result::Result<(f64, f64, f64), String> {
     let values: Vec<f64> = text
@@ -450,6 +359,17 @@ pub(crate) fn fit(args: &FitArgs) -> Result<()> {
     };
     let max_depth = (deepest + 0.5 * span).max(f64::MIN_POSITIVE);
     let table = build_table(&sample, tip, radius, max_depth, modulus)?;
+    let family = match args.modulus_range {
+        Some(range) if !sample.scales() => Some(ModulusFamily::new(
+            &sample.substrate(modulus)?,
+            tip,
+            radius,
+            max_depth,
+            range,
+            FAMILY_NODES,
+        )?),
+        _ => None,
+    };
     let model = Model {
         sample,
         tip,
@@ -457,6 +377,7 @@ pub(crate) fn fit(args: &FitArgs) -> Result<()> {
         max_depth,
         table,
         table_modulus: modulus,
+        family,
     };
     let force_unit = force
         .iter()

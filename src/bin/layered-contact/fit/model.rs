@@ -1,0 +1,135 @@
+//! The exact model a fit evaluates: the sample, one table at the starting
+//! modulus rescaled where the force scales with it, a family of tables
+//! over a range of moduli where it does not (`--modulus-range`), or a table
+//! per modulus, thickness or support modulus tried.
+
+use layered_contact::analytic::{ForceCurve, ModulusFamily, Tip};
+use layered_contact::{Base, Material, Substrate};
+
+use crate::Result;
+
+/// The model's inputs at one set of parameters.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Values {
+    pub(super) modulus: f64,
+    pub(super) contact: f64,
+    pub(super) work: f64,
+    pub(super) thickness: Option<f64>,
+    /// Young's modulus of the elastic support.
+    pub(super) base_modulus: Option<f64>,
+}
+
+/// The exact model: one table at the starting modulus, rescaled on glass
+/// or a half-space; rebuilt for each modulus on an elastic support or a
+/// stack, and for each thickness or support modulus when they are fitted.
+pub(super) struct Model {
+    pub(super) sample: Sample,
+    pub(super) tip: Option<Tip>,
+    pub(super) radius: f64,
+    pub(super) max_depth: f64,
+    pub(super) table: ForceCurve,
+    pub(super) table_modulus: f64,
+    /// The approach curves over a range of moduli, when asked for.
+    pub(super) family: Option<ModulusFamily>,
+}
+
+pub(super) struct Sample {
+    pub(super) thickness: Option<f64>,
+    pub(super) poisson: f64,
+    pub(super) base: Option<Material>,
+    pub(super) below: Vec<(f64, f64, f64)>,
+    pub(super) unbonded: bool,
+}
+
+impl Sample {
+    /// Whether the force scales with the film's modulus (one layer on
+    /// glass, or a half-space).
+    pub(super) fn scales(&self) -> bool {
+        self.base.is_none() && self.below.is_empty()
+    }
+
+    pub(super) fn substrate(&self, modulus: f64) -> Result<Substrate> {
+        let film = Material::new(modulus, self.poisson)?;
+        if self.unbonded {
+            return match (self.thickness, self.base, self.below.is_empty()) {
+                (Some(h), None, true) => Ok(Substrate::layer_resting_on_rigid_base(film, h)?),
+                (Some(h), Some(base), true) => {
+                    Ok(Substrate::layer_resting_on_elastic_base(film, h, base)?)
+                }
+                _ => Err("--unbonded: a film of --thickness resting on glass or on \
+                          --base-modulus (not on --below layers)"
+                    .into()),
+            };
+        }
+        if !self.below.is_empty() {
+            let h = self
+                .thickness
+                .ok_or("--below needs the film's --thickness")?;
+            let mut layers = vec![(film, h)];
+            for &(e, nu, t) in &self.below {
+                layers.push((Material::new(e, nu)?, t));
+            }
+            let base = self.base.map_or(Base::Rigid, Base::Elastic);
+            return Ok(Substrate::stack(&layers, base)?);
+        }
+        Ok(match (self.thickness, self.base) {
+            (None, _) => Substrate::half_space(film),
+            (Some(h), None) => Substrate::layer_on_rigid_base(film, h)?,
+            (Some(h), Some(base)) => Substrate::layer_on_elastic_base(film, h, base)?,
+        })
+    }
+}
+
+/// The table of `tip` (a flat punch of `radius` if `None`) on `sample`
+/// with a film of `modulus`, to `max_depth`.
+pub(super) fn build_table(
+    sample: &Sample,
+    tip: Option<Tip>,
+    radius: f64,
+    max_depth: f64,
+    modulus: f64,
+) -> Result<ForceCurve> {
+    let substrate = sample.substrate(modulus)?;
+    Ok(match tip {
+        Some(tip) => ForceCurve::on(&substrate, tip, max_depth)?,
+        None => ForceCurve::flat_punch_on(&substrate, radius)?,
+    })
+}
+
+impl Model {
+    pub(super) fn forces(&self, depths: &[f64], v: &Values) -> Vec<f64> {
+        let base = self.sample.base;
+        let fixed = v.thickness == self.sample.thickness
+            && v.base_modulus == base.map(|b| b.youngs_modulus());
+        if fixed && self.sample.scales() {
+            return self
+                .table
+                .forces(depths, v.modulus / self.table_modulus, v.work);
+        }
+        if let Some(family) = &self.family {
+            let (lo, hi) = family.youngs_range();
+            if fixed && v.work == 0.0 && (lo..=hi).contains(&v.modulus) {
+                return family.forces(depths, v.modulus);
+            }
+        }
+        // The support's Poisson ratio stays as given.
+        let table = match (base, v.base_modulus) {
+            (Some(b), Some(e)) => Material::new(e, b.poisson_ratio()).map(Some),
+            _ => Ok(base),
+        }
+        .map_err(Into::into)
+        .and_then(|base| {
+            let sample = Sample {
+                thickness: v.thickness,
+                base,
+                below: self.sample.below.clone(),
+                ..self.sample
+            };
+            build_table(&sample, self.tip, self.radius, self.max_depth, v.modulus)
+        });
+        match table {
+            Ok(table) => table.forces(depths, 1.0, v.work),
+            Err(_) => vec![f64::NAN; depths.len()],
+        }
+    }
+}
