@@ -52,6 +52,17 @@
 //! the integral of the stress of an unbounded body over a plane. What is
 //! left is the field of the periodic images less their mean.
 //!
+//! ## Tangential tractions (not yet)
+//!
+//! The mode's state is already `(U, W, T, S)`, the shear traction included,
+//! so a tangential surface traction along the wavevector is a second
+//! right-hand side of the same banded system (`T = t` at the top instead
+//! of 0). A traction across the wavevector drives the antiplane (SH) mode:
+//! `u_eta` and `sigma_eta_z` with `phi'' = phi` in each layer, two
+//! decaying functions per layer and two conditions per interface, a
+//! smaller system of the same kind. Friction and partial slip would add
+//! both; nothing else in the planes or the FFTs changes.
+//!
 //! ## Accuracy (`tests/stress.rs`)
 //!
 //! | case | reference | error |
