@@ -717,10 +717,7 @@ fn run_scene(
         stresses: curve
             .stresses
             .as_ref()
-            .map(|r| {
-                stresses::stresses_dict(py, &curve.grid, &r.planes, &r.interfaces, &r.boundaries)
-                    .map(Bound::unbind)
-            })
+            .map(|r| stresses::stresses_dict(py, &curve.grid, r).map(Bound::unbind))
             .transpose()?,
     })
 }

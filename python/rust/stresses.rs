@@ -6,7 +6,8 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use layered_contact as lc;
-use lc::stress::{InterfaceTractions, StressPlane, VolumeMaximum};
+use lc::scene::SubsurfaceResult;
+use lc::stress::{StressPlane, VolumeMaximum};
 
 use super::{centres, OrPy, Substrate};
 
@@ -53,10 +54,9 @@ fn maximum<'py>(
 pub(crate) fn stresses_dict<'py>(
     py: Python<'py>,
     grid: &lc::Grid,
-    planes: &[StressPlane],
-    interfaces: &[InterfaceTractions],
-    boundaries: &[f64],
+    result: &SubsurfaceResult,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let (planes, interfaces) = (&result.planes, &result.interfaces);
     let d = PyDict::new(py);
     d.set_item(
         "depth",
@@ -83,7 +83,7 @@ pub(crate) fn stresses_dict<'py>(
     let (x, y) = centres(py, grid);
     d.set_item("x", x)?;
     d.set_item("y", y)?;
-    d.set_item("boundaries", boundaries.to_vec())?;
+    d.set_item("boundaries", result.boundaries.clone())?;
     let t = PyDict::new(py);
     t.set_item(
         "depth",
@@ -102,18 +102,9 @@ pub(crate) fn stresses_dict<'py>(
         stack(py, grid, interfaces.iter().map(|i| i.shear_y.clone()))?,
     )?;
     d.set_item("interfaces", t)?;
-    d.set_item(
-        "max_von_mises",
-        maximum(py, grid, VolumeMaximum::over(planes, |s| s.von_mises()))?,
-    )?;
-    d.set_item(
-        "max_shear_stress",
-        maximum(py, grid, VolumeMaximum::over(planes, |s| s.max_shear()))?,
-    )?;
-    d.set_item(
-        "max_principal",
-        maximum(py, grid, VolumeMaximum::over(planes, |s| s.principal()[0]))?,
-    )?;
+    d.set_item("max_von_mises", maximum(py, grid, result.von_mises)?)?;
+    d.set_item("max_shear_stress", maximum(py, grid, result.max_shear)?)?;
+    d.set_item("max_principal", maximum(py, grid, result.tension)?)?;
     Ok(d)
 }
 
@@ -156,13 +147,9 @@ pub(crate) fn subsurface_stress<'py>(
     } else {
         lc::Boundary::Isolated
     };
-    let padding = padding.unwrap_or(if periodic {
-        1
-    } else {
-        lc::stress::DEFAULT_PADDING
-    });
+    let padding = padding.unwrap_or(lc::stress::default_padding(boundary));
     let body = substrate.inner.clone();
-    let (planes, tractions, boundaries) = py
+    let result = py
         .detach(|| -> lc::Result<_> {
             let mut stress =
                 lc::stress::SubsurfaceStress::with_padding(&body, &grid, boundary, padding)?;
@@ -172,8 +159,12 @@ pub(crate) fn subsurface_stress<'py>(
             } else {
                 Vec::new()
             };
-            Ok((planes, tractions, stress.interface_depths()))
+            Ok(SubsurfaceResult::new(
+                planes,
+                tractions,
+                stress.interface_depths(),
+            ))
         })
         .py_err()?;
-    stresses_dict(py, &grid, &planes, &tractions, &boundaries)
+    stresses_dict(py, &grid, &result)
 }

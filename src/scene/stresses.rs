@@ -4,9 +4,10 @@
 use crate::error::{Error, Result};
 use crate::solver::Solution;
 use crate::stress::{
-    InterfaceTractions, Side, StressPlane, SubsurfaceStress, VolumeMaximum, DEFAULT_PADDING,
+    check_depth, default_padding, rigid_floor, InterfaceTractions, Side, StressPlane,
+    SubsurfaceStress, VolumeMaximum, DEFAULT_PADDING,
 };
-use crate::substrate::{Base, Substrate};
+use crate::substrate::Substrate;
 use crate::{Boundary, Grid};
 
 /// The most planes a scene may ask for.
@@ -73,18 +74,9 @@ impl StressOutputs {
             let step = grid.to / (grid.planes - 1) as f64;
             depths.extend((0..grid.planes).map(|k| k as f64 * step));
         }
-        let floor = match substrate.base() {
-            Some(Base::Rigid) => substrate.total_thickness().unwrap_or(f64::INFINITY),
-            _ => f64::INFINITY,
-        };
+        let floor = rigid_floor(substrate);
         for &depth in &depths {
-            if !(depth >= 0.0 && depth.is_finite() && depth < floor) {
-                return Err(Error::InvalidParameter {
-                    name: "outputs.stresses depth (m)",
-                    value: depth,
-                    expected: "finite, at least 0, and above a rigid base",
-                });
-            }
+            check_depth(depth, Side::Below, floor)?;
         }
         depths.sort_by(f64::total_cmp);
         depths.dedup();
@@ -118,6 +110,25 @@ pub struct SubsurfaceResult {
     pub boundaries: Vec<f64>,
 }
 
+impl SubsurfaceResult {
+    /// The result of `planes` and `interfaces` in a body whose layers end
+    /// at `boundaries`, with the maxima over the planes.
+    pub fn new(
+        planes: Vec<StressPlane>,
+        interfaces: Vec<InterfaceTractions>,
+        boundaries: Vec<f64>,
+    ) -> Self {
+        SubsurfaceResult {
+            von_mises: VolumeMaximum::over(&planes, |s| s.von_mises()),
+            max_shear: VolumeMaximum::over(&planes, |s| s.max_shear()),
+            tension: VolumeMaximum::over(&planes, |s| s.principal()[0]),
+            planes,
+            interfaces,
+            boundaries,
+        }
+    }
+}
+
 /// Computes the stresses `outputs` asks for under the pressure of `peak`.
 pub(super) fn compute(
     outputs: &StressOutputs,
@@ -134,7 +145,8 @@ pub(super) fn compute(
     let pressure: Vec<f64> = pressure.iter().copied().collect();
     let padding = match boundary {
         Boundary::Isolated => outputs.padding.unwrap_or(DEFAULT_PADDING),
-        Boundary::Periodic => 1,
+        // A periodic grid is never padded (a padding asked for is ignored).
+        Boundary::Periodic => default_padding(boundary),
     };
     let mut stress = SubsurfaceStress::with_padding(substrate, grid, boundary, padding)?;
     let planes = stress.planes(&pressure, &depths, Side::Below)?;
@@ -143,12 +155,9 @@ pub(super) fn compute(
     } else {
         Vec::new()
     };
-    Ok(SubsurfaceResult {
-        boundaries: stress.interface_depths(),
-        von_mises: VolumeMaximum::over(&planes, |s| s.von_mises()),
-        max_shear: VolumeMaximum::over(&planes, |s| s.max_shear()),
-        tension: VolumeMaximum::over(&planes, |s| s.principal()[0]),
+    Ok(SubsurfaceResult::new(
         planes,
         interfaces,
-    })
+        stress.interface_depths(),
+    ))
 }

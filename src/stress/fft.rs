@@ -50,6 +50,11 @@ impl Fft2 {
         }
     }
 
+    /// FFT rows (padded): the length of a spectrum column.
+    pub(super) fn rows(&self) -> usize {
+        self.rows
+    }
+
     /// Spectrum columns.
     pub(super) fn half(&self) -> usize {
         self.columns / 2 + 1

@@ -11,7 +11,10 @@ use crate::substrate::{Base, Substrate};
 
 use super::fft::Fft2;
 use super::mode::{Column, Ply};
-use super::{InterfaceTractions, Side, StressPlane, DEFAULT_PADDING, MAX_PADDED_CELLS};
+use super::{
+    check_depth, default_padding, rigid_floor, InterfaceTractions, Side, StressPlane,
+    MAX_PADDED_CELLS,
+};
 
 /// Plans the stresses below a grid on one body: the exact solution of
 /// every distinct wavenumber once, then any number of planes for any
@@ -20,8 +23,8 @@ pub struct SubsurfaceStress {
     column: Column,
     grid: Grid,
     boundary: Boundary,
-    /// Rows and columns of the (padded) FFT grid.
-    size: (usize, usize),
+    /// The depth of a rigid base's face, m (`None` on an elastic base).
+    floor: Option<f64>,
     fft: Fft2,
     /// Per spectrum bin (column by column, `half x rows`), the index of its
     /// wavenumber in `wavenumbers` (`u32::MAX` for the mean).
@@ -38,15 +41,6 @@ pub struct SubsurfaceStress {
 /// Distinct wavenumbers solved per parallel task while planning.
 const SOLVES_PER_TASK: usize = 256;
 
-/// Poisson ratio of the material at `z`.
-fn poisson_at(column: &Column, index: usize) -> f64 {
-    column
-        .plies
-        .get(index)
-        .or(column.base.as_ref())
-        .map_or(0.0, |p| p.nu)
-}
-
 impl SubsurfaceStress {
     /// Plans the stresses in `substrate` under `grid`; an isolated grid is
     /// padded [`DEFAULT_PADDING`] times.
@@ -54,11 +48,7 @@ impl SubsurfaceStress {
     /// # Errors
     /// As [`SubsurfaceStress::with_padding`].
     pub fn new(substrate: &Substrate, grid: &Grid, boundary: Boundary) -> Result<Self> {
-        let padding = match boundary {
-            Boundary::Isolated => DEFAULT_PADDING,
-            Boundary::Periodic => 1,
-        };
-        Self::with_padding(substrate, grid, boundary, padding)
+        Self::with_padding(substrate, grid, boundary, default_padding(boundary))
     }
 
     /// Plans the stresses with an isolated grid zero-padded `padding` times
@@ -146,7 +136,7 @@ impl SubsurfaceStress {
             column,
             grid: *grid,
             boundary,
-            size: (rows, columns),
+            floor: rigid_floor(substrate),
             fft: Fft2::new(rows, columns, grid.rows(), grid.columns()),
             bins,
             wavenumbers,
@@ -203,20 +193,10 @@ impl SubsurfaceStress {
         side: Side,
     ) -> Result<Vec<StressPlane>> {
         self.check(pressure)?;
-        let total: f64 = self.column.plies.iter().map(|p| p.thickness).sum();
-        let rigid = self.column.base.is_none();
         for &depth in depths {
-            if !(depth >= 0.0 && depth.is_finite())
-                || (rigid && (depth > total || (depth == total && side == Side::Below)))
-            {
-                return Err(Error::InvalidParameter {
-                    name: "depth of a stress plane (m)",
-                    value: depth,
-                    expected: "finite, at least 0, and above a rigid base",
-                });
-            }
+            check_depth(depth, side, self.floor)?;
         }
-        let bins = self.size.0 * self.fft.half();
+        let bins = self.fft.rows() * self.fft.half();
         let mut spectrum = vec![Complex::default(); bins];
         self.fft.forward(pressure, &mut spectrum);
         let mut work = vec![Complex::default(); bins];
@@ -258,7 +238,7 @@ impl SubsurfaceStress {
         // average of the long-wave limit for an isolated contact.
         let lateral = match self.boundary {
             Boundary::Periodic => {
-                let nu = poisson_at(&self.column, layer);
+                let nu = self.column.ply(layer).map_or(0.0, |p| p.nu);
                 -nu / (1.0 - nu)
             }
             Boundary::Isolated => {
@@ -299,7 +279,7 @@ impl SubsurfaceStress {
             &mut out.xz,
             &mut out.yz,
         ];
-        let rows = self.size.0;
+        let rows = self.fft.rows();
         let (bins, cosines) = (&self.bins, &self.cosines);
         for ((multiplier, uniform), target) in components.into_iter().zip(targets) {
             crate::parallel::for_each_row(work, rows, |j, line| {

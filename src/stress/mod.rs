@@ -58,9 +58,50 @@ mod tensor;
 pub use field::SubsurfaceStress;
 pub use tensor::Stress;
 
+use crate::error::{Error, Result};
+use crate::grid::Boundary;
+use crate::substrate::{Base, Substrate};
+
 /// How many times an isolated grid is padded along each axis by
 /// [`SubsurfaceStress::new`].
 pub const DEFAULT_PADDING: usize = 4;
+
+/// The padding [`SubsurfaceStress::new`] uses: [`DEFAULT_PADDING`] on an
+/// isolated grid, none (1) on a periodic one.
+pub fn default_padding(boundary: Boundary) -> usize {
+    match boundary {
+        Boundary::Isolated => DEFAULT_PADDING,
+        Boundary::Periodic => 1,
+    }
+}
+
+/// Whether a plane at `depth` (m) on `side` of an interface lies in the
+/// body: finite, at least 0, and not in or below a rigid base whose face is
+/// at `rigid_floor` (m; that face belongs to the layer above).
+///
+/// # Errors
+/// [`Error::InvalidParameter`] naming the depth and the range.
+pub(crate) fn check_depth(depth: f64, side: Side, rigid_floor: Option<f64>) -> Result<()> {
+    let below_floor =
+        rigid_floor.is_some_and(|floor| depth > floor || (depth == floor && side == Side::Below));
+    if depth >= 0.0 && depth.is_finite() && !below_floor {
+        return Ok(());
+    }
+    Err(Error::InvalidParameter {
+        name: "depth of a stress plane (m)",
+        value: depth,
+        expected: "finite, at least 0, and above a rigid base",
+    })
+}
+
+/// The depth (m) of a rigid base's face under `substrate`; `None` on an
+/// elastic base or a half-space.
+pub(crate) fn rigid_floor(substrate: &Substrate) -> Option<f64> {
+    match substrate.base() {
+        Some(Base::Rigid) => substrate.total_thickness(),
+        _ => None,
+    }
+}
 
 /// The most cells a padded stress grid may have (2^28: 4 GiB per complex
 /// spectrum).

@@ -228,38 +228,26 @@ impl Column {
         coefficients: &[f64],
     ) -> ModeStress {
         let mut f = [0.0; 4];
-        let nu;
-        if let Some(ply) = self.plies.get(index) {
-            nu = ply.nu;
-            let b = basis(s, q * ply.thickness);
-            for (k, d) in b.iter().enumerate() {
-                let c = coefficients[4 * index + k];
+        let mut add = |functions: &[[f64; 4]], first: usize| {
+            for (k, d) in functions.iter().enumerate() {
+                let c = coefficients[first + k];
                 for (v, dv) in f.iter_mut().zip(d) {
                     *v += c * dv;
                 }
             }
-        } else {
-            let base = self.base.as_ref().map_or(
-                Ply {
-                    mu: f64::INFINITY,
-                    nu: 0.0,
-                    thickness: 0.0,
-                },
-                |b| *b,
-            );
-            nu = base.nu;
-            if self.base.is_some() {
-                let b = base_basis(s);
-                let first = 4 * self.plies.len();
-                for (k, d) in b.iter().enumerate() {
-                    let c = coefficients[first + k];
-                    for (v, dv) in f.iter_mut().zip(d) {
-                        *v += c * dv;
-                    }
-                }
-            }
+        };
+        match self.plies.get(index) {
+            Some(ply) => add(&basis(s, q * ply.thickness), 4 * index),
+            None if self.base.is_some() => add(&base_basis(s), 4 * self.plies.len()),
+            // A rigid base carries no field (the callers refuse its depths).
+            None => {}
         }
-        stresses(&f, nu)
+        stresses(&f, self.ply(index).map_or(0.0, |p| p.nu))
+    }
+
+    /// Layer `index`, or the elastic base for `plies.len()`.
+    pub(super) fn ply(&self, index: usize) -> Option<&Ply> {
+        self.plies.get(index).or(self.base.as_ref())
     }
 }
 
@@ -277,7 +265,7 @@ impl Column {
     /// stress over an unbounded plane.
     pub(super) fn long_wave(&self, index: usize) -> [f64; 3] {
         let Some(ply) = self.plies.get(index) else {
-            let nu = self.base.map_or(0.0, |b| b.nu);
+            let nu = self.ply(index).map_or(0.0, |b| b.nu);
             return [-1.0, -1.0, -2.0 * nu];
         };
         let xi = if self.frictionless {

@@ -254,12 +254,12 @@ impl CoatingFunctions {
         self.frictionless
     }
 
-    /// `D(t) / t`, `(1 + 2t - e^(-2t)) / t` and `P(t) / t` of the
+    /// `D(t) / t`, `g = (1 - e^(-2t)) / t` and `P(t) / t` of the
     /// frictionless layer (see [`CoatingFunctions::frictionless`]), all
-    /// finite and positive at `t = 0` (8, 4 and 8).
+    /// finite and positive at `t = 0` (8, 2 and 8).
     fn frictionless_parts(&self, t: f64) -> (f64, f64, f64) {
         if t == 0.0 {
-            return (8.0, 4.0, 8.0);
+            return (8.0, 2.0, 8.0);
         }
         let e1 = (-t).exp();
         let e2 = e1 * e1;
@@ -271,7 +271,7 @@ impl CoatingFunctions {
         } else {
             p
         };
-        (d, 2.0 + g, p)
+        (d, g, p)
     }
 
     /// `G = mu1 / mu2`, the shear-modulus ratio of layer to base (0 for a
@@ -314,13 +314,8 @@ impl CoatingFunctions {
             return 1.0;
         }
         if self.frictionless {
-            // (rho P/t + t g^2) / (D/t), g = (1 - e^(-2t)) / t.
-            let g = if t == 0.0 {
-                2.0
-            } else {
-                -(-2.0 * t).exp_m1() / t
-            };
-            let (d, _, p) = self.frictionless_parts(t);
+            // (rho P/t + t g^2) / (D/t).
+            let (d, g, p) = self.frictionless_parts(t);
             return (self.support_ratio * p + t * g * g) / d;
         }
         let d = self.denominator(t);
@@ -380,8 +375,9 @@ impl CoatingFunctions {
     pub(crate) fn lambda_scaled(&self, t: f64) -> f64 {
         let t = t.abs();
         if self.frictionless {
-            let (d, n, _) = self.frictionless_parts(t);
-            let rho = self.support_ratio;
+            // n = (1 + 2t - e^(-2t)) / t = 2 + g.
+            let (d, g, _) = self.frictionless_parts(t);
+            let (n, rho) = (2.0 + g, self.support_ratio);
             return 2.0 * (n - rho * (n + 2.0 * t)) / d;
         }
         self.lambda_numerator_scaled(t) / self.denominator(t)
@@ -397,14 +393,9 @@ impl CoatingFunctions {
             if t > T_NEGLIGIBLE {
                 return 1.0 / t;
             }
-            // (rho P + (1 - e^(-2t))^2) / (t D) = (rho P/t / t + g^2) / (D / t),
-            // g = (1 - e^(-2t)) / t; +inf at t = 0 on an elastic base.
-            let g = if t == 0.0 {
-                2.0
-            } else {
-                -(-2.0 * t).exp_m1() / t
-            };
-            let (d, _, p) = self.frictionless_parts(t);
+            // (rho P + (1 - e^(-2t))^2) / (t D) = (rho P/t / t + g^2) / (D / t);
+            // +inf at t = 0 on an elastic base.
+            let (d, g, p) = self.frictionless_parts(t);
             let support = if self.support_ratio > 0.0 {
                 self.support_ratio * p / t
             } else {

@@ -98,12 +98,20 @@ pub fn write_coordinates(grid: &Grid, out: &Path) -> Result<Vec<PathBuf>> {
     Ok(vec![save(out, "x.npy", &x)?, save(out, "y.npy", &y)?])
 }
 
-const FONT: &str = "sans-serif";
+/// The family name of the embedded font the figures use.
+pub const FONT: &str = "sans-serif";
+
+/// Registers the embedded font under [`FONT`] (the SVGs carry their text
+/// in it, whatever the machine has installed).
+pub fn register_font() -> Result<()> {
+    plotters::style::register_font(FONT, FontStyle::Normal, dejavu::sans::regular())
+        .map_err(|_| "invalid embedded font")?;
+    Ok(())
+}
 
 /// Force against depth, loading solid and unloading dashed.
 fn plot(curve: &Curve, path: &Path) -> Result<()> {
-    plotters::style::register_font(FONT, FontStyle::Normal, dejavu::sans::regular())
-        .map_err(|_| "invalid embedded font")?;
+    register_font()?;
     let points = |phase: Phase| -> Vec<(f64, f64)> {
         curve.phase(phase).map(|s| (s.depth, s.force)).collect()
     };

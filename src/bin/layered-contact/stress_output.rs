@@ -14,7 +14,7 @@ use layered_contact::scene::{Curve, SubsurfaceResult};
 use layered_contact::stress::{StressPlane, VolumeMaximum};
 use layered_contact::Grid;
 
-use crate::output::save;
+use crate::output::{register_font, save, FONT};
 use crate::Result;
 
 /// `planes x rows x columns` of one field of each plane.
@@ -111,8 +111,6 @@ pub fn summary(grid: &Grid, result: &SubsurfaceResult) -> Vec<String> {
     lines
 }
 
-const FONT: &str = "sans-serif";
-
 /// The von Mises stress on the x-z section through the grid's middle
 /// column, with the interfaces as white lines.
 fn section(
@@ -122,8 +120,7 @@ fn section(
     interfaces: &[f64],
     path: &Path,
 ) -> Result<()> {
-    plotters::style::register_font(FONT, FontStyle::Normal, dejavu::sans::regular())
-        .map_err(|_| "invalid embedded font")?;
+    register_font()?;
     let j = grid.columns() / 2;
     let xs: Vec<f64> = (0..grid.rows()).map(|i| grid.cell_centre(i, j).0).collect();
     let depths: Vec<f64> = planes.iter().map(|p| p.depth).collect();

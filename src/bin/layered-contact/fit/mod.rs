@@ -131,6 +131,15 @@ impl Param {
             _ => (value / unit).ln(),
         }
     }
+
+    /// `d value / d p` at the scaled parameter `p`: the unit, or the value
+    /// itself for a logarithm.
+    fn slope(self, p: f64, unit: f64) -> f64 {
+        match self {
+            Param::ContactPoint => unit,
+            _ => self.value(p, unit),
+        }
+    }
 }
 
 /// The least-squares problem in scaled parameters: the logarithm of each
@@ -385,28 +394,30 @@ pub(crate) fn fit(args: &FitArgs) -> Result<()> {
         .fold(0.0, f64::max)
         .max(f64::MIN_POSITIVE);
     let work = positive("work", Some(args.work))?;
-    let mut fitted = vec![(Param::Modulus, modulus), (Param::ContactPoint, span)];
+    // (parameter, unit, start): the positive quantities in units of their
+    // starts, the contact point in units of the curve's span.
+    let mut fitted = vec![
+        (Param::Modulus, modulus, modulus),
+        (Param::ContactPoint, span, args.contact_point),
+    ];
     if adhesive {
-        fitted.push((Param::Work, work));
+        fitted.push((Param::Work, work, work));
     }
     if args.fit_thickness {
         let h = args
             .thickness
             .ok_or("--fit-thickness starts from --thickness")?;
-        fitted.push((Param::Thickness, h));
+        fitted.push((Param::Thickness, h, h));
     }
     if args.fit_base_modulus {
         let e = base
             .map(|b| b.youngs_modulus())
             .ok_or("--fit-base-modulus starts from --base-modulus")?;
-        fitted.push((Param::BaseModulus, e));
+        fitted.push((Param::BaseModulus, e, e));
     }
     let start = fitted
         .iter()
-        .map(|&(param, unit)| match param {
-            Param::ContactPoint => param.scaled(args.contact_point, unit),
-            _ => 0.0,
-        })
+        .map(|&(param, unit, start)| param.scaled(start, unit))
         .collect();
     let params: Vec<Param> = fitted.iter().map(|f| f.0).collect();
     let problem = Problem {
@@ -432,11 +443,7 @@ pub(crate) fn fit(args: &FitArgs) -> Result<()> {
         .try_inverse()
         .ok_or("the parameters are not determined by the curve (singular normal matrix)")?;
     for (k, param) in params.iter().enumerate() {
-        // d value / d p: the unit, or the value itself for a logarithm.
-        let slope = match param {
-            Param::ContactPoint => problem.unit[k],
-            _ => problem.value_of(k),
-        };
+        let slope = param.slope(problem.params[k], problem.unit[k]);
         let stderr = (covariance[(k, k)] * variance).sqrt() * slope;
         say!(
             "{:>26} = {:.6e} +- {:.2e}",

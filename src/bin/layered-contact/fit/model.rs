@@ -20,8 +20,9 @@ pub(super) struct Values {
 }
 
 /// The exact model: one table at the starting modulus, rescaled on glass
-/// or a half-space; rebuilt for each modulus on an elastic support or a
-/// stack, and for each thickness or support modulus when they are fitted.
+/// or a half-space (and used as it is at that modulus elsewhere); rebuilt
+/// for each other modulus on an elastic support or a stack, and for each
+/// thickness or support modulus when they are fitted.
 pub(super) struct Model {
     pub(super) sample: Sample,
     pub(super) tip: Option<Tip>,
@@ -101,7 +102,7 @@ impl Model {
         let base = self.sample.base;
         let fixed = v.thickness == self.sample.thickness
             && v.base_modulus == base.map(|b| b.youngs_modulus());
-        if fixed && self.sample.scales() {
+        if fixed && (self.sample.scales() || v.modulus == self.table_modulus) {
             return self
                 .table
                 .forces(depths, v.modulus / self.table_modulus, v.work);
