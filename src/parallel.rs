@@ -53,3 +53,25 @@ pub(crate) fn map_rows<T: Send, R: Send>(
         .map(|(i, row)| f(i, row))
         .collect()
 }
+
+/// As [`for_each_row`], with scratch made by `init` once per piece of work
+/// a thread takes (not once per row) and passed to `f`.
+pub(crate) fn for_each_row_with<T: Send, S>(
+    data: &mut [T],
+    width: usize,
+    init: impl Fn() -> S + Sync + Send,
+    f: impl Fn(&mut S, usize, &mut [T]) + Sync + Send,
+) {
+    let width = width.max(1);
+    #[cfg(feature = "parallel")]
+    if data.len() >= MIN_PARALLEL_VALUES {
+        data.par_chunks_mut(width)
+            .enumerate()
+            .for_each_init(&init, |scratch, (i, row)| f(scratch, i, row));
+        return;
+    }
+    let mut scratch = init();
+    data.chunks_mut(width)
+        .enumerate()
+        .for_each(|(i, row)| f(&mut scratch, i, row));
+}

@@ -409,40 +409,97 @@ fn bad_requests_are_refused() {
 }
 
 #[test]
-fn an_isolated_hertz_contact_converges_with_the_padding() {
+fn an_isolated_contact_has_no_images() {
     // The Hertz pressure on an isolated grid 4 radii wide (16 cells per
-    // radius), padded 2, 4 and 8 times: on the axis against Johnson's eq.
-    // 3.64 at z/a = 0.25, 0.48, 1, 2. Measured worst errors 1.40e-2,
-    // 1.86e-3 and 2.50e-4 p0: the images' error falls like the padding to
-    // the power -2.9 until the cell size's 2.5e-4 p0 (the periodic test's
-    // floor) remains. Asserted: below 2.5e-3 p0 at the default padding
-    // (4), a fall of more than 5 from 2 to 4, and the floor at 8.
+    // radius), padded twice (the default): on the axis against Johnson's
+    // eq. 3.64 at z/a = 0.25, 0.48, 1, 2; over whole planes against the
+    // same grid padded 8 times; on the surface sigma_zz = -p.
+    // Before the images' correction the axis was off by 1.40e-2, 1.86e-3
+    // and 2.50e-4 p0 padded 2, 4 and 8 times, and the planes padded twice
+    // and 8 times differed by 1.6e-2 p0. Measured now: the axis 2.51e-4 p0
+    // (the cell size's share, the periodic test's floor); the planes at
+    // z >= 4 cells within 2.3e-5 p0 (the images at 8 times the period,
+    // which the correction leaves, and the coarse grid's resolution of the
+    // rest); the planes within a cell or two of the surface 1.7e-4 p0 at
+    // the grid's edge (the band-limited pressure's ripple, which the
+    // coarse grid cannot see, falling like e^(-pi z / Delta)); the surface
+    // sigma_zz 6e-12 p0.
     let nu = 0.3;
     let body = Substrate::half_space(Material::new(1e9, nu).unwrap());
     let (grid, pressure) = circle(64, 16, false);
     let axis = 32 * 64 + 32;
     let hertz_z = |z: f64| -1.0 / (1.0 + z * z);
     let hertz_r = |z: f64| -(1.0 + nu) * (1.0 - z * (1.0 / z).atan()) + 0.5 / (1.0 + z * z);
-    let mut errors = Vec::new();
-    for padding in [2, 4, 8] {
-        let mut stress =
-            SubsurfaceStress::with_padding(&body, &grid, Boundary::Isolated, padding).unwrap();
-        let mut worst: f64 = 0.0;
-        for zr in [0.25, 0.48, 1.0, 2.0] {
-            let s = stress
-                .plane(&pressure, zr * 1e-3, Side::Below)
-                .unwrap()
-                .at(axis);
-            worst = worst
-                .max((s.zz - hertz_z(zr)).abs())
-                .max((s.xx - hertz_r(zr)).abs())
-                .max((s.yy - hertz_r(zr)).abs());
+    let depths: Vec<f64> = [0.0, 0.01, 0.05, 0.1, 0.25, 0.48, 1.0, 2.0]
+        .iter()
+        .map(|z| z * 1e-3)
+        .collect();
+    let mut default = SubsurfaceStress::new(&body, &grid, Boundary::Isolated).unwrap();
+    let mut long = SubsurfaceStress::with_padding(&body, &grid, Boundary::Isolated, 8).unwrap();
+    let planes = default.planes(&pressure, &depths, Side::Below).unwrap();
+    let reference = long.planes(&pressure, &depths, Side::Below).unwrap();
+    let (mut axis_error, mut deep, mut shallow): (f64, f64, f64) = (0.0, 0.0, 0.0);
+    for (plane, r) in planes.iter().zip(&reference) {
+        let zr = plane.depth / 1e-3;
+        let difference = plane
+            .components()
+            .iter()
+            .zip(r.components())
+            .flat_map(|(a, b)| a.iter().zip(b).map(|(x, y)| (x - y).abs()))
+            .fold(0.0, f64::max);
+        if zr >= 0.25 {
+            let t = plane.at(axis);
+            axis_error = axis_error
+                .max((t.zz - hertz_z(zr)).abs())
+                .max((t.xx - hertz_r(zr)).abs())
+                .max((t.yy - hertz_r(zr)).abs());
+            deep = deep.max(difference);
+        } else {
+            shallow = shallow.max(difference);
         }
-        println!("padding {padding}: worst {worst:.2e} p0");
-        errors.push(worst);
     }
-    assert!(errors[1] < 2.5e-3 && errors[2] < 3e-4, "{errors:?}");
-    assert!(errors[0] / errors[1] > 5.0, "{errors:?}");
+    let surface = pressure
+        .iter()
+        .zip(&planes[0].zz)
+        .map(|(p, zz)| (p + zz).abs())
+        .fold(0.0, f64::max);
+    println!(
+        "padded twice: axis {axis_error:.2e} p0; against 8 times {deep:.2e} p0 deep, \
+         {shallow:.2e} p0 shallow; surface {surface:.1e} p0"
+    );
+    assert!(axis_error < 3e-4, "{axis_error:e}");
+    assert!(deep < 5e-5 && shallow < 5e-4, "{deep:e} {shallow:e}");
+    assert!(surface < 1e-10, "{surface:e}");
+}
+
+#[test]
+fn a_strip_of_a_grid_sees_what_the_square_grid_sees() {
+    // The same pressure (Hertz, 8 cells per radius) on an isolated grid
+    // 24 x 96 and on one 96 x 96 (zero beyond the strip): the field is the
+    // same. Across the strip the images lie only 24 cells away, 8 from the
+    // contact's edge; the coarse grid is then sized by the strip's width.
+    // Measured at z = 0.8, 4 and 16 cells: 4.3e-4, 1.6e-4 and 1.3e-4 p0,
+    // where without the correction the grids differed by 1.1e-2, 9.3e-3
+    // and 1.5e-2 p0. Asserted: 1e-3.
+    let body = Substrate::half_space(Material::new(1e9, 0.3).unwrap());
+    let (square, pressure) = circle(96, 8, false);
+    let strip = Grid::new(24, 96, square.spacing()).unwrap();
+    let rows = 36..60;
+    let strip_pressure: Vec<f64> = pressure[rows.start * 96..rows.end * 96].to_vec();
+    let mut a = SubsurfaceStress::new(&body, &square, Boundary::Isolated).unwrap();
+    let mut b = SubsurfaceStress::new(&body, &strip, Boundary::Isolated).unwrap();
+    let mut worst: f64 = 0.0;
+    for z in [0.1e-3, 0.5e-3, 2e-3] {
+        let full = a.plane(&pressure, z, Side::Below).unwrap();
+        let part = b.plane(&strip_pressure, z, Side::Below).unwrap();
+        for (x, y) in full.components().iter().zip(part.components()) {
+            for (u, v) in x[rows.start * 96..rows.end * 96].iter().zip(y) {
+                worst = worst.max((u - v).abs());
+            }
+        }
+    }
+    println!("strip against square: {worst:.2e} p0");
+    assert!(worst < 1e-3, "{worst:e}");
 }
 
 #[test]
@@ -450,11 +507,10 @@ fn a_boundary_element_hertz_solve_gives_the_hertz_field() {
     // A paraboloid pressed into a half-space by the BEM (grid 4 contact
     // radii wide, contact about 16 cells in radius), its pressure into the
     // stresses: on the axis against Johnson's eq. 3.64 with the solve's own
-    // contact radius and p0 = 3F / (2 pi a^2). Measured worst 1.9e-3 p0 on
-    // the planes z/a = 0.25 to 2, as for the analytic pressure on the same
-    // grid (previous test: the padding's share), and the largest shear
-    // 0.3094 p0 at 0.48 a. Asserted 5e-3 p0, and the largest shear at
-    // z/a = 0.48 within 2e-3 p0 of 0.310.
+    // contact radius and p0 = 3F / (2 pi a^2). Measured worst 1.0e-3 p0 on
+    // the planes z/a = 0.25 to 2 (1.9e-3 before the images' correction),
+    // and the largest shear 0.3096 p0 at 0.48 a. Asserted 5e-3 p0, and the
+    // largest shear at z/a = 0.48 within 2e-3 p0 of 0.310.
     use layered_contact::indenter::Paraboloid;
     use layered_contact::solver::{ContactSolver, Fields, SolverParams};
     let nu = 0.3;
@@ -517,8 +573,9 @@ fn a_boundary_element_hertz_solve_gives_the_hertz_field() {
 fn scenes_compute_the_stresses_they_ask_for() {
     // A hard coating on steel under a ball (examples/scenes/coating_stresses.toml,
     // coarser): on the surface plane sigma_zz is minus the pressure cell by
-    // cell (the interpolant meets the cells' values; measured 2e-16 of the
-    // peak, asserted 1e-12), the interfaces come top down with the
+    // cell (the interpolant meets the cells' values; measured 7e-11 of the
+    // peak, the tail of the images' coarse filter wrapped round the period,
+    // asserted 1e-9), the interfaces come top down with the
     // tractions continuous with the planes at their depths, and the
     // maxima lie on the planes. Depths below a rigid base are refused
     // before anything is solved.
@@ -572,7 +629,7 @@ fn scenes_compute_the_stresses_they_ask_for() {
         .zip(&surface.zz)
         .map(|(p, zz)| (p + zz).abs())
         .fold(0.0, f64::max);
-    assert!(worst < 1e-12 * peak, "{worst:e}");
+    assert!(worst < 1e-9 * peak, "{worst:e} of {peak:e}");
     assert_eq!(result.boundaries, [2e-6, 3e-6]);
     let tractions: Vec<f64> = result.interfaces.iter().map(|t| t.depth).collect();
     assert_eq!(tractions, [2e-6, 3e-6]);
@@ -632,10 +689,10 @@ fn a_three_layer_pavement_matches_kenpave() {
     // Units as published (in, psi, ksi): the stresses scale with the load
     // and not with the unit of length. The circle is resolved by 8 cells
     // per radius with each cell's pressure its covered fraction (16 x 16
-    // samples), on a grid 16 radii wide padded 8 times: the stiff asphalt
-    // bends over tens of radii, so its images need a long period (padded 4
-    // times on a grid 8 radii wide, sigma_r at z = 3 in is 1.22 psi off;
-    // 16 radii wide and padded 8 times, 0.005 psi at 12 cells per radius).
+    // samples), on a grid 8 radii wide at the default padding. The stiff
+    // asphalt bends over tens of radii, so its images reach far: before
+    // the images' correction, sigma_r at z = 3 in was 1.22 psi off padded
+    // 4 times, and the grid had to be 16 radii wide padded 8 times.
     // Measured: sigma_z within 0.10 psi, sigma_r within 0.56 % where it
     // exceeds 10 psi and 0.016 psi elsewhere.
     // Asserted: 0.2 psi, 1 % and 0.1 psi. The surface (z = 0) is left out:
@@ -652,7 +709,7 @@ fn a_three_layer_pavement_matches_kenpave() {
     )
     .unwrap();
     let (a, per_radius) = (5.99, 8usize);
-    let n = 16 * per_radius;
+    let n = 8 * per_radius;
     let dx = a / per_radius as f64;
     let grid = Grid::new(n, n, dx).unwrap();
     let c = n as f64 / 2.0 * dx;
@@ -670,7 +727,7 @@ fn a_three_layer_pavement_matches_kenpave() {
             100.0 * inside as f64 / (sub * sub) as f64
         })
         .collect();
-    let mut stress = SubsurfaceStress::with_padding(&body, &grid, Boundary::Isolated, 8).unwrap();
+    let mut stress = SubsurfaceStress::new(&body, &grid, Boundary::Isolated).unwrap();
     // The axis is the corner of four cells.
     let h = n / 2;
     let around = [
@@ -706,18 +763,17 @@ fn a_three_layer_pavement_matches_kenpave() {
 #[test]
 fn one_loaded_cell_gives_boussinesq_far_from_it() {
     // One cell of pressure p (a force P = p Delta^2) in the middle of an
-    // isolated 65 x 65 grid, padded 8 times: at distances of 6 to 20 cells
+    // isolated 65 x 65 grid at the default padding: at distances of 6 to 20 cells
     // and depths of 4 to 12 the field is Boussinesq's point load (Johnson
     // 1985, eqs. 3.18-3.19), with rho = sqrt(r^2 + z^2):
     // sigma_z = -3 P z^3 / (2 pi rho^5),  tau_rz = -3 P r z^2 / (2 pi rho^5),
     // sigma_r = P/(2 pi) [(1 - 2 nu)/r^2 (1 - z/rho) - 3 z r^2/rho^5],
     // sigma_theta = -(1 - 2 nu) P/(2 pi) [1/r^2 (1 - z/rho) - z/rho^3].
     // The cell's size changes the field by about (Delta/rho)^2 / 24 of
-    // itself (1.6e-3 at the nearest point), the periodic images the
-    // in-plane stresses by about (r/L)^2 of the load's (L = 520 cells).
-    // Measured, relative to the largest component at each point: 2.3e-4,
-    // 1.2e-4 and 6.2e-4 (the farthest point sees the images most;
-    // sigma_z and tau_rz agree to 3e-7 there). Asserted 1e-3.
+    // itself (1.6e-3 at the nearest point). Measured, relative to the
+    // largest component at each point: 2.3e-4, 1.4e-5 and 7.2e-5 (padded 8
+    // times without the images' correction: 2.3e-4, 1.2e-4 and 6.2e-4).
+    // Asserted 1e-3.
     let nu = 0.3;
     let body = Substrate::half_space(Material::new(1e9, nu).unwrap());
     let (n, dx) = (65usize, 1e-6);
@@ -726,7 +782,7 @@ fn one_loaded_cell_gives_boussinesq_far_from_it() {
     let centre = (n / 2) * n + n / 2;
     pressure[centre] = 1.0;
     let force = dx * dx;
-    let mut stress = SubsurfaceStress::with_padding(&body, &grid, Boundary::Isolated, 8).unwrap();
+    let mut stress = SubsurfaceStress::new(&body, &grid, Boundary::Isolated).unwrap();
     let mut errors = Vec::new();
     for (cells_out, cells_down) in [(6usize, 4usize), (10, 8), (20, 12)] {
         let (r, z) = (cells_out as f64 * dx, cells_down as f64 * dx);

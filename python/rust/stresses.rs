@@ -112,8 +112,8 @@ pub(crate) fn stresses_dict<'py>(
 /// `rows x columns` array on square cells of side `spacing`, m, centred on
 /// the axis) on planes at `depths` (m): a dict as `Curve.stresses` (see
 /// `stresses_dict`). `periodic` for one period of a periodic surface;
-/// otherwise the grid is isolated and zero-padded `padding` times (4 by
-/// default; the images' error falls like `padding^-3`). `side` picks the
+/// otherwise the grid is isolated and zero-padded `padding` times (2 by
+/// default; the periodic images' field is taken out). `side` picks the
 /// layer above (`"above"`) or below (`"below"`) at an interface's depth;
 /// `interfaces` adds the tractions on every interface.
 #[pyfunction]

@@ -46,11 +46,40 @@
 //! periodic body cannot strain on average in its plane, so the mean puts
 //! every layer in uniaxial strain (`sigma_xx = sigma_yy = nu/(1 - nu)
 //! sigma_zz`). An isolated contact is computed on a grid zero-padded
-//! (4 times along each axis by default) with the mean mode set to the
+//! (twice along each axis by default) with the mean mode set to the
 //! direction average of the long-wave limit of the modes (long waves see
 //! the layers as thin plies strained with the base's surface), which is
-//! the integral of the stress of an unbounded body over a plane. What is
-//! left is the field of the periodic images less their mean.
+//! the integral of the stress of an unbounded body over a plane. What the
+//! padding leaves is the field of the periodic images less their mean: on
+//! the axis of a Hertz contact on a grid 4 radii wide, 1.4e-2 `p0` padded
+//! twice, and it falls only like the cube of the period.
+//!
+//! That field is then taken out. Seen from the grid the images lie at
+//! least a grid's width away, so their field is smooth there and depends
+//! on the pressure only through its low moments; a coarse grid (about 16
+//! cells across the grid's shorter side) resolves it. The pressure is
+//! deposited on the coarse cells by cloud-in-cell weights, which keep its
+//! force and first moments, and the coarse planes are computed twice: with
+//! the padded grid's period `L` and with `8 L`. In their difference the
+//! near field, the same in both, cancels, and what is left is the images'
+//! field at `L` less theirs at `8 L`; interpolated back with the same
+//! weights (bilinear) and subtracted, it leaves the images of the long
+//! period, about `8^-3` of the short one's. The coarse modes carry a
+//! filter `exp(-(q/q_c)^4)`, `q_c` 0.45 times their Nyquist wavenumber,
+//! so that the coarse field is smooth between its cells and a local field
+//! (`sigma_zz = -p` on the surface) stays local: the filter's kernel,
+//! wrapped round the short period, reaches the grid at 1e-11 `p0`. This is
+//! the particle-mesh idea (Hockney & Eastwood 1988, ch. 5) applied to the
+//! images alone. It costs two coarse planes, the larger of `(16 x 2 x 8)^2
+//! = 256^2` cells, beside the padded plane.
+//!
+//! A wavevector on the Nyquist row (or column) of the FFT stands for both
+//! signs of its component: what is odd in it (`sigma_xy`, the shears along
+//! it) is set to zero there and what is even keeps its value, the
+//! trapezoidal rule at the band's edge. (Setting the direction cosine
+//! itself to zero, as an earlier version did, took a row of the band's
+//! edge out of `sigma_xx`: a first-order error in the padding, 3.3e-3
+//! `p0` on the surface under a Hertz contact padded twice.)
 //!
 //! ## Tangential tractions (not yet)
 //!
@@ -71,17 +100,20 @@
 //! | cosine through a three-layer stack on glass | plane-strain equations integrated by matrix exponentials | 4.9e-11 `p0` (the reference's own loss) |
 //! | three bonded interfaces, random pressure | tractions and in-plane strains continuous, Hooke's law below | 1.1e-16, 6.2e-16 |
 //! | Hertz, periodic cell 32 radii, 16 cells per radius | axis, Johnson eq. 3.64 | 2.5e-4 `p0` (`sigma_z`), 8.7e-4 (`sigma_r`) |
-//! | Hertz, isolated, grid 4 radii wide, padded 2 / 4 / 8 times | axis, Johnson eq. 3.64 | 1.4e-2, 1.9e-3, 2.5e-4 `p0` |
-//! | Hertz from a BEM solve, isolated | axis; largest shear 0.310 `p0` at 0.48 `a` | 1.9e-3 `p0`; 0.3094 `p0` at 0.48 `a` |
+//! | Hertz, isolated, grid 4 radii wide, padded twice | axis, Johnson eq. 3.64 | 2.5e-4 `p0` (the cells' share; 1.4e-2 without the images' correction) |
+//! | the same, whole planes | the same padded 8 times | 2.3e-5 `p0` at `z` of 4 cells and below; 1.7e-4 within a cell or two of the surface, at the grid's edge |
+//! | the same, surface | `sigma_zz = -p` | 8e-12 `p0` |
+//! | a strip of the grid, 24 x 96, images 8 cells from the contact's edge | the square grid | 4.3e-4 `p0` (1.5e-2 without) |
+//! | Hertz from a BEM solve, isolated | axis; largest shear 0.310 `p0` at 0.48 `a` | 1.0e-3 `p0`; 0.3096 `p0` at 0.48 `a` |
 //! | uniform circle (Love 1929), periodic cell 32 radii | axis | 3.7e-3 `p` (the cells' staircase edge) |
-//! | three-layer pavement, isolated, padded 8 times | KENPAVE (Huang 2004) | `sigma_z` 0.10 psi of 100; `sigma_r` 0.56 % |
+//! | one loaded cell, isolated | Boussinesq, 6 to 20 cells away | 2.3e-4 (the cell's size) to 1.4e-5 of the largest component |
+//! | three-layer pavement, isolated, grid 8 radii wide | KENPAVE (Huang 2004) | `sigma_z` 0.10 psi of 100; `sigma_r` 0.56 % |
 //!
-//! The padding's error falls about like the cube of the period on a
-//! half-space. A stiff layer on a soft base bends over many contact radii:
-//! under the pavement (asphalt 50 times stiffer than its subgrade), a grid
-//! 8 radii wide padded 4 times leaves 1.2 % of the load in the asphalt's
-//! radial stress, 16 radii padded 8 times 0.005 %. Check a result by
-//! doubling the padding
+//! A stiff layer on a soft base bends over many contact radii, so its
+//! images reach far: under the pavement (asphalt 50 times stiffer than its
+//! subgrade) a grid 8 radii wide padded 4 times left 1.2 % of the load in
+//! the asphalt's radial stress before the correction; with it the default
+//! meets KENPAVE on that grid. Check a result by doubling the padding
 //! ([`SubsurfaceStress::with_padding`](crate::stress::SubsurfaceStress::with_padding),
 //! or `outputs.stresses.padding` in a scene).
 //!

@@ -11,10 +11,13 @@ use num_complex::Complex;
 use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 use rustfft::{Fft, FftPlanner};
 
-use crate::parallel::for_each_row;
+use crate::parallel::{for_each_row, for_each_row_with};
 
-/// Spectrum columns transformed per call (and per parallel task).
+/// Spectrum columns transformed per call (and per parallel task), at most.
 const COLUMN_BLOCK: usize = 16;
+
+/// Bytes of the lines a block of columns fills at once.
+const BLOCK_BYTES: usize = 1 << 18;
 
 pub(super) struct Fft2 {
     /// FFT rows and columns (padded).
@@ -29,6 +32,9 @@ pub(super) struct Fft2 {
     column_inverse: Arc<dyn Fft<f64>>,
     /// The data rows' half-spectra, row-major `data_rows x half`.
     rows_spectra: Vec<Complex<f64>>,
+    /// The filtered fields' data rows, per block of columns (see
+    /// [`Fft2::inverse_filtered`]).
+    tiles: Vec<Complex<f64>>,
 }
 
 impl Fft2 {
@@ -47,12 +53,18 @@ impl Fft2 {
             column_forward: complex.plan_fft_forward(rows),
             column_inverse: complex.plan_fft_inverse(rows),
             rows_spectra: vec![Complex::default(); data_rows * (columns / 2 + 1)],
+            tiles: Vec::new(),
         }
     }
 
     /// FFT rows (padded): the length of a spectrum column.
     pub(super) fn rows(&self) -> usize {
         self.rows
+    }
+
+    /// FFT columns (padded).
+    pub(super) fn columns(&self) -> usize {
+        self.columns
     }
 
     /// Spectrum columns.
@@ -90,38 +102,98 @@ impl Fft2 {
         });
     }
 
-    /// The data rows and columns of the field of `spectrum` (column by
-    /// column; overwritten), normalised, into `field`. The imaginary parts
-    /// a real row transform ignores (its mean and, for an even width, its
-    /// Nyquist bin) are set to zero.
-    pub(super) fn inverse(&mut self, spectrum: &mut [Complex<f64>], field: &mut [f64]) {
-        let (rows, half) = (self.rows, self.half());
+    /// The data rows and columns of `K` fields whose spectra are
+    /// `spectrum` (column by column) times per-bin multipliers, normalised,
+    /// into `fields`. `multipliers(j, i)` gives the `K` multipliers of the
+    /// bin in spectrum column `j` and row `i` (read once per bin for all
+    /// fields); blocks of columns are filtered
+    /// and transformed back together, and only their data rows kept. The
+    /// imaginary parts a real row transform ignores (its mean and, for an
+    /// even width, its Nyquist bin) are set to zero.
+    pub(super) fn inverse_filtered<const K: usize>(
+        &mut self,
+        spectrum: &[Complex<f64>],
+        multipliers: impl Fn(usize, usize) -> [Complex<f64>; K] + Sync,
+        fields: [&mut [f64]; K],
+    ) {
+        let (rows, half, data_rows) = (self.rows, self.half(), self.data_rows);
+        let tile_len = K * data_rows;
+        self.tiles.resize(tile_len * half, Complex::default());
         let plan = &self.column_inverse;
-        for_each_row(spectrum, rows * COLUMN_BLOCK, |_, block| {
-            plan.process(block)
-        });
-        let spectrum = &*spectrum;
-        for_each_row(&mut self.rows_spectra, half, |i, row| {
-            for (j, value) in row.iter_mut().enumerate() {
-                *value = spectrum[j * rows + i];
-            }
-        });
-        let (columns, width) = (self.columns, self.data_columns);
+        // Per block of columns, `K` row-major tiles of `data_rows x width`.
+        // Columns per block: the block's lines of all fields fit in the
+        // second-level cache.
+        let block = (BLOCK_BYTES / (16 * K * rows)).clamp(1, COLUMN_BLOCK);
+        let lines_len = K * block * rows;
+        let scratch_len = plan.get_inplace_scratch_len();
+        let init = || {
+            (
+                vec![Complex::default(); lines_len],
+                vec![Complex::default(); scratch_len],
+            )
+        };
+        for_each_row_with(
+            &mut self.tiles,
+            tile_len * block,
+            init,
+            |(lines, scratch), b, tiles| {
+                let width = tiles.len() / tile_len;
+                let j0 = b * block;
+                let lines = &mut lines[..K * width * rows];
+                for w in 0..width {
+                    let first = (j0 + w) * rows;
+                    for i in 0..rows {
+                        let m = multipliers(j0 + w, i);
+                        for (c, m) in m.into_iter().enumerate() {
+                            lines[(c * width + w) * rows + i] = spectrum[first + i] * m;
+                        }
+                    }
+                }
+                plan.process_with_scratch(lines, scratch);
+                for (c, tile) in tiles.chunks_exact_mut(data_rows * width).enumerate() {
+                    for w in 0..width {
+                        let line = &lines[(c * width + w) * rows..][..data_rows];
+                        for (i, value) in line.iter().enumerate() {
+                            tile[i * width + w] = *value;
+                        }
+                    }
+                }
+            },
+        );
+        let (columns, data_columns) = (self.columns, self.data_columns);
         let even = columns % 2 == 0;
         let scale = 1.0 / (self.rows * self.columns) as f64;
-        let spectra = &self.rows_spectra;
+        let tiles = &self.tiles;
         let plan = &self.row_inverse;
-        for_each_row(field, width, |i, out| {
-            let mut line = spectra[i * half..(i + 1) * half].to_vec();
-            line[0].im = 0.0;
-            if even {
-                line[half - 1].im = 0.0;
-            }
-            let mut real = vec![0.0; columns];
-            let _ = plan.process(&mut line, &mut real);
-            for (o, v) in out.iter_mut().zip(&real) {
-                *o = v * scale;
-            }
-        });
+        let init = || {
+            (
+                vec![Complex::default(); half],
+                vec![0.0; columns],
+                vec![Complex::default(); plan.get_scratch_len()],
+            )
+        };
+        for (c, field) in fields.into_iter().enumerate() {
+            for_each_row_with(
+                field,
+                data_columns,
+                init,
+                |(line, real, scratch), i, out| {
+                    for (b, tile) in tiles.chunks(tile_len * block).enumerate() {
+                        let width = tile.len() / tile_len;
+                        let row = &tile[(c * data_rows + i) * width..][..width];
+                        line[b * block..][..width].copy_from_slice(row);
+                    }
+                    line[0].im = 0.0;
+                    if even {
+                        line[half - 1].im = 0.0;
+                    }
+                    // Lengths match the plan, so the transform cannot fail.
+                    let _ = plan.process_with_scratch(line, real, scratch);
+                    for (o, v) in out.iter_mut().zip(real.iter()) {
+                        *o = v * scale;
+                    }
+                },
+            );
+        }
     }
 }

@@ -10,6 +10,7 @@ use crate::grid::{Boundary, Grid};
 use crate::substrate::{Base, Substrate};
 
 use super::fft::Fft2;
+use super::images::{padded_size, Images};
 use super::mode::{Column, Ply};
 use super::{
     check_depth, default_padding, rigid_floor, InterfaceTractions, Side, StressPlane,
@@ -32,10 +33,13 @@ pub struct SubsurfaceStress {
     /// Per distinct wavenumber: `q` and the basis coefficients.
     wavenumbers: Vec<f64>,
     coefficients: Vec<f64>,
-    /// Direction cosines of each bin's wavevector, 0 where the mode is its
-    /// own mirror image (a Nyquist row or column), so that odd multipliers
-    /// keep the spectrum Hermitian.
+    /// Direction cosines of each bin's wavevector.
     cosines: Vec<(f64, f64)>,
+    /// On an isolated grid, the periodic images' field to take out.
+    images: Option<Box<Images>>,
+    /// Wavenumber (rad/m) of a low-pass filter `exp(-(q/cutoff)^4)` on
+    /// every mode (infinite: none); see [`SubsurfaceStress::filtered`].
+    cutoff: f64,
 }
 
 /// Distinct wavenumbers solved per parallel task while planning.
@@ -52,9 +56,9 @@ impl SubsurfaceStress {
     }
 
     /// Plans the stresses with an isolated grid zero-padded `padding` times
-    /// along each axis (rounded up to a length whose FFT is fast); the
-    /// images' error falls about like `padding^-3` (see the [module
-    /// docs](super)).
+    /// along each axis (rounded up to a length whose FFT is fast and that
+    /// the images' coarse grid divides); the images' field is taken out
+    /// (see the [module docs](super)), so more padding is rarely needed.
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for a padding below 2 on an isolated
@@ -71,14 +75,15 @@ impl SubsurfaceStress {
             Boundary::Isolated => padding >= 2,
             Boundary::Periodic => padding == 1,
         };
-        let (rows, columns) = match boundary {
+        let factor = Images::factor(grid);
+        let padded = match boundary {
             Boundary::Isolated => (
-                crate::grid::fft_friendly(grid.rows().saturating_mul(padding)),
-                crate::grid::fft_friendly(grid.columns().saturating_mul(padding)),
+                padded_size(grid.rows(), padding, factor),
+                padded_size(grid.columns(), padding, factor),
             ),
             Boundary::Periodic => (grid.rows(), grid.columns()),
         };
-        if !valid || rows.saturating_mul(columns) > MAX_PADDED_CELLS {
+        if !valid || padded.0.saturating_mul(padded.1) > MAX_PADDED_CELLS {
             return Err(Error::InvalidParameter {
                 name: "padding of the subsurface stress grid",
                 value: padding as f64,
@@ -86,6 +91,21 @@ impl SubsurfaceStress {
                            2^28 padded cells",
             });
         }
+        let mut plan = Self::planned(substrate, grid, boundary, padded)?;
+        if boundary == Boundary::Isolated {
+            plan.images = Some(Box::new(Images::new(substrate, grid, padded, factor)?));
+        }
+        Ok(plan)
+    }
+
+    /// The plan on an FFT grid of `(rows, columns)` (the grid's own on a
+    /// periodic grid), without the images' correction.
+    pub(super) fn planned(
+        substrate: &Substrate,
+        grid: &Grid,
+        boundary: Boundary,
+        (rows, columns): (usize, usize),
+    ) -> Result<Self> {
         let column = column_of(substrate);
         let half = columns / 2 + 1;
         let dx = grid.spacing();
@@ -93,18 +113,18 @@ impl SubsurfaceStress {
         let mut cosines = vec![(0.0, 0.0); rows * half];
         let mut index: HashMap<u64, u32> = HashMap::new();
         let mut wavenumbers = Vec::new();
-        for i in 0..rows {
-            let ki = if 2 * i <= rows {
-                i as f64
-            } else {
-                i as f64 - rows as f64
-            };
-            // x along the rows' index, y along the columns' (as Grid::cell_centre).
-            let kx = 2.0 * std::f64::consts::PI * ki / (rows as f64 * dx);
-            let nyquist_x = rows % 2 == 0 && 2 * i == rows;
-            for j in 0..half {
-                let ky = 2.0 * std::f64::consts::PI * j as f64 / (columns as f64 * dx);
-                let nyquist_y = columns % 2 == 0 && 2 * j == columns;
+        // Column by column, as the spectrum is stored: a wavenumber's first
+        // bin comes in storage order, and the modes are read nearly in turn.
+        for j in 0..half {
+            let ky = 2.0 * std::f64::consts::PI * j as f64 / (columns as f64 * dx);
+            for i in 0..rows {
+                let ki = if 2 * i <= rows {
+                    i as f64
+                } else {
+                    i as f64 - rows as f64
+                };
+                // x along the rows' index, y along the columns' (as Grid::cell_centre).
+                let kx = 2.0 * std::f64::consts::PI * ki / (rows as f64 * dx);
                 let q = kx.hypot(ky);
                 if q == 0.0 {
                     continue;
@@ -115,10 +135,7 @@ impl SubsurfaceStress {
                     next
                 });
                 bins[j * rows + i] = id;
-                cosines[j * rows + i] = (
-                    if nyquist_x { 0.0 } else { kx / q },
-                    if nyquist_y { 0.0 } else { ky / q },
-                );
+                cosines[j * rows + i] = (kx / q, ky / q);
             }
         }
         let n = column.unknowns();
@@ -142,7 +159,20 @@ impl SubsurfaceStress {
             wavenumbers,
             coefficients,
             cosines,
+            images: None,
+            cutoff: f64::INFINITY,
         })
+    }
+
+    /// This plan with every mode multiplied by `exp(-(q/cutoff)^4)`: one
+    /// to third order at long waves, so the field far from a load keeps
+    /// its leading multipoles (it changes by about `(cutoff R)^-4` at a
+    /// distance `R`), negligible at the grid's Nyquist wavenumber, so the
+    /// field is smooth between cells, and a kernel that decays fast, so a
+    /// local field stays local.
+    pub(super) fn filtered(mut self, cutoff: f64) -> Self {
+        self.cutoff = cutoff;
+        self
     }
 
     /// The grid the stresses are computed on.
@@ -199,18 +229,20 @@ impl SubsurfaceStress {
         let bins = self.fft.rows() * self.fft.half();
         let mut spectrum = vec![Complex::default(); bins];
         self.fft.forward(pressure, &mut spectrum);
-        let mut work = vec![Complex::default(); bins];
-        depths
+        let mut planes = depths
             .iter()
-            .map(|&depth| self.one_plane(&spectrum, &mut work, depth, side))
-            .collect()
+            .map(|&depth| self.one_plane(&spectrum, depth, side))
+            .collect::<Result<Vec<_>>>()?;
+        if let Some(images) = &mut self.images {
+            images.remove(pressure, depths, side, &mut planes)?;
+        }
+        Ok(planes)
     }
 
-    /// One plane from the pressure's `spectrum`; `work` is scratch.
+    /// One plane from the pressure's `spectrum`.
     fn one_plane(
         &mut self,
         spectrum: &[Complex<f64>],
-        work: &mut [Complex<f64>],
         depth: f64,
         side: Side,
     ) -> Result<StressPlane> {
@@ -219,8 +251,12 @@ impl SubsurfaceStress {
         // Per distinct wavenumber, the mode's stresses (zz, xi xi, eta eta,
         // xi z) per unit pressure.
         let mut modes = vec![[0.0; 4]; self.wavenumbers.len()];
-        let (column, wavenumbers, coefficients) =
-            (&self.column, &self.wavenumbers, &self.coefficients);
+        let (column, wavenumbers, coefficients, cutoff) = (
+            &self.column,
+            &self.wavenumbers,
+            &self.coefficients,
+            self.cutoff,
+        );
         crate::parallel::for_each_row(&mut modes, SOLVES_PER_TASK, |t, chunk| {
             for (k, mode) in chunk.iter_mut().enumerate() {
                 let id = t * SOLVES_PER_TASK + k;
@@ -231,6 +267,10 @@ impl SubsurfaceStress {
                     q,
                     &coefficients[id * n..(id + 1) * n],
                 );
+                if cutoff.is_finite() {
+                    let filter = (-(q / cutoff).powi(4)).exp();
+                    mode.iter_mut().for_each(|m| *m *= filter);
+                }
             }
         });
         // The mean mode's in-plane stress per unit pressure: uniaxial strain
@@ -246,21 +286,6 @@ impl SubsurfaceStress {
                 0.5 * (xi + eta)
             }
         };
-        type Multiplier = fn(&[f64; 4], (f64, f64)) -> Complex<f64>;
-        let components: [(Multiplier, f64); 6] = [
-            (
-                |m, (c, s)| Complex::new(c * c * m[1] + s * s * m[2], 0.0),
-                lateral,
-            ),
-            (
-                |m, (c, s)| Complex::new(s * s * m[1] + c * c * m[2], 0.0),
-                lateral,
-            ),
-            (|m, _| Complex::new(m[0], 0.0), -1.0),
-            (|m, (c, s)| Complex::new(c * s * (m[1] - m[2]), 0.0), 0.0),
-            (|m, (c, _)| Complex::new(0.0, -c * m[3]), 0.0),
-            (|m, (_, s)| Complex::new(0.0, -s * m[3]), 0.0),
-        ];
         let cells = self.grid.len();
         let mut out = StressPlane {
             depth,
@@ -271,30 +296,48 @@ impl SubsurfaceStress {
             xz: vec![0.0; cells],
             yz: vec![0.0; cells],
         };
-        let targets: [&mut Vec<f64>; 6] = [
-            &mut out.xx,
-            &mut out.yy,
-            &mut out.zz,
-            &mut out.xy,
-            &mut out.xz,
-            &mut out.yz,
-        ];
-        let rows = self.fft.rows();
         let (bins, cosines) = (&self.bins, &self.cosines);
-        for ((multiplier, uniform), target) in components.into_iter().zip(targets) {
-            crate::parallel::for_each_row(work, rows, |j, line| {
-                for (i, w) in line.iter_mut().enumerate() {
-                    let k = j * rows + i;
-                    *w = match bins[k] {
-                        u32::MAX => spectrum[k] * uniform,
-                        id => spectrum[k] * multiplier(&modes[id as usize], cosines[k]),
-                    };
-                }
-            });
-            self.fft.inverse(work, target);
-        }
-        let components = [&out.xx, &out.yy, &out.zz, &out.xy, &out.xz, &out.yz];
-        for v in components.into_iter().flatten() {
+        let rows = self.fft.rows();
+        let columns = self.fft.columns();
+        let nyquist_row = if rows % 2 == 0 { rows / 2 } else { usize::MAX };
+        let nyquist_column = if columns % 2 == 0 {
+            self.fft.half() - 1
+        } else {
+            usize::MAX
+        };
+        let real = |v: f64| Complex::new(v, 0.0);
+        let imaginary = |v: f64| Complex::new(0.0, v);
+        // xx, yy, zz, xy, xz, yz per unit pressure, in column j and row i.
+        let multipliers = |j: usize, i: usize| match bins[j * rows + i] {
+            u32::MAX => [
+                real(lateral),
+                real(lateral),
+                real(-1.0),
+                Complex::default(),
+                Complex::default(),
+                Complex::default(),
+            ],
+            id => {
+                let m = &modes[id as usize];
+                let (c, s) = cosines[j * rows + i];
+                // A Nyquist row (column) stands for both signs of its
+                // wavenumber: what is odd in it averages to zero there (the
+                // trapezoidal rule at the band's edge), what is even stays.
+                let odd_x = if i == nyquist_row { 0.0 } else { c };
+                let odd_y = if j == nyquist_column { 0.0 } else { s };
+                [
+                    real(c * c * m[1] + s * s * m[2]),
+                    real(s * s * m[1] + c * c * m[2]),
+                    real(m[0]),
+                    real(odd_x * odd_y * (m[1] - m[2])),
+                    imaginary(-odd_x * m[3]),
+                    imaginary(-odd_y * m[3]),
+                ]
+            }
+        };
+        self.fft
+            .inverse_filtered(spectrum, multipliers, out.components_mut());
+        for v in out.components().into_iter().flatten() {
             if !v.is_finite() {
                 return Err(Error::NonFinite {
                     what: "a subsurface stress",

@@ -18,19 +18,15 @@
 //! cannot strain on average in its plane). An isolated contact is computed
 //! on a grid zero-padded [`DEFAULT_PADDING`] times along each axis, with
 //! the mean mode set to the limit of long waves, whose direction average
-//! is the integral of the stress of an unbounded body over a plane. What
-//! the padding leaves is the field of the periodic images less their mean,
-//! which falls about like the cube of the period on a half-space: on the
-//! axis of a Hertz contact 16 cells in radius on a grid 4 radii wide,
-//! 1.4e-2 `p0` padded twice, 1.9e-3 four times (the default) and 2.5e-4
-//! eight times, where the cell size's own error takes over. A stiff layer
-//! on a soft base bends over many contact radii and needs a longer period:
-//! under a pavement (asphalt 50 times stiffer than its subgrade) the
-//! asphalt's radial stress is 1.2 % of the load off with a grid 8 radii
-//! wide padded 4 times and within 0.4 % at 16 radii padded 8 times, where
-//! it meets KENPAVE (`tests/stress.rs`). Choose the padding with
-//! [`SubsurfaceStress::with_padding`] (or a scene's
-//! `outputs.stresses.padding`), and check a result by doubling it.//!
+//! is the integral of the stress of an unbounded body over a plane. The
+//! field the padding leaves, that of the periodic images, is computed on a
+//! coarse grid and taken out (a particle-mesh correction, see
+//! [`doc::subsurface`](crate::doc::subsurface)): on the axis of a Hertz
+//! contact 16 cells in radius on a grid 4 radii wide, padded twice, the
+//! images' 1.4e-2 `p0` fall to 2e-5, below the cell size's 2.5e-4. Choose
+//! the padding with [`SubsurfaceStress::with_padding`] (or a scene's
+//! `outputs.stresses.padding`), and check a result by doubling it.
+//!
 //! ```
 //! use layered_contact::stress::{Side, SubsurfaceStress};
 //! use layered_contact::{Boundary, Grid, Material, Substrate};
@@ -52,6 +48,7 @@
 
 mod fft;
 mod field;
+mod images;
 mod mode;
 mod tensor;
 
@@ -64,7 +61,7 @@ use crate::substrate::{Base, Substrate};
 
 /// How many times an isolated grid is padded along each axis by
 /// [`SubsurfaceStress::new`].
-pub const DEFAULT_PADDING: usize = 4;
+pub const DEFAULT_PADDING: usize = 2;
 
 /// The padding [`SubsurfaceStress::new`] uses: [`DEFAULT_PADDING`] on an
 /// isolated grid, none (1) on a periodic one.
@@ -139,6 +136,24 @@ pub struct StressPlane {
 }
 
 impl StressPlane {
+    /// The six fields in the order `xx, yy, zz, xy, xz, yz`.
+    pub fn components(&self) -> [&[f64]; 6] {
+        [&self.xx, &self.yy, &self.zz, &self.xy, &self.xz, &self.yz]
+    }
+
+    /// The six fields, mutable, in the order of
+    /// [`StressPlane::components`].
+    pub fn components_mut(&mut self) -> [&mut [f64]; 6] {
+        [
+            &mut self.xx,
+            &mut self.yy,
+            &mut self.zz,
+            &mut self.xy,
+            &mut self.xz,
+            &mut self.yz,
+        ]
+    }
+
     /// The tensor at cell `k`.
     pub fn at(&self, k: usize) -> Stress {
         Stress {
