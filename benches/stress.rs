@@ -1,5 +1,6 @@
 //! Stresses below the surface on a 512 x 512 grid: planning (every distinct
-//! wavenumber's layered solution), ten depth planes of one pressure, and,
+//! wavenumber's layered solution), ten depth planes of one pressure (fresh,
+//! and into buffers reused from the previous call), and,
 //! for scale, one application of the surface compliance operator on the
 //! same grid; on a half-space and a three-layer coating on steel, periodic
 //! and isolated (padded 4 times).
@@ -63,6 +64,14 @@ fn bench_stress(c: &mut Criterion) {
             let mut stress = SubsurfaceStress::new(body, &grid, boundary).unwrap();
             group.bench_function(format!("ten planes, {label}"), |b| {
                 b.iter(|| black_box(stress.planes(black_box(&p), &depths, Side::Below).unwrap()))
+            });
+            let mut planes = Vec::new();
+            group.bench_function(format!("ten planes into the same buffers, {label}"), |b| {
+                b.iter(|| {
+                    stress
+                        .planes_into(black_box(&p), &depths, Side::Below, &mut planes)
+                        .unwrap()
+                })
             });
             let mut operator = ComplianceOperator::new(body, &grid, boundary).unwrap();
             let mut u = vec![0.0; n * n];

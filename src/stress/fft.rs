@@ -106,14 +106,16 @@ impl Fft2 {
     /// `spectrum` (column by column) times per-bin multipliers, normalised,
     /// into `fields`. `multipliers(j, i)` gives the `K` multipliers of the
     /// bin in spectrum column `j` and row `i` (read once per bin for all
-    /// fields); blocks of columns are filtered
+    /// fields), real or, where `imaginary` says, times the imaginary unit;
+    /// blocks of columns are filtered
     /// and transformed back together, and only their data rows kept. The
     /// imaginary parts a real row transform ignores (its mean and, for an
     /// even width, its Nyquist bin) are set to zero.
     pub(super) fn inverse_filtered<const K: usize>(
         &mut self,
         spectrum: &[Complex<f64>],
-        multipliers: impl Fn(usize, usize) -> [Complex<f64>; K] + Sync,
+        multipliers: impl Fn(usize, usize) -> [f64; K] + Sync,
+        imaginary: [bool; K],
         fields: [&mut [f64]; K],
     ) {
         let (rows, half, data_rows) = (self.rows, self.half(), self.data_rows);
@@ -143,9 +145,14 @@ impl Fft2 {
                 for w in 0..width {
                     let first = (j0 + w) * rows;
                     for i in 0..rows {
+                        let v = spectrum[first + i];
                         let m = multipliers(j0 + w, i);
                         for (c, m) in m.into_iter().enumerate() {
-                            lines[(c * width + w) * rows + i] = spectrum[first + i] * m;
+                            lines[(c * width + w) * rows + i] = if imaginary[c] {
+                                Complex::new(-v.im * m, v.re * m)
+                            } else {
+                                v * m
+                            };
                         }
                     }
                 }
@@ -181,7 +188,10 @@ impl Fft2 {
                     for (b, tile) in tiles.chunks(tile_len * block).enumerate() {
                         let width = tile.len() / tile_len;
                         let row = &tile[(c * data_rows + i) * width..][..width];
-                        line[b * block..][..width].copy_from_slice(row);
+                        // A few values: a loop, not a call to memmove.
+                        for (to, from) in line[b * block..].iter_mut().zip(row) {
+                            *to = *from;
+                        }
                     }
                     line[0].im = 0.0;
                     if even {

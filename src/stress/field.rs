@@ -42,6 +42,10 @@ pub struct SubsurfaceStress {
     cutoff: f64,
 }
 
+/// Which of `xx, yy, zz, xy, xz, yz` have imaginary multipliers (the
+/// shears across the plane, odd in the wavevector).
+const IMAGINARY: [bool; 6] = [false, false, false, false, true, true];
+
 /// Distinct wavenumbers solved per parallel task while planning.
 const SOLVES_PER_TASK: usize = 256;
 
@@ -222,6 +226,25 @@ impl SubsurfaceStress {
         depths: &[f64],
         side: Side,
     ) -> Result<Vec<StressPlane>> {
+        let mut planes = Vec::new();
+        self.planes_into(pressure, depths, side, &mut planes)?;
+        Ok(planes)
+    }
+
+    /// As [`SubsurfaceStress::planes`], into `planes`, whose fields are
+    /// reused (resized to the depths and the grid): writing six fresh
+    /// fields is a good part of a plane's cost (see `BENCHMARKS.md`).
+    ///
+    /// # Errors
+    /// As [`SubsurfaceStress::plane`]; `planes` is then left partly
+    /// written.
+    pub fn planes_into(
+        &mut self,
+        pressure: &[f64],
+        depths: &[f64],
+        side: Side,
+        planes: &mut Vec<StressPlane>,
+    ) -> Result<()> {
         self.check(pressure)?;
         for &depth in depths {
             check_depth(depth, side, self.floor)?;
@@ -229,23 +252,48 @@ impl SubsurfaceStress {
         let bins = self.fft.rows() * self.fft.half();
         let mut spectrum = vec![Complex::default(); bins];
         self.fft.forward(pressure, &mut spectrum);
-        let mut planes = depths
-            .iter()
-            .map(|&depth| self.one_plane(&spectrum, depth, side))
-            .collect::<Result<Vec<_>>>()?;
-        if let Some(images) = &mut self.images {
-            images.remove(pressure, depths, side, &mut planes)?;
+        let cells = self.grid.len();
+        planes.truncate(depths.len());
+        planes.resize_with(depths.len(), || StressPlane {
+            depth: 0.0,
+            xx: Vec::new(),
+            yy: Vec::new(),
+            zz: Vec::new(),
+            xy: Vec::new(),
+            xz: Vec::new(),
+            yz: Vec::new(),
+        });
+        for (plane, &depth) in planes.iter_mut().zip(depths) {
+            plane.depth = depth;
+            let StressPlane {
+                xx,
+                yy,
+                zz,
+                xy,
+                xz,
+                yz,
+                ..
+            } = plane;
+            for field in [xx, yy, zz, xy, xz, yz] {
+                field.resize(cells, 0.0);
+            }
+            self.one_plane(&spectrum, side, plane)?;
         }
-        Ok(planes)
+        if let Some(images) = &mut self.images {
+            images.remove(pressure, depths, side, planes)?;
+        }
+        Ok(())
     }
 
-    /// One plane from the pressure's `spectrum`.
+    /// Fills `out` (at its depth, its fields of the grid's size) from the
+    /// pressure's `spectrum`.
     fn one_plane(
         &mut self,
         spectrum: &[Complex<f64>],
-        depth: f64,
         side: Side,
-    ) -> Result<StressPlane> {
+        out: &mut StressPlane,
+    ) -> Result<()> {
+        let depth = out.depth;
         let (layer, top) = self.column.locate(depth, side == Side::Above);
         let n = self.column.unknowns();
         // Per distinct wavenumber, the mode's stresses (zz, xi xi, eta eta,
@@ -286,16 +334,6 @@ impl SubsurfaceStress {
                 0.5 * (xi + eta)
             }
         };
-        let cells = self.grid.len();
-        let mut out = StressPlane {
-            depth,
-            xx: vec![0.0; cells],
-            yy: vec![0.0; cells],
-            zz: vec![0.0; cells],
-            xy: vec![0.0; cells],
-            xz: vec![0.0; cells],
-            yz: vec![0.0; cells],
-        };
         let (bins, cosines) = (&self.bins, &self.cosines);
         let rows = self.fft.rows();
         let columns = self.fft.columns();
@@ -305,18 +343,10 @@ impl SubsurfaceStress {
         } else {
             usize::MAX
         };
-        let real = |v: f64| Complex::new(v, 0.0);
-        let imaginary = |v: f64| Complex::new(0.0, v);
-        // xx, yy, zz, xy, xz, yz per unit pressure, in column j and row i.
+        // xx, yy, zz, xy, xz, yz per unit pressure, in column j and row i;
+        // the shears' multipliers are imaginary.
         let multipliers = |j: usize, i: usize| match bins[j * rows + i] {
-            u32::MAX => [
-                real(lateral),
-                real(lateral),
-                real(-1.0),
-                Complex::default(),
-                Complex::default(),
-                Complex::default(),
-            ],
+            u32::MAX => [lateral, lateral, -1.0, 0.0, 0.0, 0.0],
             id => {
                 let m = &modes[id as usize];
                 let (c, s) = cosines[j * rows + i];
@@ -326,26 +356,26 @@ impl SubsurfaceStress {
                 let odd_x = if i == nyquist_row { 0.0 } else { c };
                 let odd_y = if j == nyquist_column { 0.0 } else { s };
                 [
-                    real(c * c * m[1] + s * s * m[2]),
-                    real(s * s * m[1] + c * c * m[2]),
-                    real(m[0]),
-                    real(odd_x * odd_y * (m[1] - m[2])),
-                    imaginary(-odd_x * m[3]),
-                    imaginary(-odd_y * m[3]),
+                    c * c * m[1] + s * s * m[2],
+                    s * s * m[1] + c * c * m[2],
+                    m[0],
+                    odd_x * odd_y * (m[1] - m[2]),
+                    -odd_x * m[3],
+                    -odd_y * m[3],
                 ]
             }
         };
         self.fft
-            .inverse_filtered(spectrum, multipliers, out.components_mut());
-        for v in out.components().into_iter().flatten() {
-            if !v.is_finite() {
+            .inverse_filtered(spectrum, multipliers, IMAGINARY, out.components_mut());
+        for field in out.components() {
+            if let Some(v) = field.iter().find(|v| !v.is_finite()) {
                 return Err(Error::NonFinite {
                     what: "a subsurface stress",
                     value: *v,
                 });
             }
         }
-        Ok(out)
+        Ok(())
     }
 
     /// The tractions on every interface (the planes at the layers'
