@@ -16,7 +16,10 @@ use crate::parallel::{for_each_row, for_each_row_with};
 /// Spectrum columns transformed per call (and per parallel task), at most.
 const COLUMN_BLOCK: usize = 16;
 
-/// Bytes of the lines a block of columns fills at once.
+/// Rows of a field transformed back per task.
+const ROW_GROUP: usize = 16;
+
+/// Bytes of the lines of one field a block of columns fills at once.
 const BLOCK_BYTES: usize = 1 << 18;
 
 pub(super) struct Fft2 {
@@ -123,14 +126,15 @@ impl Fft2 {
         self.tiles.resize(tile_len * half, Complex::default());
         let plan = &self.column_inverse;
         // Per block of columns, `K` row-major tiles of `data_rows x width`.
-        // Columns per block: the block's lines of all fields fit in the
-        // second-level cache.
-        let block = (BLOCK_BYTES / (16 * K * rows)).clamp(1, COLUMN_BLOCK);
-        let lines_len = K * block * rows;
+        // Columns per block: one field's lines fit in the second-level
+        // cache; the block's multipliers of all fields are found first, then
+        // each field is filtered and transformed back in turn.
+        let block = (BLOCK_BYTES / (16 * rows)).clamp(1, COLUMN_BLOCK);
         let scratch_len = plan.get_inplace_scratch_len();
         let init = || {
             (
-                vec![Complex::default(); lines_len],
+                vec![[0.0; K]; block * rows],
+                vec![Complex::default(); block * rows],
                 vec![Complex::default(); scratch_len],
             )
         };
@@ -138,30 +142,31 @@ impl Fft2 {
             &mut self.tiles,
             tile_len * block,
             init,
-            |(lines, scratch), b, tiles| {
+            |(factors, lines, scratch), b, tiles| {
                 let width = tiles.len() / tile_len;
                 let j0 = b * block;
-                let lines = &mut lines[..K * width * rows];
-                for w in 0..width {
-                    let first = (j0 + w) * rows;
-                    for i in 0..rows {
-                        let v = spectrum[first + i];
-                        let m = multipliers(j0 + w, i);
-                        for (c, m) in m.into_iter().enumerate() {
-                            lines[(c * width + w) * rows + i] = if imaginary[c] {
-                                Complex::new(-v.im * m, v.re * m)
-                            } else {
-                                v * m
-                            };
-                        }
+                let (factors, lines) = (&mut factors[..width * rows], &mut lines[..width * rows]);
+                for (w, column) in factors.chunks_exact_mut(rows).enumerate() {
+                    for (i, m) in column.iter_mut().enumerate() {
+                        *m = multipliers(j0 + w, i);
                     }
                 }
-                plan.process_with_scratch(lines, scratch);
+                let spectrum = &spectrum[j0 * rows..(j0 + width) * rows];
                 for (c, tile) in tiles.chunks_exact_mut(data_rows * width).enumerate() {
-                    for w in 0..width {
-                        let line = &lines[(c * width + w) * rows..][..data_rows];
-                        for (i, value) in line.iter().enumerate() {
-                            tile[i * width + w] = *value;
+                    for ((line, v), m) in lines.iter_mut().zip(spectrum).zip(&*factors) {
+                        let m = m[c];
+                        *line = if imaginary[c] {
+                            Complex::new(-v.im * m, v.re * m)
+                        } else {
+                            v * m
+                        };
+                    }
+                    plan.process_with_scratch(lines, scratch);
+                    // The data rows, transposed into the tile row by row
+                    // (its writes in order, the reads in `width` streams).
+                    for (i, out) in tile.chunks_exact_mut(width).enumerate() {
+                        for (w, value) in out.iter_mut().enumerate() {
+                            *value = lines[w * rows + i];
                         }
                     }
                 }
@@ -174,33 +179,42 @@ impl Fft2 {
         let plan = &self.row_inverse;
         let init = || {
             (
-                vec![Complex::default(); half],
+                vec![Complex::default(); ROW_GROUP * half],
                 vec![0.0; columns],
                 vec![Complex::default(); plan.get_scratch_len()],
             )
         };
+        // Rows in groups: a group's values in a tile are contiguous.
         for (c, field) in fields.into_iter().enumerate() {
             for_each_row_with(
                 field,
-                data_columns,
+                ROW_GROUP * data_columns,
                 init,
-                |(line, real, scratch), i, out| {
+                |(lines, real, scratch), g, out| {
+                    let first = g * ROW_GROUP;
+                    let count = out.len() / data_columns;
                     for (b, tile) in tiles.chunks(tile_len * block).enumerate() {
                         let width = tile.len() / tile_len;
-                        let row = &tile[(c * data_rows + i) * width..][..width];
-                        // A few values: a loop, not a call to memmove.
-                        for (to, from) in line[b * block..].iter_mut().zip(row) {
-                            *to = *from;
+                        let group = &tile[(c * data_rows + first) * width..][..count * width];
+                        for (line, row) in
+                            lines.chunks_exact_mut(half).zip(group.chunks_exact(width))
+                        {
+                            line[b * block..][..width].copy_from_slice(row);
                         }
                     }
-                    line[0].im = 0.0;
-                    if even {
-                        line[half - 1].im = 0.0;
-                    }
-                    // Lengths match the plan, so the transform cannot fail.
-                    let _ = plan.process_with_scratch(line, real, scratch);
-                    for (o, v) in out.iter_mut().zip(real.iter()) {
-                        *o = v * scale;
+                    for (line, out) in lines
+                        .chunks_exact_mut(half)
+                        .zip(out.chunks_exact_mut(data_columns))
+                    {
+                        line[0].im = 0.0;
+                        if even {
+                            line[half - 1].im = 0.0;
+                        }
+                        // Lengths match the plan, so the transform cannot fail.
+                        let _ = plan.process_with_scratch(line, real, scratch);
+                        for (o, v) in out.iter_mut().zip(real.iter()) {
+                            *o = v * scale;
+                        }
                     }
                 },
             );
