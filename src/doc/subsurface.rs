@@ -119,15 +119,18 @@
 //!
 //! ## Cost (`benches/stress.rs`)
 //!
-//! On a 512 x 512 grid (`BENCHMARKS.md` has the machine, the load and the
-//! date): planning takes 9 ms (half-space) to 23 ms (a three-layer
-//! coating) periodic and 0.3 to 0.55 s isolated; ten planes of one
-//! pressure 0.16 to 0.17 s periodic and 1.6 to 1.8 s isolated, where one
-//! application of the surface compliance operator takes 1.5 to 1.7 ms
-//! periodic and 4 to 5 ms isolated. A plane costs six inverse FFTs of the
-//! padded grid: about ten operator applications periodic and thirty to
-//! forty-five isolated at the default padding, whose grid is four times
-//! the operator's.
+//! A plane is six inverse FFTs of the padded grid, where an application of
+//! the surface compliance operator is one forward and one inverse: three
+//! applications' worth. A block of 16 spectrum columns finds the six
+//! fields' multipliers once (one read of the modes per bin), then filters,
+//! transforms and transposes one field at a time within the second-level
+//! cache. Measured on a 512 x 512 grid (`BENCHMARKS.md` has the machine,
+//! the load and the date): a plane costs 5 to 7 operator applications,
+//! periodic or isolated, on a half-space or a three-layer coating, into
+//! reused fields ([`planes_into`](crate::stress::SubsurfaceStress::planes_into));
+//! writing six fresh fields can add as much again. Planning (every distinct
+//! wavenumber's banded solve) takes 9 to 25 ms periodic and 38 to 106 ms
+//! isolated.
 //!
 //! ## Example: where a hard coating first yields
 //!
@@ -136,22 +139,24 @@
 //! rigid ball of radius 100 um, on a grid of 128 x 128 cells over 8 um,
 //! planes every 0.1 um down to 6 um. Bisection on the depth for the load
 //! at which the largest ratio of the von Mises stress to the local yield
-//! stress reaches one (`cargo run --release --example coating_yield`, 10 s):
+//! stress reaches one (`cargo run --release --example coating_yield`, 7 s):
 //!
 //! ```text
-//! first yield: depth 2.3835e-8 m, force 1.5570e-2 N (von Mises / yield 1.0001)
+//! first yield: depth 2.3786e-8 m, force 1.5525e-2 N (von Mises / yield 1.0000)
 //!   at z = 2.000e-6 m (chromium), r = 4.419e-8 m
-//!   contact radius 1.431e-6 m, peak pressure 3.6787e9 Pa
-//!   interface at 2.0e-6 m: largest shear traction 3.4513e8 Pa at r = 1.423e-6 m; ...
-//!   interface at 3.0e-6 m: largest shear traction 1.6042e8 Pa at r = 1.833e-6 m; ...
+//!   contact radius 1.431e-6 m, peak pressure 3.6754e9 Pa
+//!   interface at 2.0e-6 m: largest shear traction 3.4438e8 Pa at r = 1.423e-6 m; ...
+//!   interface at 3.0e-6 m: largest shear traction 1.6006e8 Pa at r = 1.833e-6 m; ...
 //! ```
 //!
 //! The soft interlayer yields first, on the axis right under the TiN,
 //! while the TiN itself is far from its own yield stress; the shear on the
 //! TiN/chromium interface peaks near the contact's edge (`r = a`), where
 //! delamination would start, and on the chromium/steel interface further
-//! out. The same run on a grid twice as coarse (16 um wide) found the
-//! first yield within 0.2 % in force.
+//! out. On a grid twice as wide at the same spacing the first yield is
+//! the same to the digits shown, and twice as coarse 0.05 % higher in
+//! force; padded 4 times without the images' correction it came out 0.29
+//! % higher.
 //!
 //! ```
 //! // The same computation on one plane, from Rust:

@@ -51,7 +51,7 @@ const SOLVES_PER_TASK: usize = 256;
 
 impl SubsurfaceStress {
     /// Plans the stresses in `substrate` under `grid`; an isolated grid is
-    /// padded [`DEFAULT_PADDING`] times.
+    /// padded [`DEFAULT_PADDING`](super::DEFAULT_PADDING) times.
     ///
     /// # Errors
     /// As [`SubsurfaceStress::with_padding`].
