@@ -53,7 +53,10 @@ use crate::kernel::wavenumber;
 
 /// How large a synthesised surface is.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Amplitude {
     /// Root-mean-square height, m.
@@ -64,7 +67,10 @@ pub enum Amplitude {
 
 /// A self-affine random surface (see the [module docs](self)).
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct SelfAffine {
     /// Hurst exponent `H`, in `(0, 1)`.

@@ -733,6 +733,13 @@ fn check_scene(py: Python<'_>, scene: &Bound<'_, PyAny>) -> PyResult<(usize, usi
     Ok((grid.rows(), grid.columns(), grid.spacing(), bytes))
 }
 
+/// The JSON Schema of a scene (a dict or file), as JSON text: every key
+/// with its type, default and description.
+#[pyfunction]
+fn scene_schema() -> String {
+    lc::scene::Scene::json_schema()
+}
+
 /// The exact values of a scene's results where they exist, as
 /// `{quantity: value}` (see `Scene::reference` of the Rust crate).
 #[pyfunction]
@@ -796,6 +803,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(stresses::subsurface_stress, m)?)?;
     m.add_function(wrap_pyfunction!(check_scene, m)?)?;
     m.add_function(wrap_pyfunction!(scene_reference, m)?)?;
+    m.add_function(wrap_pyfunction!(scene_schema, m)?)?;
     m.add_function(wrap_pyfunction!(analytic::hertz_force, m)?)?;
     m.add_function(wrap_pyfunction!(analytic::hertz_contact_radius, m)?)?;
     m.add_function(wrap_pyfunction!(analytic::jkr_state, m)?)?;

@@ -91,3 +91,42 @@ def test_caveats_say_when_adhesion_is_edge_averaged():
     # Tilted: the contact sets are no longer discs about the axis.
     tilted = lc.run_scene(dict(SPHERE, tilt={"angle_y": 0.05, "angle_x": 0.0}))
     assert len(tilted.caveats) == 1 and "edge-averaged" in tilted.caveats[0]
+
+
+def test_every_example_scene_meets_the_schema():
+    # The schema is generated from the scene types; each example scene file
+    # (TOML through tomllib, JSON) validates, and a misspelt key does not.
+    jsonschema = pytest.importorskip("jsonschema")
+    import json
+    import pathlib
+    import sys
+
+    if sys.version_info < (3, 11):
+        pytest.skip("tomllib needs Python 3.11")
+    import tomllib
+
+    schema = lc.scene_schema()
+    folder = pathlib.Path(__file__).resolve().parents[2] / "examples" / "scenes"
+    files = sorted(folder.glob("*.toml")) + sorted(folder.glob("*.json"))
+    assert len(files) >= 5
+    for path in files:
+        text = path.read_text()
+        scene = json.loads(text) if path.suffix == ".json" else tomllib.loads(text)
+        jsonschema.validate(scene, schema)
+    misspelt = dict(PUNCH, indenter={"kind": "flat_punch", "radus": 2.5e-3})
+    with pytest.raises(jsonschema.ValidationError):
+        jsonschema.validate(misspelt, schema)
+    jsonschema.validate(PUNCH, schema)
+
+
+def test_a_mistake_in_a_dict_names_its_key_path():
+    with pytest.raises(lc.InvalidInputError, match=r"key `indenter\.radius`: invalid type"):
+        lc.run_scene(dict(PUNCH, indenter={"kind": "flat_punch", "radius": "big"}))
+    with pytest.raises(lc.InvalidInputError, match=r"key `indenter\.radus`: unknown field"):
+        lc.check_scene(dict(PUNCH, indenter={"kind": "flat_punch", "radus": 2.5e-3}))
+    layers = [
+        {"youngs_modulus": 1e6, "poisson_ratio": 0.5, "thickness": 1e-3},
+        {"youngs_modulus": 1e6, "poisson_ratio": 0.5, "thickness": None},
+    ]
+    with pytest.raises(lc.InvalidInputError, match=r"key `substrate\.layers\[1\]\.thickness`"):
+        lc.check_scene(dict(PUNCH, substrate={"kind": "stack", "layers": layers}))

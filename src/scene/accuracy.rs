@@ -27,7 +27,10 @@ pub fn richardson(coarse: (usize, f64), fine: (usize, f64), order: f64) -> f64 {
 
 /// A scalar result of a scene.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Quantity {
     /// [`Curve::stiffness`], N/m.

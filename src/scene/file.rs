@@ -67,10 +67,126 @@ impl Scene {
 }
 
 fn parse_json(text: &str, source_name: String) -> Result<Scene> {
-    serde_json::from_str(text).map_err(|e| Error::SceneFile {
-        source_name,
+    let value: serde_json::Value = serde_json::from_str(text).map_err(|e| Error::SceneFile {
+        source_name: source_name.clone(),
         detail: e.to_string(),
+    })?;
+    from_value(&value).map_err(|detail| Error::SceneFile {
+        source_name,
+        detail,
     })
+}
+
+/// A scene from a parsed JSON value; a mistake is named by its key path
+/// (`indenter.radius`, `substrate.layers[1].thickness`).
+fn from_value(value: &serde_json::Value) -> std::result::Result<Scene, String> {
+    let (mut path, message) = match serde_path_to_error::deserialize::<_, Scene>(value) {
+        Ok(scene) => return Ok(scene),
+        Err(e) => {
+            let segments = e.path().iter().map(Segment::from).collect::<Vec<_>>();
+            (segments, e.into_inner().to_string())
+        }
+    };
+    if let Some(field) = unknown_field(&message) {
+        if path.last() != Some(&Segment::Key(field.to_string())) {
+            path.push(Segment::Key(field.to_string()));
+        }
+    } else {
+        refine(value, &mut path, &message);
+    }
+    let path = path.iter().fold(String::new(), |mut text, segment| {
+        match segment {
+            Segment::Key(key) if text.is_empty() => text.push_str(key),
+            Segment::Key(key) => {
+                text.push('.');
+                text.push_str(key);
+            }
+            Segment::Index(i) => text.push_str(&format!("[{i}]")),
+        }
+        text
+    });
+    Err(if path.is_empty() {
+        message
+    } else {
+        format!("key `{path}`: {message}")
+    })
+}
+
+/// One step of a key path.
+#[derive(Debug, Clone, PartialEq)]
+enum Segment {
+    Key(String),
+    Index(usize),
+}
+
+impl From<&serde_path_to_error::Segment> for Segment {
+    fn from(segment: &serde_path_to_error::Segment) -> Self {
+        match segment {
+            serde_path_to_error::Segment::Seq { index } => Segment::Index(*index),
+            serde_path_to_error::Segment::Map { key } => Segment::Key(key.clone()),
+            serde_path_to_error::Segment::Enum { variant } => Segment::Key(variant.clone()),
+            serde_path_to_error::Segment::Unknown => Segment::Key("?".into()),
+        }
+    }
+}
+
+/// Serde reads a tagged table's fields from a buffer and does not name
+/// them, so the path it reports ends at the table. Below it, the child
+/// whose removal changes the error holds the mistake: descend into it
+/// while there is one (the tag `kind` is skipped; removing it always
+/// changes the error). Bounded by the depth of the value.
+fn refine(root: &serde_json::Value, path: &mut Vec<Segment>, message: &str) {
+    while let Some(node) = lookup(root, path) {
+        let children: Vec<Segment> = match node {
+            serde_json::Value::Object(map) => map
+                .keys()
+                .filter(|k| k.as_str() != "kind")
+                .map(|k| Segment::Key(k.clone()))
+                .collect(),
+            serde_json::Value::Array(items) => (0..items.len()).map(Segment::Index).collect(),
+            _ => return,
+        };
+        let culprit = children.into_iter().find(|child| {
+            let mut pruned = root.clone();
+            remove(&mut pruned, path, child);
+            match serde_path_to_error::deserialize::<_, Scene>(&pruned) {
+                Ok(_) => true,
+                Err(e) => e.into_inner().to_string() != message,
+            }
+        });
+        match culprit {
+            Some(child) => path.push(child),
+            None => return,
+        }
+    }
+}
+
+/// The value at `path` below `root`.
+fn lookup<'a>(root: &'a serde_json::Value, path: &[Segment]) -> Option<&'a serde_json::Value> {
+    path.iter().try_fold(root, |node, segment| match segment {
+        Segment::Key(key) => node.get(key.as_str()),
+        Segment::Index(i) => node.get(*i),
+    })
+}
+
+/// Removes `child` of the value at `path` below `root`.
+fn remove(root: &mut serde_json::Value, path: &[Segment], child: &Segment) {
+    let mut node = Some(root);
+    for segment in path {
+        node = node.and_then(|n| match segment {
+            Segment::Key(key) => n.get_mut(key.as_str()),
+            Segment::Index(i) => n.get_mut(*i),
+        });
+    }
+    match (node, child) {
+        (Some(serde_json::Value::Object(map)), Segment::Key(key)) => {
+            map.remove(key);
+        }
+        (Some(serde_json::Value::Array(items)), Segment::Index(i)) if *i < items.len() => {
+            items.remove(*i);
+        }
+        _ => {}
+    }
 }
 
 fn parse_toml(text: &str, source_name: String) -> Result<Scene> {

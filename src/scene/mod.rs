@@ -41,6 +41,8 @@ mod energy;
 mod file;
 mod reference;
 mod runner;
+#[cfg(feature = "serde")]
+mod schema;
 mod sizing;
 mod spec;
 mod stresses;
@@ -62,7 +64,10 @@ use runner::{Outcome, Runner};
 
 /// How the indenter is driven.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(
     feature = "serde",
     serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)
@@ -112,7 +117,10 @@ pub enum Protocol {
 
 /// How fine the grid is.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(default, deny_unknown_fields))]
 pub struct Resolution {
     /// Cells across the smallest contact diameter the protocol must
@@ -151,7 +159,10 @@ impl Default for Resolution {
 
 /// What a scene keeps.
 #[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(default, deny_unknown_fields))]
 pub struct Outputs {
     /// Fields of the most loaded step to keep in [`Curve::peak`].
@@ -174,7 +185,10 @@ impl Outputs {
 
 /// Solver settings of a scene.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(default, deny_unknown_fields))]
 pub struct SolverSettings {
     /// See [`SolverParams::tolerance`].
@@ -190,7 +204,10 @@ pub struct SolverSettings {
 
 /// How an adhesive scene decides where the contact edge stands.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum AdhesionMethod {
     /// The energy (Griffith) balance over the contact edge along a family of
@@ -227,7 +244,10 @@ impl Default for SolverSettings {
 
 /// A contact experiment. See the [module docs](self).
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct Scene {
     /// The body.

@@ -24,7 +24,10 @@ pub const MAX_STRESS_PLANES: usize = 1000;
 /// padding = 8                            # an isolated grid padded 8 times
 /// ```
 #[derive(Debug, Clone, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(default, deny_unknown_fields))]
 pub struct StressOutputs {
     /// Planes at these depths, m.
@@ -40,7 +43,10 @@ pub struct StressOutputs {
 
 /// `planes` evenly spaced planes from the surface to `to` (both included).
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct DepthGrid {
     /// The deepest plane, m.

@@ -6,7 +6,10 @@ use ndarray::Array2;
 /// a thousand steps stores a thousand sets of scalars, not a thousand
 /// pressure maps.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(default, deny_unknown_fields))]
 pub struct Fields {
     /// Keep the cell pressures (Pa).

@@ -42,6 +42,7 @@ from ._native import check_scene as _check_scene
 from ._native import edge_release as _edge_release
 from ._native import run_scene as _run_scene
 from ._native import scene_reference as _scene_reference
+from ._native import scene_schema as _scene_schema
 
 SceneLike = Union[Mapping[str, Any], str, "os.PathLike[str]"]
 
@@ -62,6 +63,7 @@ __all__ = [
     "plot_section",
     "run_scene",
     "scene_reference",
+    "scene_schema",
     "subsurface_stress",
 ]
 
@@ -127,6 +129,16 @@ def scene_reference(scene: SceneLike) -> dict:
     ``stiffness``, ``peak_force``, ``peak_contact_radius``,
     ``pull_off_force`` to values."""
     return _scene_reference(_scene(scene))
+
+
+def scene_schema() -> dict:
+    """The JSON Schema of a scene (draft 2020-12), as a dict: every key
+    with its type, default and description (units included). Validate a
+    scene dict with any JSON Schema tool, e.g.
+    ``jsonschema.validate(scene, layered_contact.scene_schema())``."""
+    import json
+
+    return json.loads(_scene_schema())
 
 
 def curve_to_dict(curve: Curve) -> dict:

@@ -63,6 +63,13 @@ enum Command {
     /// curve; prints the estimates with standard errors and writes
     /// fit.csv.
     Fit(Box<fit::FitArgs>),
+    /// Print the JSON Schema of scene files (for editors and validators),
+    /// or with --markdown the table of every key.
+    Schema {
+        /// The key table in Markdown instead.
+        #[arg(long)]
+        markdown: bool,
+    },
     /// Reproduce the reference experiment (Lyashenko, Popov & Borysiuk
     /// 2023): CSV tables, SVG figures and a summary.
     Paper {
@@ -94,6 +101,14 @@ fn dispatch(command: Command) -> Result<()> {
         Command::Reference { scene } => reference(&Scene::read(&scene)?),
         Command::Paper { out, fine } => paper::run(&out, fine),
         Command::Fit(args) => fit::fit(&args),
+        Command::Schema { markdown } => {
+            if markdown {
+                say!("{}", Scene::key_reference().trim_end());
+            } else {
+                say!("{}", Scene::json_schema());
+            }
+            Ok(())
+        }
     }
 }
 
