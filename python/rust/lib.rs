@@ -12,7 +12,7 @@ use numpy::{
 use pyo3::create_exception;
 use pyo3::exceptions::PyException;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyString};
+use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 use std::time::{Duration, Instant};
 
 use layered_contact as lc;
@@ -39,6 +39,14 @@ create_exception!(
     ConvergenceError,
     LayeredContactError,
     "A solver that did not converge (the message gives the residual)."
+);
+create_exception!(
+    layered_contact,
+    EdgeContactWarning,
+    pyo3::exceptions::PyUserWarning,
+    "A contact that reaches the edge of an isolated grid: the grid is too \
+     small, and the force is that of a contact cut off at its edge. Make it \
+     an error with `warnings.simplefilter(\"error\", EdgeContactWarning)`."
 );
 
 /// The library's error as the matching Python exception, same message.
@@ -111,6 +119,15 @@ impl Material {
             self.inner.youngs_modulus(),
             self.inner.poisson_ratio()
         )
+    }
+
+    /// Pickling (multiprocessing, Dask): the constructor and its arguments.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (f64, f64))> {
+        let m = slf.get().inner;
+        Ok((
+            slf.get_type().into_any(),
+            (m.youngs_modulus(), m.poisson_ratio()),
+        ))
     }
 }
 
@@ -204,8 +221,73 @@ impl Substrate {
         self.inner.total_thickness()
     }
 
-    fn __repr__(&self) -> String {
-        format!("{:?}", self.inner)
+    /// `Substrate.half_space(Material(...))` and the like: the constructor
+    /// that rebuilds it.
+    fn __repr__(slf: &Bound<'_, Self>) -> PyResult<String> {
+        let (name, arguments) = slf.get().parts(slf.py())?;
+        let arguments = arguments
+            .iter()
+            .map(|a| Ok(a.bind(slf.py()).repr()?.to_string()))
+            .collect::<PyResult<Vec<String>>>()?;
+        Ok(format!("Substrate.{name}({})", arguments.join(", ")))
+    }
+
+    /// Pickling (multiprocessing, Dask): the constructor and its arguments.
+    fn __reduce__<'py>(
+        slf: &Bound<'py, Self>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let py = slf.py();
+        let (name, arguments) = slf.get().parts(py)?;
+        Ok((slf.get_type().getattr(name)?, PyTuple::new(py, arguments)?))
+    }
+}
+
+impl Substrate {
+    /// The constructor's name and arguments that rebuild this substrate.
+    fn parts(&self, py: Python<'_>) -> PyResult<(&'static str, Vec<Py<PyAny>>)> {
+        let material = |m: &lc::Material| -> PyResult<Py<PyAny>> {
+            Ok(Py::new(py, Material { inner: *m })?.into_any())
+        };
+        let number =
+            |v: f64| -> PyResult<Py<PyAny>> { Ok(v.into_pyobject(py)?.into_any().unbind()) };
+        Ok(match &self.inner {
+            lc::Substrate::HalfSpace(m) => ("half_space", vec![material(m)?]),
+            lc::Substrate::Coated(c) => {
+                let (layer, h) = (material(c.layer())?, number(c.thickness())?);
+                match (c.base(), c.is_frictionless()) {
+                    (lc::Base::Rigid, false) => ("layer_on_rigid_base", vec![layer, h]),
+                    (lc::Base::Rigid, true) => ("layer_resting_on_rigid_base", vec![layer, h]),
+                    (lc::Base::Elastic(b), false) => {
+                        ("layer_on_elastic_base", vec![layer, h, material(b)?])
+                    }
+                    (lc::Base::Elastic(b), true) => (
+                        "layer_resting_on_elastic_base",
+                        vec![layer, h, material(b)?],
+                    ),
+                }
+            }
+            lc::Substrate::Stack(stack) => {
+                let layers = stack
+                    .layers()
+                    .iter()
+                    .map(|l| {
+                        Ok(
+                            PyTuple::new(py, [material(l.material())?, number(l.thickness())?])?
+                                .into_any()
+                                .unbind(),
+                        )
+                    })
+                    .collect::<PyResult<Vec<_>>>()?;
+                let base = match stack.base() {
+                    lc::Base::Rigid => py.None(),
+                    lc::Base::Elastic(b) => material(b)?,
+                };
+                (
+                    "stack",
+                    vec![PyList::new(py, layers)?.into_any().unbind(), base],
+                )
+            }
+        })
     }
 }
 
@@ -402,7 +484,21 @@ struct Solution {
 }
 
 impl Solution {
+    /// The solution as Python sees it; an [`EdgeContactWarning`] if its
+    /// contact reaches the edge of an isolated grid (raised instead where
+    /// warnings are errors).
     fn new(py: Python<'_>, s: &lc::solver::Solution, grid: &lc::Grid) -> PyResult<Self> {
+        if s.edge_contact {
+            let message = std::ffi::CString::new(format!(
+                "the contact ({} cells, radius {:e} m) reaches the edge of the isolated \
+                 {} x {} grid: enlarge the grid",
+                s.contact_cells,
+                s.contact_radius,
+                grid.rows(),
+                grid.columns()
+            ))?;
+            PyErr::warn(py, &py.get_type::<EdgeContactWarning>(), &message, 1)?;
+        }
         let (x, y) = centres(py, grid);
         Ok(Solution {
             depth: s.depth,
@@ -605,12 +701,14 @@ impl Curve {
     }
 
     fn __repr__(&self) -> String {
+        let stiffness = self
+            .stiffness
+            .map_or("None".to_string(), |k| format!("{k:e}"));
         format!(
-            "Curve({} steps on a {} x {} grid, stiffness={:?})",
+            "Curve({} steps on a {} x {} grid, stiffness={stiffness})",
             self.phase.len(),
             self.grid.0,
             self.grid.1,
-            self.stiffness
         )
     }
 }
@@ -793,6 +891,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("LayeredContactError", py.get_type::<LayeredContactError>())?;
     m.add("InvalidInputError", py.get_type::<InvalidInputError>())?;
     m.add("ConvergenceError", py.get_type::<ConvergenceError>())?;
+    m.add("EdgeContactWarning", py.get_type::<EdgeContactWarning>())?;
     m.add_class::<Material>()?;
     m.add_class::<Substrate>()?;
     m.add_class::<Indenter>()?;

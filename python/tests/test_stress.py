@@ -87,9 +87,11 @@ def test_scenes_return_their_stresses_and_a_section():
     curve = lc.run_scene(scene)
     s = curve.stresses
     np.testing.assert_allclose(s["depth"], np.linspace(0, 6e-6, 7), rtol=0, atol=1e-18)
-    # On the surface sigma_zz is minus the pressure, cell by cell.
+    # On the surface sigma_zz is minus the pressure, cell by cell (to 3e-11
+    # of the peak on this isolated grid: the tail of the images' coarse
+    # filter, wrapped round the period; tests/stress.rs).
     p = curve.peak.pressure
-    np.testing.assert_allclose(s["zz"][0], -p, atol=1e-12 * p.max())
+    np.testing.assert_allclose(s["zz"][0], -p, atol=1e-9 * p.max())
     assert s["boundaries"] == [2e-6, 3e-6]
     np.testing.assert_array_equal(s["interfaces"]["depth"], [2e-6, 3e-6])
     vm = s["max_von_mises"]
