@@ -103,7 +103,7 @@ fn bench_solver(c: &mut Criterion) {
     for n in [64usize, 128] {
         // 64 or 128 cells across the short axis, the grid four times as wide.
         let delta = 2.0 * short / n as f64;
-        let grid = Grid::square(4 * n, (4 * n) as f64 * delta).unwrap();
+        let grid = Grid::square_of_side(4 * n, (4 * n) as f64 * delta).unwrap();
         let columns = grid.columns();
         let heights = (0..grid.len())
             .map(|c| {
@@ -207,7 +207,7 @@ fn bench_iteration(c: &mut Criterion) {
     let mut group = c.benchmark_group("CG iteration vs padded FFT round trip");
     group.sample_size(10);
     for n in [512usize, 1024] {
-        let grid = Grid::square(n, 2.0).unwrap();
+        let grid = Grid::square_of_side(n, 2.0).unwrap();
         let substrate = Substrate::half_space(Material::new(1.0, 0.0).unwrap());
         let ball = Paraboloid::new(1.0).unwrap();
         let params = SolverParams {

@@ -38,7 +38,7 @@ fn main() -> Result<(), layered_contact::Error> {
     println!("N,control,build_s,solve_s,iterations,relative_error,peak_mb");
     for n in sizes {
         let start = Instant::now();
-        let grid = Grid::square(n, side)?;
+        let grid = Grid::square_of_side(n, side)?;
         let substrate = Substrate::half_space(Material::new(1.0, 0.0)?);
         let mut solver = ContactSolver::new(&substrate, &grid, Boundary::Isolated, params)?;
         let build = start.elapsed().as_secs_f64();

@@ -42,7 +42,7 @@ fn main() -> Result<(), layered_contact::Error> {
     let force = 5e3 * side * side;
     println!("N,boundary,build_s,surface_s,solve_s,iterations,coarse_iterations,contact_fraction,peak_mb,bytes_per_cell");
     for n in sizes {
-        let grid = Grid::square(n, side)?;
+        let grid = Grid::square_of_side(n, side)?;
         let start = Instant::now();
         let surface = SelfAffine {
             hurst: 0.8,

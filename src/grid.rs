@@ -63,12 +63,33 @@ impl Grid {
         })
     }
 
-    /// A square grid of `n x n` cells covering a square of side `side` (m).
+    /// A square grid of `n x n` cells covering a square of side `side` (m):
+    /// cells of side `side / n` (where [`Grid::new`] takes the cell's side).
+    ///
+    /// ```
+    /// let grid = layered_contact::Grid::square_of_side(64, 1e-3)?;
+    /// assert_eq!(grid.spacing(), 1e-3 / 64.0);
+    /// # Ok::<(), layered_contact::Error>(())
+    /// ```
     ///
     /// # Errors
     /// As [`Grid::new`].
-    pub fn square(n: usize, side: f64) -> Result<Self> {
+    pub fn square_of_side(n: usize, side: f64) -> Result<Self> {
         Self::new(n, n, positive_finite("side", side)? / n.max(1) as f64)
+    }
+
+    /// The former name of [`Grid::square_of_side`], whose second argument
+    /// (the side of the square, not of a cell as in [`Grid::new`]) its name
+    /// did not say.
+    ///
+    /// # Errors
+    /// As [`Grid::new`].
+    #[deprecated(
+        since = "0.1.0",
+        note = "use Grid::square_of_side (the same arguments)"
+    )]
+    pub fn square(n: usize, side: f64) -> Result<Self> {
+        Self::square_of_side(n, side)
     }
 
     /// Cells along the first axis.

@@ -24,7 +24,7 @@
 //! use layered_contact::topography::{Amplitude, SelfAffine};
 //! use layered_contact::Grid;
 //!
-//! let grid = Grid::square(256, 1e-3)?; // 1 mm, 256 x 256
+//! let grid = Grid::square_of_side(256, 1e-3)?; // 1 mm, 256 x 256
 //! let surface = SelfAffine {
 //!     hurst: 0.8,
 //!     amplitude: Amplitude::RmsHeight(1e-6),

@@ -373,7 +373,7 @@ fn exact_layered_jkr_by_depth_and_force() {
 fn hysteresis_and_invalid_works() {
     let jkr = JkrSphere::new(&rubber(), RADIUS, WORK).unwrap();
     let a = jkr.pull_off_contact_radius();
-    let grid = Grid::square(96, 6.0 * a).unwrap();
+    let grid = Grid::square_of_side(96, 6.0 * a).unwrap();
     let mut solver = half_space_solver(&grid);
     let ball = Paraboloid::new(RADIUS).unwrap();
     let depth = (1.2 * a).powi(2) / RADIUS;
@@ -398,7 +398,7 @@ fn hysteresis_and_invalid_works() {
 /// error naming the way out.
 #[test]
 fn split_contact_is_refused() {
-    let grid = Grid::square(48, 4.8e-3).unwrap();
+    let grid = Grid::square_of_side(48, 4.8e-3).unwrap();
     let heights: Vec<f64> = (0..grid.len())
         .map(|c| {
             let (i, j) = ((c / 48) as f64 - 23.5, (c % 48) as f64 - 23.5);

@@ -41,7 +41,7 @@ fn sampled(
 fn map_branches(heights: impl Fn(f64, f64) -> f64) -> (f64, f64, bool) {
     let jkr = JkrSphere::new(&rubber(), RADIUS, WORK).unwrap();
     let a = jkr.pull_off_contact_radius();
-    let grid = Grid::square(64, 8.0 * a).unwrap();
+    let grid = Grid::square_of_side(64, 8.0 * a).unwrap();
     let (map, mut solver) = sampled(grid, Boundary::Isolated, heights);
     let depth = (1.5 * a).powi(2) / RADIUS;
     let branches = solver
@@ -149,7 +149,7 @@ fn wavy_surfaces_that_used_to_fail_now_match_johnson() {
     let period = 1e-3;
     let mut accepted = 0;
     for (n, h0) in [(32, 2e-5), (64, 2e-5), (32, 5e-6), (64, 5e-6), (128, 2e-5)] {
-        let grid = Grid::square(n, period).unwrap();
+        let grid = Grid::square_of_side(n, period).unwrap();
         let (map, mut solver) = sampled(grid, Boundary::Periodic, |x, _| {
             h0 * (1.0 - (2.0 * PI * x / period).cos())
         });
@@ -185,7 +185,7 @@ fn a_flat_punch_that_is_not_round_is_flagged() {
     // discs for a round punch (exact Kendall), not for a square one, whose
     // energy balance averages the release over an edge where it is not
     // uniform (it used to be reported as exact).
-    let grid = Grid::square(64, 6.4e-3).unwrap();
+    let grid = Grid::square_of_side(64, 6.4e-3).unwrap();
     let half = 1.6e-3;
     let round = |x: f64, y: f64| {
         if x * x + y * y < half * half {
@@ -240,7 +240,7 @@ fn a_wavy_surface_with_two_troughs_is_refused_not_truncated() {
     let h0 = 2e-5;
     for (k, l) in [(1usize, 0usize), (1, 2)] {
         let n = 128;
-        let grid = Grid::square(n, period).unwrap();
+        let grid = Grid::square_of_side(n, period).unwrap();
         let heights = |phase: f64, troughs: f64| {
             h0 * (1.0 - (troughs * 2.0 * PI * phase).cos())
                 + 0.01 * h0 * (1.0 - (2.0 * PI * phase).cos())
@@ -293,7 +293,7 @@ fn a_pull_off_contact_the_grid_does_not_resolve_is_refused() {
         let exact = JkrSinusoid::new(&rubber(), side, amplitude, WORK).unwrap();
         let (_, half_width) = exact.pull_off().unwrap();
         assert!(2.0 * half_width / side * n as f64 <= 3.6);
-        let grid = Grid::square(n, side).unwrap();
+        let grid = Grid::square_of_side(n, side).unwrap();
         let (map, mut solver) = sampled(grid, Boundary::Periodic, |x, _| {
             amplitude * (1.0 - (2.0 * PI * x / side).cos())
         });

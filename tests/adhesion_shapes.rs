@@ -27,7 +27,7 @@ fn sinusoid_pull_off(n: usize, wave: (usize, usize), alpha: f64) -> f64 {
     let amplitude = (2.0 * wavelength * WORK / (PI * PI * estar)).sqrt() / alpha;
     let exact = JkrSinusoid::new(&rubber(), wavelength, amplitude, WORK).unwrap();
     assert!((exact.adhesion_parameter() / alpha - 1.0).abs() < 1e-12);
-    let grid = Grid::square(n, side).unwrap();
+    let grid = Grid::square_of_side(n, side).unwrap();
     // Heights from the cell indices, so that a crest's cells are equal.
     let values = (0..grid.len())
         .map(|c| {

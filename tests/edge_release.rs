@@ -23,7 +23,7 @@ fn estar() -> f64 {
 fn solver(n: usize, delta: f64) -> ContactSolver {
     ContactSolver::new(
         &Substrate::half_space(rubber()),
-        &Grid::square(n, n as f64 * delta).unwrap(),
+        &Grid::square_of_side(n, n as f64 * delta).unwrap(),
         Boundary::Isolated,
         SolverParams::default(),
     )

@@ -326,7 +326,7 @@ fn operator_rejects_wrong_lengths_and_grids_reject_bad_sizes() {
         })
     ));
     assert!(matches!(
-        Grid::square(4, f64::NAN),
+        Grid::square_of_side(4, f64::NAN),
         Err(Error::InvalidParameter { name: "side", .. })
     ));
 }

@@ -593,7 +593,7 @@ fn preconditioned_solve_equals_plain_polonsky_keer() {
 #[test]
 fn warm_start_is_corrected_on_the_coarse_grids() {
     let substrate = Substrate::half_space(Material::new(1.0, 0.0).unwrap());
-    let grid = Grid::square(128, 2.0).unwrap();
+    let grid = Grid::square_of_side(128, 2.0).unwrap();
     let ball = Paraboloid::new(1.0).unwrap();
     let params = |multiresolution: bool| SolverParams {
         tolerance: 1e-11,

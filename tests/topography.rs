@@ -22,7 +22,7 @@ fn surface(amplitude: Amplitude, seed: u64) -> SelfAffine {
 #[test]
 fn spectrum_is_self_affine() {
     let n = 256;
-    let grid = Grid::square(n, 1e-3).unwrap();
+    let grid = Grid::square_of_side(n, 1e-3).unwrap();
     let h = surface(Amplitude::RmsHeight(1e-6), 3)
         .heights(&grid)
         .unwrap();
@@ -99,7 +99,7 @@ fn spectrum_is_self_affine() {
 #[test]
 fn amplitude_mean_and_seed() {
     let n = 256;
-    let grid = Grid::square(n, 1e-3).unwrap();
+    let grid = Grid::square_of_side(n, 1e-3).unwrap();
     let delta = grid.spacing();
     let rms = |v: &[f64]| (v.iter().map(|x| x * x).sum::<f64>() / v.len() as f64).sqrt();
     let h = surface(Amplitude::RmsHeight(2e-6), 5)
@@ -154,7 +154,7 @@ fn amplitude_mean_and_seed() {
 /// the lowest point, at height 0.
 #[test]
 fn indenter_touches_at_the_highest_summit() {
-    let grid = Grid::square(64, 0.25e-3).unwrap();
+    let grid = Grid::square_of_side(64, 0.25e-3).unwrap();
     let rough = surface(Amplitude::RmsHeight(1e-6), 9);
     let h = rough.heights(&grid).unwrap();
     let map = rough.indenter(&grid).unwrap();
@@ -169,7 +169,7 @@ fn indenter_touches_at_the_highest_summit() {
 /// Bad parameters name themselves.
 #[test]
 fn invalid_surfaces_are_refused() {
-    let grid = Grid::square(64, 1e-3).unwrap();
+    let grid = Grid::square_of_side(64, 1e-3).unwrap();
     for (bad, name) in [
         (
             SelfAffine {

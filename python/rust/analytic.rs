@@ -81,6 +81,20 @@ pub(crate) fn flat_punch_stiffness<'py>(
     radius: PyReadonlyArrayDyn<'py, f64>,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
     checked_len("radius", radius.shape())?;
+    // Each radius is checked here, before the table is sized by the
+    // largest, so that the error names the radius.
+    if let Some(&bad) = radius
+        .as_array()
+        .iter()
+        .find(|r| !(r.is_finite() && **r > 0.0))
+    {
+        return Err(lc::Error::InvalidParameter {
+            name: "radius (m)",
+            value: bad,
+            expected: "positive and finite",
+        })
+        .py_err();
+    }
     let largest =
         radius
             .as_array()

@@ -45,6 +45,11 @@ def test_flat_punch_stiffness():
     film = lc.Substrate.layer_on_rigid_base(film_material, 5e-3)
     k = lc.analytic.flat_punch_stiffness(film, 5e-3)
     assert k / (2 * film_material.contact_modulus * 5e-3) == pytest.approx(3.36659, abs=1e-5)
+    # A bad radius is named with its value (it once read "max_contact_radius
+    # ... got 0", the table's size derived from it).
+    for bad in (-1e-3, 0.0, np.nan):
+        with pytest.raises(lc.InvalidInputError, match=r"radius \(m\) must be positive and finite, got"):
+            lc.analytic.flat_punch_stiffness(film, np.array([1e-3, bad]))
 
 
 def test_layered_pull_off_tends_to_jkr_on_a_thick_layer():

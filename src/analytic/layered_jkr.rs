@@ -10,7 +10,7 @@ const BISECTIONS: usize = 50;
 /// the pull-off radius lies far outside any tabulated range).
 const MAX_DOUBLINGS: usize = 40;
 
-impl LayeredParaboloid<'_> {
+impl LayeredParaboloid {
     /// The stable equilibrium at `target` depth or force: the root of
     /// `key(a) = target` of largest radius, on the branch where `key` grows
     /// with `a`; `None` below the branch's least value (no adhesive
@@ -154,14 +154,14 @@ impl LayeredParaboloid<'_> {
 /// assert!(least.force < 0.0);
 /// Ok::<(), layered_contact::Error>(())
 /// ```
-#[derive(Debug, Clone, Copy)]
-pub struct LayeredJkrCycle<'a> {
-    advancing: LayeredParaboloid<'a>,
-    receding: LayeredParaboloid<'a>,
+#[derive(Debug, Clone)]
+pub struct LayeredJkrCycle {
+    advancing: LayeredParaboloid,
+    receding: LayeredParaboloid,
     peak: ContactState,
 }
 
-impl<'a> LayeredJkrCycle<'a> {
+impl LayeredJkrCycle {
     /// The cycle of a paraboloid of tip radius `sphere_radius` (m) pressed
     /// to `max_depth` (m) and pulled off, with advancing and receding works
     /// of adhesion (J/m^2).
@@ -171,7 +171,7 @@ impl<'a> LayeredJkrCycle<'a> {
     /// work above the receding one, a non-positive maximum depth, or a peak
     /// contact beyond the tabulated range.
     pub fn new(
-        body: &'a super::Axisymmetric,
+        body: &super::Axisymmetric,
         sphere_radius: f64,
         advancing: f64,
         receding: f64,

@@ -87,7 +87,7 @@ pub const MESH_CRITERION_CONSTANT: f64 = 0.473201;
 ///
 /// let rubber = Material::new(1e6, 0.5)?;
 /// let a = 1e-3;
-/// let grid = Grid::square(34, 2.125 * a)?; // 32 cells across the punch
+/// let grid = Grid::square_of_side(34, 2.125 * a)?; // 32 cells across the punch
 /// let mut solver = ContactSolver::new(
 ///     &Substrate::half_space(rubber), &grid, Boundary::Isolated, SolverParams::default())?;
 /// let punch = FlatPunch::new(a)?;

@@ -308,8 +308,10 @@ impl Axisymmetric {
     pub const MAX_RADIUS_OVER_THICKNESS: f64 = 200.0;
 
     /// Solutions on `substrate` for contact radii up to
-    /// `max_radius_over_thickness` times the layer thickness (ignored for a
-    /// half-space). The kernel is tabulated up to that range.
+    /// `max_radius_over_thickness` times the top layer's thickness (the
+    /// largest `a/h` covered; ignored for a half-space). The kernel is
+    /// tabulated up to that range once, at a cost that grows with it, so ask
+    /// for what you need: `2.0` covers contacts up to twice the thickness.
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] if `max_radius_over_thickness` is not
@@ -439,6 +441,23 @@ impl Axisymmetric {
 
     /// A paraboloid `f = r^2 / (2R)` of tip radius `sphere_radius` (m) with
     /// work of adhesion `work_of_adhesion` (J/m^2; 0 for non-adhesive).
+    /// The result shares the body's tables, so it can be built in one
+    /// expression:
+    ///
+    /// ```
+    /// use layered_contact::analytic::Axisymmetric;
+    /// use layered_contact::{Material, Substrate};
+    ///
+    /// let film = Substrate::layer_on_rigid_base(Material::new(1e6, 0.5)?, 1e-3)?;
+    /// // Contact radii up to twice the film's thickness (a/h <= 2).
+    /// let sphere = Axisymmetric::new(&film, 2.0)?.paraboloid(0.1, 0.0)?;
+    /// // a = h/100: Hertz, F = 4 E* a^3 / (3 R); the bonded incompressible
+    /// // film stiffens it by 8e-7.
+    /// let state = sphere.at_contact_radius(1e-5)?;
+    /// let hertz = 4.0 * (1e6 / 0.75) * 1e-15 / (3.0 * 0.1);
+    /// assert!((state.force / hertz - 1.0).abs() < 1e-5);
+    /// # Ok::<(), layered_contact::Error>(())
+    /// ```
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for a radius that is not positive and
@@ -447,9 +466,9 @@ impl Axisymmetric {
         &self,
         sphere_radius: f64,
         work_of_adhesion: f64,
-    ) -> Result<LayeredParaboloid<'_>> {
+    ) -> Result<LayeredParaboloid> {
         Ok(LayeredParaboloid {
-            body: self,
+            body: self.clone(),
             sphere_radius: positive_finite("sphere_radius", sphere_radius)?,
             work_of_adhesion: crate::error::non_negative_finite(
                 "work_of_adhesion",

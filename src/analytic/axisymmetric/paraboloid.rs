@@ -7,9 +7,12 @@ use super::{pressure_profile, Axisymmetric, Nystrom};
 use crate::error::{Error, Result};
 
 /// A paraboloid on the coated half-space, as functions of the contact radius.
-#[derive(Debug, Clone, Copy)]
-pub struct LayeredParaboloid<'a> {
-    pub(in crate::analytic) body: &'a Axisymmetric,
+/// It holds its own handle on the body's tabulated kernel (shared, not
+/// copied), so it may outlive the [`Axisymmetric`] it came from:
+/// `Axisymmetric::new(..)?.paraboloid(..)?` is a value.
+#[derive(Debug, Clone)]
+pub struct LayeredParaboloid {
+    pub(in crate::analytic) body: Axisymmetric,
     pub(in crate::analytic) sphere_radius: f64,
     pub(in crate::analytic) work_of_adhesion: f64,
 }
@@ -37,7 +40,7 @@ pub struct PullOff {
     pub displacement_control: ContactState,
 }
 
-impl LayeredParaboloid<'_> {
+impl LayeredParaboloid {
     fn solved(&self, contact_radius: f64) -> Result<(f64, Nystrom)> {
         self.body.nystrom(contact_radius)
     }

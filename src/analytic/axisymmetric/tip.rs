@@ -227,9 +227,9 @@ fn sphere_equivalent(radius: f64, x: f64) -> f64 {
 }
 
 /// A tip on the coated half-space, as functions of the contact radius.
-#[derive(Debug, Clone, Copy)]
-pub struct LayeredTip<'a> {
-    body: &'a Axisymmetric,
+#[derive(Debug, Clone)]
+pub struct LayeredTip {
+    body: Axisymmetric,
     tip: Tip,
     work_of_adhesion: f64,
 }
@@ -269,16 +269,16 @@ impl Axisymmetric {
     /// # Errors
     /// [`Error::InvalidParameter`] for a non-positive or non-finite size, a
     /// half-angle outside `(0, pi/2)` or a negative work of adhesion.
-    pub fn tip(&self, tip: Tip, work_of_adhesion: f64) -> Result<LayeredTip<'_>> {
+    pub fn tip(&self, tip: Tip, work_of_adhesion: f64) -> Result<LayeredTip> {
         Ok(LayeredTip {
-            body: self,
+            body: self.clone(),
             tip: tip.validated()?,
             work_of_adhesion: non_negative_finite("work_of_adhesion", work_of_adhesion)?,
         })
     }
 }
 
-impl LayeredTip<'_> {
+impl LayeredTip {
     /// The tip.
     pub fn tip(&self) -> Tip {
         self.tip

@@ -150,7 +150,7 @@ pub struct BranchPoint {
 /// let jkr = JkrSphere::new(&rubber, radius, dgamma)?;
 /// let a = jkr.pull_off_contact_radius();
 /// // 32 cells across the pull-off contact, room for the peak's.
-/// let grid = Grid::square(96, 6.0 * a)?;
+/// let grid = Grid::square_of_side(96, 6.0 * a)?;
 /// let mut solver = ContactSolver::new(
 ///     &Substrate::half_space(rubber), &grid, Boundary::Isolated, SolverParams::default())?;
 /// let ball = Paraboloid::new(radius)?;

@@ -262,8 +262,12 @@ fn summary(stiffness: &[StiffnessRow], punches: &[PunchRun], spheres: &[SphereRu
         }
     }
     say!("\n# Summary");
+    let exact = stiffness
+        .iter()
+        .find(|r| r.h_mm == 5.0 && r.d_mm == 5.0)
+        .map_or("-".to_string(), |r| format!("{:.4}", r.exact));
     say!(
-        "series K/(2aE*) at h = D = 5 mm: {:.4} (paper: 1.9)",
+        "series K/(2aE*) at h = D = 5 mm: {:.4} (exact {exact}; paper: 1.9)",
         series.evaluate(2.5e-3)?.ratio
     );
     say!(
