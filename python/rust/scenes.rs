@@ -1,0 +1,236 @@
+//! Scenes: runs, checks, references and the schema.
+
+use std::path::PathBuf;
+use std::sync::{Arc, Mutex};
+
+use numpy::PyArray1;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyString};
+use std::time::{Duration, Instant};
+
+use layered_contact as lc;
+
+use super::*;
+
+/// A scene from a dict (the structure of a scene file) or a TOML/JSON file.
+pub(crate) fn read_scene(py: Python<'_>, scene: &Bound<'_, PyAny>) -> PyResult<lc::scene::Scene> {
+    if let Ok(dict) = scene.cast::<PyDict>() {
+        let json: String = py
+            .import("json")?
+            .call_method1("dumps", (dict,))?
+            .extract()?;
+        return lc::scene::Scene::from_json(&json).py_err();
+    }
+    let path: PathBuf = scene.extract().map_err(|_| {
+        InvalidInputError::new_err("a scene is a dict or the path of a TOML or JSON file")
+    })?;
+    lc::scene::Scene::read(path).py_err()
+}
+
+/// A step as a dict.
+pub(crate) fn step_dict<'py>(py: Python<'py>, s: &lc::scene::Step) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("phase", s.phase.name())?;
+    d.set_item("depth", s.depth)?;
+    d.set_item("force", s.force)?;
+    d.set_item("contact_area", s.contact_area)?;
+    d.set_item("contact_radius", s.contact_radius)?;
+    d.set_item("iterations", s.iterations)?;
+    Ok(d)
+}
+
+/// The result of a scene: its steps as arrays, and the peak's fields.
+#[pyclass(module = "layered_contact._native", frozen, get_all)]
+pub(crate) struct Curve {
+    /// "loading" or "unloading" for each step.
+    phase: Vec<String>,
+    /// Depths, m.
+    depth: Py<PyAny>,
+    /// Forces, N.
+    force: Py<PyAny>,
+    /// Contact areas, m^2.
+    contact_area: Py<PyAny>,
+    /// Contact radii (equal area), m.
+    contact_radius: Py<PyAny>,
+    /// Solver iterations per step.
+    iterations: Vec<usize>,
+    /// Contact stiffness at the end of loading, N/m (None without two
+    /// loading steps in contact).
+    stiffness: Option<f64>,
+    /// The pull-off step as a dict (None without tension on unloading).
+    pull_off: Option<Py<PyDict>>,
+    /// `(rows, columns, spacing)` of the grid solved on.
+    grid: (usize, usize, f64),
+    /// The most loaded step with the fields the scene asked for (None if it
+    /// asked for none).
+    peak: Option<Py<Solution>>,
+    /// Known limits of the method behind these numbers, as sentences
+    /// (empty when there are none): see `layered_contact::scene::Caveat`.
+    caveats: Vec<String>,
+    /// The stresses below the surface at the most loaded step, when the
+    /// scene's `outputs.stresses` asks for them (see `subsurface_stress`).
+    stresses: Option<Py<PyDict>>,
+}
+
+#[pymethods]
+impl Curve {
+    fn __len__(&self) -> usize {
+        self.phase.len()
+    }
+
+    fn __repr__(&self) -> String {
+        let stiffness = self
+            .stiffness
+            .map_or("None".to_string(), |k| format!("{k:e}"));
+        format!(
+            "Curve({} steps on a {} x {} grid, stiffness={stiffness})",
+            self.phase.len(),
+            self.grid.0,
+            self.grid.1,
+        )
+    }
+}
+
+pub(crate) fn array(py: Python<'_>, values: Vec<f64>) -> Py<PyAny> {
+    PyArray1::from_vec(py, values).into_any().unbind()
+}
+
+/// Runs a scene (a dict or a TOML/JSON file path), calling
+/// `progress(step_dict)` after each step; `indenter` replaces the scene's
+/// indenter by any `Indenter` (sized from its bounding radius). Releases
+/// the GIL while solving.
+#[pyfunction]
+#[pyo3(signature = (scene, progress=None, indenter=None))]
+pub(crate) fn run_scene(
+    py: Python<'_>,
+    scene: &Bound<'_, PyAny>,
+    progress: Option<Py<PyAny>>,
+    indenter: Option<&Indenter>,
+) -> PyResult<Curve> {
+    let mut scene = read_scene(py, scene)?;
+    if let Some(shape) = indenter {
+        scene.indenter = lc::scene::IndenterSpec::Custom(lc::scene::CustomIndenter::new(Shared(
+            shape.inner.clone(),
+        )));
+    }
+    // The first error the callback raises, or Ctrl-C (checked every 10 ms
+    // inside the solves and after every step), stops the run and is raised.
+    let raised: Arc<Mutex<Option<PyErr>>> = Arc::default();
+    let interrupt: lc::solver::Interrupt = {
+        let raised = Arc::clone(&raised);
+        let last = Mutex::new(Instant::now());
+        Arc::new(move || {
+            let mut raised = raised.lock().unwrap_or_else(|e| e.into_inner());
+            if raised.is_some() {
+                return true;
+            }
+            let mut last = last.lock().unwrap_or_else(|e| e.into_inner());
+            if last.elapsed() < Duration::from_millis(10) {
+                return false;
+            }
+            *last = Instant::now();
+            match Python::attach(|py| py.check_signals()) {
+                Ok(()) => false,
+                Err(e) => {
+                    *raised = Some(e);
+                    true
+                }
+            }
+        })
+    };
+    let curve = py.detach(|| {
+        let mut solver = scene.solver()?;
+        solver.set_interrupt(Some(interrupt));
+        scene.run_on(&mut solver, &mut |step| {
+            let mut raised = raised.lock().unwrap_or_else(|e| e.into_inner());
+            if raised.is_some() {
+                return;
+            }
+            Python::attach(|py| {
+                let outcome = py.check_signals().and_then(|()| match &progress {
+                    Some(callback) => step_dict(py, step)
+                        .and_then(|d| callback.call1(py, (d,)))
+                        .map(|_| ()),
+                    None => Ok(()),
+                });
+                if let Err(e) = outcome {
+                    *raised = Some(e);
+                }
+            });
+        })
+    });
+    if let Some(e) = raised.lock().unwrap_or_else(|e| e.into_inner()).take() {
+        return Err(e);
+    }
+    let curve = curve.py_err()?;
+    let steps = &curve.steps;
+    let column = |f: fn(&lc::scene::Step) -> f64| array(py, steps.iter().map(f).collect());
+    let pull_off = curve
+        .pull_off()
+        .map(|s| step_dict(py, s).map(Bound::unbind))
+        .transpose()?;
+    let peak = curve
+        .peak
+        .as_ref()
+        .map(|s| Py::new(py, Solution::new(py, s, &curve.grid)?))
+        .transpose()?;
+    Ok(Curve {
+        phase: steps.iter().map(|s| s.phase.name().to_string()).collect(),
+        depth: column(|s| s.depth),
+        force: column(|s| s.force),
+        contact_area: column(|s| s.contact_area),
+        contact_radius: column(|s| s.contact_radius),
+        iterations: steps.iter().map(|s| s.iterations).collect(),
+        stiffness: curve.stiffness(),
+        pull_off,
+        grid: (
+            curve.grid.rows(),
+            curve.grid.columns(),
+            curve.grid.spacing(),
+        ),
+        peak,
+        caveats: curve.caveats.iter().map(ToString::to_string).collect(),
+        stresses: curve
+            .stresses
+            .as_ref()
+            .map(|r| stresses::stresses_dict(py, &curve.grid, r).map(Bound::unbind))
+            .transpose()?,
+    })
+}
+
+/// Validates a scene; returns `(rows, columns, spacing, memory_bytes)` of
+/// the grid it is solved on.
+#[pyfunction]
+pub(crate) fn check_scene(
+    py: Python<'_>,
+    scene: &Bound<'_, PyAny>,
+) -> PyResult<(usize, usize, f64, usize)> {
+    let scene = read_scene(py, scene)?;
+    scene.validate().py_err()?;
+    let grid = scene.grid().py_err()?;
+    let bytes = lc::kernel::memory_estimate(&grid, scene.boundary);
+    Ok((grid.rows(), grid.columns(), grid.spacing(), bytes))
+}
+
+/// The JSON Schema of a scene (a dict or file), as JSON text: every key
+/// with its type, default and description.
+#[pyfunction]
+pub(crate) fn scene_schema() -> String {
+    lc::scene::Scene::json_schema()
+}
+
+/// The exact values of a scene's results where they exist, as
+/// `{quantity: value}` (see `Scene::reference` of the Rust crate).
+#[pyfunction]
+pub(crate) fn scene_reference<'py>(
+    py: Python<'py>,
+    scene: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let scene = read_scene(py, scene)?;
+    let references = py.detach(|| scene.reference()).py_err()?;
+    let out = PyDict::new(py);
+    for r in references {
+        out.set_item(PyString::new(py, r.quantity.name()), r.value)?;
+    }
+    Ok(out)
+}

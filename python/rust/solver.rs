@@ -1,0 +1,218 @@
+//! The boundary-element solver and its solutions.
+
+use numpy::{PyArray1, PyArrayMethods};
+use pyo3::prelude::*;
+
+use layered_contact as lc;
+
+use super::*;
+
+/// The cell centres of `grid` along its rows (`x`) and columns (`y`), m.
+pub(crate) fn centres(py: Python<'_>, grid: &lc::Grid) -> (Py<PyAny>, Py<PyAny>) {
+    let x = (0..grid.rows()).map(|i| grid.cell_centre(i, 0).0).collect();
+    let y = (0..grid.columns())
+        .map(|j| grid.cell_centre(0, j).1)
+        .collect();
+    (array(py, x), array(py, y))
+}
+
+/// A field as a `rows x columns` array.
+pub(crate) fn field(
+    py: Python<'_>,
+    array: &Option<ndarray::Array2<f64>>,
+) -> PyResult<Option<Py<PyAny>>> {
+    array
+        .as_ref()
+        .map(|a| {
+            let (rows, columns) = a.dim();
+            let values: Vec<f64> = a.iter().copied().collect();
+            Ok(PyArray1::from_vec(py, values)
+                .reshape([rows, columns])?
+                .into_any()
+                .unbind())
+        })
+        .transpose()
+}
+
+/// One equilibrium of the boundary-element solver. Arrays are
+/// `rows x columns` with `[i, j]` at `(x[i], y[j])`, m from the axis.
+#[pyclass(module = "layered_contact._native", frozen, get_all)]
+pub(crate) struct Solution {
+    /// Depth of the indenter's lowest point below the undeformed surface, m.
+    depth: f64,
+    /// Total force, N (negative when adhesion pulls).
+    force: f64,
+    /// Contact area, m^2.
+    contact_area: f64,
+    /// Radius of the circle of equal area, m.
+    contact_radius: f64,
+    /// Cells in contact.
+    contact_cells: usize,
+    /// Whether the contact touches the edge of an isolated grid.
+    edge_contact: bool,
+    /// Iterations on this grid.
+    iterations: usize,
+    /// Final residual.
+    residual: f64,
+    /// Cell pressures, Pa (compression positive).
+    pressure: Option<Py<PyAny>>,
+    /// Surface displacements into the body, m.
+    displacement: Option<Py<PyAny>>,
+    /// Gap between indenter and surface, m (`inf` where it cannot reach).
+    gap: Option<Py<PyAny>>,
+    /// Cell-centre coordinates along the rows, m.
+    x: Py<PyAny>,
+    /// Cell-centre coordinates along the columns, m.
+    y: Py<PyAny>,
+}
+
+impl Solution {
+    /// The solution as Python sees it; an [`EdgeContactWarning`] if its
+    /// contact reaches the edge of an isolated grid (raised instead where
+    /// warnings are errors).
+    pub(crate) fn new(py: Python<'_>, s: &lc::solver::Solution, grid: &lc::Grid) -> PyResult<Self> {
+        if s.edge_contact {
+            let message = std::ffi::CString::new(format!(
+                "the contact ({} cells, radius {:e} m) reaches the edge of the isolated \
+                 {} x {} grid: enlarge the grid",
+                s.contact_cells,
+                s.contact_radius,
+                grid.rows(),
+                grid.columns()
+            ))?;
+            PyErr::warn(py, &py.get_type::<EdgeContactWarning>(), &message, 1)?;
+        }
+        let (x, y) = centres(py, grid);
+        Ok(Solution {
+            depth: s.depth,
+            force: s.force,
+            contact_area: s.contact_area,
+            contact_radius: s.contact_radius,
+            contact_cells: s.contact_cells,
+            edge_contact: s.edge_contact,
+            iterations: s.iterations,
+            residual: s.residual,
+            pressure: field(py, &s.pressure)?,
+            displacement: field(py, &s.displacement)?,
+            gap: field(py, &s.gap)?,
+            x,
+            y,
+        })
+    }
+}
+
+#[pymethods]
+impl Solution {
+    fn __repr__(&self) -> String {
+        format!(
+            "Solution(depth={:e}, force={:e}, contact_radius={:e}, iterations={})",
+            self.depth, self.force, self.contact_radius, self.iterations
+        )
+    }
+}
+
+/// The boundary-element solver on one substrate and grid: kernel and FFT
+/// plans are built once, solves reuse them (and the last solve as a warm
+/// start when asked). Solves release the GIL.
+#[pyclass(module = "layered_contact._native")]
+pub(crate) struct ContactSolver {
+    pub(crate) inner: lc::solver::ContactSolver,
+    warm: Option<lc::solver::WarmStart>,
+}
+
+#[pymethods]
+impl ContactSolver {
+    /// A solver for `substrate` on `rows x columns` square cells of side
+    /// `spacing` (m), isolated (the body is infinite) or periodic.
+    #[new]
+    #[allow(clippy::too_many_arguments)] // Python keyword arguments
+    #[pyo3(signature = (substrate, rows, columns, spacing, periodic=false, tolerance=1e-8, max_iterations=10_000))]
+    fn new(
+        py: Python<'_>,
+        substrate: &Substrate,
+        rows: usize,
+        columns: usize,
+        spacing: f64,
+        periodic: bool,
+        tolerance: f64,
+        max_iterations: usize,
+    ) -> PyResult<Self> {
+        let grid = lc::Grid::new(rows, columns, spacing).py_err()?;
+        let boundary = if periodic {
+            lc::Boundary::Periodic
+        } else {
+            lc::Boundary::Isolated
+        };
+        let params = lc::solver::SolverParams {
+            tolerance,
+            max_iterations,
+            fields: lc::solver::Fields::all(),
+            ..lc::solver::SolverParams::default()
+        };
+        let substrate = substrate.inner.clone();
+        let inner = py
+            .detach(|| lc::solver::ContactSolver::new(&substrate, &grid, boundary, params))
+            .py_err()?;
+        Ok(ContactSolver { inner, warm: None })
+    }
+
+    /// The equilibrium at depth `depth` (m); `warm_start` starts from the
+    /// previous solve (load stepping).
+    #[pyo3(signature = (indenter, depth, warm_start=false))]
+    fn solve_depth(
+        &mut self,
+        py: Python<'_>,
+        indenter: &Indenter,
+        depth: f64,
+        warm_start: bool,
+    ) -> PyResult<Solution> {
+        self.solve(py, indenter, warm_start, |solver, shape, warm| {
+            solver.solve_depth(shape, depth, warm, &mut ())
+        })
+    }
+
+    /// The equilibrium under total force `force` (N, >= 0).
+    #[pyo3(signature = (indenter, force, warm_start=false))]
+    fn solve_force(
+        &mut self,
+        py: Python<'_>,
+        indenter: &Indenter,
+        force: f64,
+        warm_start: bool,
+    ) -> PyResult<Solution> {
+        self.solve(py, indenter, warm_start, |solver, shape, warm| {
+            solver.solve_force(shape, force, warm, &mut ())
+        })
+    }
+
+    /// `(rows, columns, spacing)`.
+    #[getter]
+    fn grid(&self) -> (usize, usize, f64) {
+        let g = self.inner.grid();
+        (g.rows(), g.columns(), g.spacing())
+    }
+}
+
+type Solved = lc::Result<(lc::solver::Solution, lc::solver::WarmStart)>;
+
+impl ContactSolver {
+    fn solve(
+        &mut self,
+        py: Python<'_>,
+        indenter: &Indenter,
+        warm_start: bool,
+        run: impl FnOnce(
+                &mut lc::solver::ContactSolver,
+                &Shared,
+                Option<&lc::solver::WarmStart>,
+            ) -> Solved
+            + Send,
+    ) -> PyResult<Solution> {
+        let shape = Shared(indenter.inner.clone());
+        let warm = if warm_start { self.warm.take() } else { None };
+        let inner = &mut self.inner;
+        let (solution, warm) = py.detach(|| run(inner, &shape, warm.as_ref())).py_err()?;
+        self.warm = Some(warm);
+        Solution::new(py, &solution, self.inner.grid())
+    }
+}
