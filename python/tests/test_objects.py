@@ -68,3 +68,29 @@ def test_a_contact_at_the_grid_edge_warns():
             solver.solve_depth(lc.Indenter.flat_punch(5e-3), 1e-5)
         inside = solver.solve_depth(lc.Indenter.flat_punch(0.4e-3), 1e-5)
     assert not inside.edge_contact and 0 < inside.contact_cells < 256
+
+
+def test_a_curve_as_a_table_and_as_csv(tmp_path):
+    # The columns hold the curve's values (the same floats); the CSV has the
+    # tool's curve.csv header and reads back to the last bit.
+    import csv
+
+    scene = {
+        "substrate": {"kind": "half_space", "youngs_modulus": 1e6, "poisson_ratio": 0.5},
+        "indenter": {"kind": "sphere", "radius": 0.01},
+        "protocol": {"kind": "cycle", "max_depth": 1e-5, "steps": 4},
+        "resolution": {"cells_across": 16},
+    }
+    curve = lc.run_scene(scene)
+    table = lc.curve_table(curve)
+    assert {len(v) for v in table.values()} == {len(curve)}
+    assert list(table["force"]) == list(curve.force)
+    path = tmp_path / "curve.csv"
+    lc.write_curve_csv(curve, path)
+    with open(path, newline="") as handle:
+        rows = list(csv.reader(handle))
+    assert rows[0] == ["phase", "depth_m", "force_N", "contact_area_m2", "contact_radius_m", "iterations"]
+    assert [float(r[2]) for r in rows[1:]] == list(curve.force)
+    assert [float(r[1]) for r in rows[1:]] == list(curve.depth)
+    assert [r[0] for r in rows[1:]] == list(curve.phase)
+    assert [int(r[5]) for r in rows[1:]] == list(curve.iterations)

@@ -60,6 +60,7 @@ __all__ = [
     "Substrate",
     "analytic",
     "check_scene",
+    "curve_table",
     "curve_to_dict",
     "edge_release",
     "plot_section",
@@ -67,6 +68,7 @@ __all__ = [
     "scene_reference",
     "scene_schema",
     "subsurface_stress",
+    "write_curve_csv",
 ]
 
 
@@ -141,6 +143,39 @@ def scene_schema() -> dict:
     import json
 
     return json.loads(_scene_schema())
+
+
+CURVE_COLUMNS = (
+    ("phase", ""),
+    ("depth", "m"),
+    ("force", "N"),
+    ("contact_area", "m^2"),
+    ("contact_radius", "m"),
+    ("iterations", ""),
+)
+
+
+def curve_table(curve: Curve) -> dict:
+    """The steps of a curve as columns of equal length (``phase``,
+    ``depth`` m, ``force`` N, ``contact_area`` m^2, ``contact_radius`` m,
+    ``iterations``): ``pandas.DataFrame(curve_table(curve))`` is a table of
+    it."""
+    return {name: getattr(curve, name) for name, _ in CURVE_COLUMNS}
+
+
+def write_curve_csv(curve: Curve, path: "os.PathLike[str] | str") -> None:
+    """Writes the steps of a curve as CSV, one row per step, with the units
+    in the header (``depth_m``, ``force_N``, ...) as the tool's curve.csv,
+    every number to 17 significant digits (it reads back exactly)."""
+    import csv
+
+    table = curve_table(curve)
+    header = [f"{name}_{unit.replace('^', '')}" if unit else name for name, unit in CURVE_COLUMNS]
+    with open(path, "w", newline="") as handle:
+        writer = csv.writer(handle)
+        writer.writerow(header)
+        for row in zip(*(table[name] for name, _ in CURVE_COLUMNS)):
+            writer.writerow([v if isinstance(v, (str, int)) else repr(float(v)) for v in row])
 
 
 def curve_to_dict(curve: Curve) -> dict:
