@@ -166,7 +166,7 @@ def curve_table(curve: Curve) -> dict:
 def write_curve_csv(curve: Curve, path: "os.PathLike[str] | str") -> None:
     """Writes the steps of a curve as CSV, one row per step, with the units
     in the header (``depth_m``, ``force_N``, ...) as the tool's curve.csv,
-    every number to 17 significant digits (it reads back exactly)."""
+    every number in the shortest digits that read back exactly."""
     import csv
 
     table = curve_table(curve)
