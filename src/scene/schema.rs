@@ -156,29 +156,26 @@ fn rows_of(root: &Value, node: &Value, prefix: &str, rows: &mut Vec<String>, dep
                 // A table with one key naming the variant: the variant's
                 // description goes with that key.
                 None => {
-                    let mut own = Vec::new();
-                    rows_of_properties(root, variant, prefix, &mut own, depth);
-                    rows.extend(own.into_iter().map(|row| {
-                        row.strip_suffix("|  |")
-                            .map(|head| format!("{head}| {} |", cell(description)))
-                            .unwrap_or(row)
-                    }));
+                    rows_of_properties(root, variant, prefix, rows, depth, description);
                     continue;
                 }
             }
-            rows_of_properties(root, variant, prefix, rows, depth);
+            rows_of_properties(root, variant, prefix, rows, depth, "");
         }
         return;
     }
-    rows_of_properties(root, node, prefix, rows, depth);
+    rows_of_properties(root, node, prefix, rows, depth, "");
 }
 
+/// Rows for the properties of `node`; a property without a description of
+/// its own takes `fallback`.
 fn rows_of_properties(
     root: &Value,
     node: &Value,
     prefix: &str,
     rows: &mut Vec<String>,
     depth: usize,
+    fallback: &str,
 ) {
     let Some(properties) = node.get("properties").and_then(Value::as_object) else {
         return;
@@ -207,7 +204,7 @@ fn rows_of_properties(
             .get("description")
             .or_else(|| resolve(root, property).get("description"))
             .and_then(Value::as_str)
-            .unwrap_or("");
+            .unwrap_or(fallback);
         rows.push(format!(
             "| `{path}` | {} | {default} | {} |",
             type_of(root, property),

@@ -254,15 +254,7 @@ impl SubsurfaceStress {
         self.fft.forward(pressure, &mut spectrum);
         let cells = self.grid.len();
         planes.truncate(depths.len());
-        planes.resize_with(depths.len(), || StressPlane {
-            depth: 0.0,
-            xx: Vec::new(),
-            yy: Vec::new(),
-            zz: Vec::new(),
-            xy: Vec::new(),
-            xz: Vec::new(),
-            yz: Vec::new(),
-        });
+        planes.resize_with(depths.len(), StressPlane::default);
         for (plane, &depth) in planes.iter_mut().zip(depths) {
             plane.depth = depth;
             let StressPlane {

@@ -116,7 +116,7 @@ pub enum Side {
 
 /// The six stress components on one plane `z = depth`, Pa, each a
 /// row-major field of the grid's cells (the cell centres).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct StressPlane {
     /// Depth below the surface, m.
     pub depth: f64,

@@ -265,13 +265,18 @@ fn read_curve(path: &Path) -> Result<(Vec<f64>, Vec<f64>)> {
     Ok((z, f))
 }
 
-/// `LO,HI` of a range of moduli.
-fn range(text: &str) -> std::result::Result<(f64, f64), String> {
-    let values: Vec<f64> = text
-        .split(',')
+/// The comma-separated numbers of `text`; a number that does not parse is
+/// reported with what was `expected`.
+fn numbers(text: &str, expected: &str) -> std::result::Result<Vec<f64>, String> {
+    text.split(',')
         .map(|v| v.trim().parse::<f64>())
         .collect::<std::result::Result<_, _>>()
-        .map_err(|e| format!("{text}: {e}; expected LO,HI (Pa)"))?;
+        .map_err(|e| format!("{text}: {e}; expected {expected}"))
+}
+
+/// `LO,HI` of a range of moduli.
+fn range(text: &str) -> std::result::Result<(f64, f64), String> {
+    let values = numbers(text, "LO,HI (Pa)")?;
     match values[..] {
         [lo, hi] if lo > 0.0 && lo < hi && hi.is_finite() => Ok((lo, hi)),
         _ => Err(format!("{text}: expected LO,HI with 0 < LO < HI (Pa)")),
@@ -280,11 +285,7 @@ fn range(text: &str) -> std::result::Result<(f64, f64), String> {
 
 /// `E,nu,thickness` of a layer under the film.
 fn layer(text: &str) -> std::result::Result<(f64, f64, f64), String> {
-    let values: Vec<f64> = text
-        .split(',')
-        .map(|v| v.trim().parse::<f64>())
-        .collect::<std::result::Result<_, _>>()
-        .map_err(|e| format!("{text}: {e}; expected E,nu,thickness"))?;
+    let values = numbers(text, "E,nu,thickness")?;
     match values[..] {
         [e, nu, t] => Ok((e, nu, t)),
         _ => Err(format!("{text}: expected three numbers E,nu,thickness")),
