@@ -28,7 +28,7 @@
 //!
 //! | quantity | error at `N = 64` | convergence |
 //! |---|---|---|
-//! | flat-punch stiffness, half-space or layer (effective-radius grid) | 0.07-0.17 % | staircase noise of about 0.1 %, falling slowly |
+//! | flat-punch stiffness, half-space or layer (equal-area grid) | 0.35-0.83 % | `c / N` (`c` = 0.23 to 0.53); Richardson of 256 and 512 cells: `7e-8` to `2e-6` |
 //! | flat punch on a nearly incompressible layer much thinner than the contact (`nu = 0.4985`, `a/h = 18.6`, rigid base) | 0.48 % | 0.34 % at 128, 0.16 % at 256: the edge's boundary layer, `h` wide, needs several cells per thickness |
 //! | Hertz force | `7e-5` | about `1/N^2` |
 //! | Hertz contact radius | 0.5 % | staircase, `1/N` |
@@ -41,12 +41,22 @@
 //! cells (`BENCHMARKS.md`, single runs).
 //!
 //! Flat-punch grids choose their spacing (within 2 % of nominal) so that the
-//! staircase disc's *effective* radius, its equal-area radius less
-//! [`EDGE_SHIFT`](crate::solver::EDGE_SHIFT) cells, is the punch's: the
-//! piecewise-constant pressures miss part of the edge singularity, which a
-//! disc 0.117 cells smaller reproduces. That removes the `1/N` error that the
-//! equal-area grid left (0.35-0.8 % at 64 cells, from below) and leaves a
-//! staircase noise of about `1e-3`.
+//! staircase disc has the punch's area. The error left is the edge's: the
+//! piecewise-constant pressures miss part of the square-root singularity, a
+//! clean `c / N` from below (`N c` = 0.525, 0.547, 0.512, 0.530, 0.531,
+//! 0.530, 0.532 at 8 to 512 cells on the layer at `a/h = 2`), which
+//! Richardson extrapolation ([`richardson`](crate::scene::richardson))
+//! removes: from 64 and 128 cells `2.7e-4`, `4.6e-4` and `5.7e-4` of the
+//! exact stiffness on the half-space and the layers at `a/h` = 0.5 and 2,
+//! from 128 and 256 `3.4e-6` to `9.5e-6`, from 256 and 512 `6.7e-8`,
+//! `3.2e-7` and `2.1e-6` (`tests/scene.rs` checks 64 and 128 on the layer).
+//! Until 2026-11-24 the grid made the disc's *effective* radius (its
+//! equal-area radius less [`EDGE_SHIFT`](crate::solver::EDGE_SHIFT) cells)
+//! the punch's: smaller raw errors (0.07-0.17 % at 64 cells) but not a power
+//! of `1/N` (they changed sign near 32 cells), so extrapolation gained
+//! nothing (`1.4e-3` to `3.9e-3` from 32 and 64 cells). The energy
+//! balance's punch keeps that grid, since its contact sets are shifted
+//! discs.
 //!
 //! ### Adhesion
 //!
@@ -74,7 +84,21 @@
 //! residual error is staircase noise, not a power of `1/N`, so Richardson
 //! extrapolation does not improve it (it is already below 0.3 % at 16 cells
 //! and below 0.1 % from 64 cells up, where a whole cycle takes 0.35-0.8 s); the mesh criterion converges like
-//! `3/N` but irregularly, and extrapolation helps it only sometimes. A whole
+//! `3/N` but irregularly, and extrapolation helps it only sometimes.
+//!
+//! On layers the energy balance stops improving near `1e-3` (rigid base,
+//! `a/h = 1`: 0.067, 0.086, 0.091 % at 64, 128, 256 cells) while on the
+//! half-space it reaches `7e-6` at 256: the stall is the bias of its local
+//! quadratic fits in `(ln r, ln y)` over 35 % of the radius, exact for the
+//! half-space's power laws and not for a layer's terms. Measured on that
+//! case (2026-11-24), with sets 5 % apart and fits over 17.5 % the error at
+//! 256 cells is 0.023 %, with 2.5 % and 10 % 0.0014 % (at 1.8 and 2.8
+//! times the solves); local cubics over the default window gave 0.0024 %
+//! at 256 cells but doubled the half-space's error at 64 and 128 and lost
+//! the thin layer's pull-off at the family's smallest sets. Neither is the
+//! default yet: the finer family costs up to three times the solves for a
+//! gain below `1e-3`, and the staircase noise (about `1e-4` at 128 cells,
+//! not monotone in `N`) is the next floor. A whole
 //! adhesive loading-unloading cycle by the energy balance costs 300-500 CG
 //! iterations at 32-64 cells across the pull-off contact, the iterations of
 //! five to eight non-adhesive solves on the same grid, each about twice as
@@ -107,8 +131,7 @@
 //! magnitude at the cost of the coarser run; [`Scene::converge`] doubles the
 //! resolution until a requested accuracy is reached. It does not help the
 //! Hertz force (already second order) nor the quantities whose error is
-//! staircase noise (punch stiffness and both pull-offs with the energy
-//! balance).
+//! staircase noise (both pull-offs with the energy balance).
 //!
 //! [`Scene::converge`]: crate::scene::Scene::converge
 //!

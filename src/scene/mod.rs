@@ -418,7 +418,9 @@ impl Scene {
     }
 
     /// Runs the scene on a solver built by [`Scene::solver`] (or shared with
-    /// another scene on the same substrate and grid). A curved or custom
+    /// another scene on the same substrate and grid, as [`Scene::grid`]
+    /// gives it: a flat punch's grid depends on the adhesion method, a
+    /// curved indenter's on the protocol too). A curved or custom
     /// indenter whose contact reaches the edge of the grid restarts on a
     /// grid 1.5 times as wide with the same spacing (at most four times).
     ///

@@ -136,9 +136,13 @@ impl Scene {
     /// solved on their own grid.
     /// For a flat punch (untilted or not) the spacing is adjusted within 2 %
     /// of `2a / cells_across` so that the cells whose centres lie on the
-    /// punch have the punch's area: the staircase punch then has the right
-    /// radius on average, and the stiffness converges smoothly like `1/N`
-    /// instead of oscillating with the staircase.
+    /// punch have the punch's area (with the energy-balance adhesion, the
+    /// area of a disc [`EDGE_SHIFT`](crate::solver::EDGE_SHIFT) cells wider,
+    /// since that method's sets are shifted discs): the staircase punch then
+    /// has the right radius on average, and the stiffness converges smoothly
+    /// like `1/N`, so that [`richardson`](crate::scene::richardson)
+    /// extrapolation removes its error (see
+    /// [`doc::accuracy`](crate::doc::accuracy)).
     pub fn grid(&self) -> Result<Grid> {
         self.validate_settings()?;
         if let Some(grid) = self.indenter.map_grid()? {
@@ -148,13 +152,15 @@ impl Scene {
         let n = self.resolution.cells_across;
         if let IndenterSpec::FlatPunch { radius } = self.indenter {
             let cells = fft_friendly(n + 2);
-            // The mesh-dependent criterion is kept as published: on the
-            // equal-area staircase.
+            // The energy balance's sets are shifted discs (EDGE_SHIFT), so
+            // its punch is too; the non-adhesive punch and the
+            // mesh-dependent criterion (as published) take the equal-area
+            // staircase, whose error is a clean `c / N` that Richardson
+            // extrapolation removes (the shifted staircase's is smaller but
+            // changes sign near 32 cells across and is not a power of `N`).
             let shift = match (self.adhesion, self.solver.adhesion_method) {
-                (Adhesion::None, _) | (_, AdhesionMethod::EnergyBalance) => {
-                    crate::solver::EDGE_SHIFT
-                }
-                (_, AdhesionMethod::MeshCriterion) => 0.0,
+                (Adhesion::None, _) | (_, AdhesionMethod::MeshCriterion) => 0.0,
+                (_, AdhesionMethod::EnergyBalance) => crate::solver::EDGE_SHIFT,
             };
             return Grid::new(cells, cells, equal_area_spacing(radius, n, cells, shift));
         }

@@ -5,7 +5,7 @@
 
 use layered_contact::analytic::{Axisymmetric, LayeredJkrCycle, PunchStiffnessSeries};
 use layered_contact::scene::{
-    Adhesion, Curve, IndenterSpec, Phase, Protocol, Resolution, Scene, SolverSettings,
+    richardson, Adhesion, Curve, IndenterSpec, Phase, Protocol, Resolution, Scene, SolverSettings,
     SubstrateSpec,
 };
 use layered_contact::{Error, Material, Substrate};
@@ -111,25 +111,37 @@ pub struct StiffnessRow {
 }
 
 /// `K / (2 a E*)` of a flat punch of diameter `d_mm` on layer `h_mm` by the
-/// BEM (non-adhesive, 1 um deep, on the scene's equal-area grid).
+/// BEM (non-adhesive, 1 um deep, on the scene's equal-area grid): the
+/// Richardson extrapolation of `cells_across` and twice as many, whose
+/// errors are a clean `c / N` (see `doc::accuracy`): at 80 and 160 cells
+/// within 0.02 % of the exact solution, where 80 cells alone are 0.3 to
+/// 0.7 % below it.
 pub fn bem_ratio(h_mm: f64, d_mm: f64, cells_across: usize) -> Result<f64, Error> {
     let radius = 0.5e-3 * d_mm;
     let depth = 1e-6;
-    let scene = Scene {
-        protocol: Protocol::Depth { depth },
-        resolution: Resolution {
-            cells_across,
-            margin: 0.0,
-        },
-        solver: SolverSettings {
-            tolerance: 1e-10,
-            ..SolverSettings::default()
-        },
-        adhesion: Adhesion::None,
-        ..punch_scene(h_mm, d_mm, depth, 1)
+    let force = |cells_across: usize| -> Result<f64, Error> {
+        let scene = Scene {
+            protocol: Protocol::Depth { depth },
+            resolution: Resolution {
+                cells_across,
+                margin: 0.0,
+            },
+            solver: SolverSettings {
+                tolerance: 1e-10,
+                ..SolverSettings::default()
+            },
+            adhesion: Adhesion::None,
+            ..punch_scene(h_mm, d_mm, depth, 1)
+        };
+        let curve = scene.run(&mut |_| {})?;
+        Ok(curve.steps.last().map_or(0.0, |s| s.force))
     };
-    let curve = scene.run(&mut |_| {})?;
-    let force = curve.steps.last().map_or(0.0, |s| s.force);
+    let fine = 2 * cells_across;
+    let force = richardson(
+        (cells_across, force(cells_across)?),
+        (fine, force(fine)?),
+        1.0,
+    );
     Ok(force / depth / (2.0 * radius * rubber().contact_modulus()))
 }
 
