@@ -21,9 +21,10 @@ def test_punch_cycle_against_the_exact_stiffness():
     exact = lc.scene_reference(PUNCH)["stiffness"]
     film = lc.Substrate.layer_on_rigid_base(lc.Material(0.324e6, 0.48), 5e-3)
     assert exact == pytest.approx(lc.analytic.flat_punch_stiffness(film, 2.5e-3), rel=1e-12)
-    # 32 cells across the punch: within 1 % (the crate measures 0.36 % at 64
-    # on a half-space, converging like 1/N).
-    assert curve.stiffness == pytest.approx(exact, rel=0.01)
+    # 32 cells across the punch: the equal-area staircase is softer by a
+    # clean c / N (c = 0.37 at this a/h = 0.5, doc::accuracy): measured
+    # -1.116 %; twice as fine halves it.
+    assert curve.stiffness / exact - 1 == pytest.approx(-0.37 / 32, abs=1e-3)
     rows, columns, _ = curve.grid
     assert curve.peak.pressure.shape == (rows, columns)
 
