@@ -3,10 +3,11 @@
 use std::sync::Arc;
 
 use numpy::{
-    PyArray1, PyArrayDyn, PyArrayMethods, PyReadonlyArray2, PyReadonlyArrayDyn,
+    PyArray1, PyArray2, PyArrayDyn, PyArrayMethods, PyReadonlyArray2, PyReadonlyArrayDyn,
     PyUntypedArrayMethods,
 };
 use pyo3::prelude::*;
+use pyo3::types::PyTuple;
 
 use layered_contact as lc;
 
@@ -18,6 +19,119 @@ use super::*;
 pub(crate) struct Indenter {
     pub(crate) inner: Arc<dyn lc::indenter::Indenter + Send + Sync>,
     pub(crate) name: String,
+    /// How it was built, for pickling.
+    recipe: Recipe,
+}
+
+/// The constructor call that rebuilds an indenter.
+#[derive(Clone)]
+enum Recipe {
+    /// A static method and its numbers.
+    Shape(&'static str, Vec<f64>),
+    /// A height map, read back from the map itself.
+    HeightMap(Arc<lc::indenter::HeightMap>),
+    /// A rough surface, synthesised again from its seed.
+    Rough(RoughSurface),
+    /// `inner.tilted(angle_y, angle_x)`.
+    Tilted(Box<Indenter>, f64, f64),
+}
+
+/// The parameters of `Indenter.rough_surface` and `rough_surface_heights`.
+#[derive(Clone, Copy)]
+struct RoughSurface {
+    hurst: f64,
+    long_cutoff: f64,
+    short_cutoff: f64,
+    seed: u64,
+    cells: usize,
+    spacing: f64,
+    rms_height: Option<f64>,
+    rms_slope: Option<f64>,
+}
+
+/// The most cells along a side of a synthesised surface (as in scenes).
+const MAX_ROUGH_CELLS: usize = 8192;
+
+impl RoughSurface {
+    /// The surface and its grid, checked.
+    fn build(&self) -> PyResult<(lc::topography::SelfAffine, lc::Grid)> {
+        use lc::topography::Amplitude;
+        let amplitude = match (self.rms_height, self.rms_slope) {
+            (Some(h), None) => Amplitude::RmsHeight(h),
+            (None, Some(s)) => Amplitude::RmsSlope(s),
+            _ => {
+                return Err(InvalidInputError::new_err(
+                    "give exactly one of rms_height (m) and rms_slope",
+                ))
+            }
+        };
+        if !(2..=MAX_ROUGH_CELLS).contains(&self.cells) {
+            return Err(InvalidInputError::new_err(format!(
+                "cells must be between 2 and {MAX_ROUGH_CELLS} along a side, got {}",
+                self.cells
+            )));
+        }
+        let grid = lc::Grid::new(self.cells, self.cells, self.spacing).py_err()?;
+        let surface = lc::topography::SelfAffine {
+            hurst: self.hurst,
+            amplitude,
+            long_cutoff: self.long_cutoff,
+            short_cutoff: self.short_cutoff,
+            seed: self.seed,
+        };
+        Ok((surface, grid))
+    }
+
+    /// The arguments of the Python call, in order.
+    fn arguments<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
+        (
+            self.hurst,
+            self.long_cutoff,
+            self.short_cutoff,
+            self.seed,
+            self.cells,
+            self.spacing,
+            self.rms_height,
+            self.rms_slope,
+        )
+            .into_pyobject(py)
+    }
+}
+
+/// The heights (m, `cells x cells`, zero mean, periodic) of the seeded
+/// self-affine surface that `Indenter.rough_surface` and a scene's
+/// `rough_surface` indenter use: Hurst exponent `hurst`, spectrum flat
+/// beyond `long_cutoff` (m) and cut at `short_cutoff` (m, at least two
+/// cells), scaled to `rms_height` (m) or `rms_slope` (give one).
+#[pyfunction]
+#[allow(clippy::too_many_arguments)] // Python keyword arguments
+#[pyo3(signature = (hurst, long_cutoff, short_cutoff, seed, cells, spacing, rms_height=None, rms_slope=None))]
+pub(crate) fn rough_surface_heights(
+    py: Python<'_>,
+    hurst: f64,
+    long_cutoff: f64,
+    short_cutoff: f64,
+    seed: u64,
+    cells: usize,
+    spacing: f64,
+    rms_height: Option<f64>,
+    rms_slope: Option<f64>,
+) -> PyResult<Py<PyArray2<f64>>> {
+    let (surface, grid) = RoughSurface {
+        hurst,
+        long_cutoff,
+        short_cutoff,
+        seed,
+        cells,
+        spacing,
+        rms_height,
+        rms_slope,
+    }
+    .build()?;
+    let heights = py.detach(|| surface.heights(&grid)).py_err()?;
+    let array = ndarray::Array2::from_shape_vec((cells, cells), heights)
+        .map_err(|e| InvalidInputError::new_err(e.to_string()))?;
+    Ok(PyArray2::from_owned_array(py, array).unbind())
 }
 
 /// A shared indenter as a library indenter.
@@ -34,10 +148,15 @@ impl lc::indenter::Indenter for Shared {
 }
 
 impl Indenter {
-    fn new(shape: impl lc::indenter::Indenter + Send + Sync + 'static, name: String) -> Self {
+    fn new(
+        shape: impl lc::indenter::Indenter + Send + Sync + 'static,
+        name: String,
+        recipe: Recipe,
+    ) -> Self {
         Indenter {
             inner: Arc::new(shape),
             name,
+            recipe,
         }
     }
 }
@@ -51,6 +170,7 @@ impl Indenter {
         Ok(Indenter::new(
             shape,
             format!("flat_punch(radius={radius:e})"),
+            Recipe::Shape("flat_punch", vec![radius]),
         ))
     }
 
@@ -58,7 +178,11 @@ impl Indenter {
     #[staticmethod]
     fn sphere(radius: f64) -> PyResult<Self> {
         let shape = lc::indenter::Sphere::new(radius).py_err()?;
-        Ok(Indenter::new(shape, format!("sphere(radius={radius:e})")))
+        Ok(Indenter::new(
+            shape,
+            format!("sphere(radius={radius:e})"),
+            Recipe::Shape("sphere", vec![radius]),
+        ))
     }
 
     /// A paraboloid of tip radius `radius` (m): f = r^2 / (2 R).
@@ -68,6 +192,7 @@ impl Indenter {
         Ok(Indenter::new(
             shape,
             format!("paraboloid(radius={radius:e})"),
+            Recipe::Shape("paraboloid", vec![radius]),
         ))
     }
 
@@ -79,6 +204,7 @@ impl Indenter {
         Ok(Indenter::new(
             shape,
             format!("cone(half_angle={half_angle}, base_radius={base_radius:e})"),
+            Recipe::Shape("cone", vec![half_angle, base_radius]),
         ))
     }
 
@@ -94,10 +220,48 @@ impl Indenter {
         // 16 GB before they were checked.
         let grid = lc::Grid::new(rows, columns, spacing).py_err()?;
         let values: Vec<f64> = heights.as_array().iter().copied().collect();
-        let map = lc::indenter::HeightMap::new(grid, values).py_err()?;
+        let map = Arc::new(lc::indenter::HeightMap::new(grid, values).py_err()?);
+        Ok(Indenter {
+            inner: map.clone(),
+            name: format!("height_map({rows} x {columns}, spacing={spacing:e})"),
+            recipe: Recipe::HeightMap(map),
+        })
+    }
+
+    /// The seeded self-affine surface of `rough_surface_heights` (same
+    /// arguments) as a rigid indenter, turned upside down (`f = max(h) -
+    /// h`: its highest summit touches first, at depth 0), on its own
+    /// `cells x cells` grid: the indenter of a scene's `rough_surface`.
+    #[staticmethod]
+    #[allow(clippy::too_many_arguments)] // Python keyword arguments
+    #[pyo3(signature = (hurst, long_cutoff, short_cutoff, seed, cells, spacing, rms_height=None, rms_slope=None))]
+    fn rough_surface(
+        py: Python<'_>,
+        hurst: f64,
+        long_cutoff: f64,
+        short_cutoff: f64,
+        seed: u64,
+        cells: usize,
+        spacing: f64,
+        rms_height: Option<f64>,
+        rms_slope: Option<f64>,
+    ) -> PyResult<Self> {
+        let recipe = RoughSurface {
+            hurst,
+            long_cutoff,
+            short_cutoff,
+            seed,
+            cells,
+            spacing,
+            rms_height,
+            rms_slope,
+        };
+        let (surface, grid) = recipe.build()?;
+        let map = py.detach(|| surface.indenter(&grid)).py_err()?;
         Ok(Indenter::new(
             map,
-            format!("height_map({rows} x {columns}, spacing={spacing:e})"),
+            format!("rough_surface(hurst={hurst}, seed={seed}, {cells} x {cells})"),
+            Recipe::Rough(recipe),
         ))
     }
 
@@ -109,7 +273,41 @@ impl Indenter {
         Ok(Indenter::new(
             shape,
             format!("{}.tilted({angle_y}, {angle_x})", self.name),
+            Recipe::Tilted(Box::new(self.clone()), angle_y, angle_x),
         ))
+    }
+
+    /// Pickling (multiprocessing, Dask): the constructor and its arguments;
+    /// a height map carries its heights, a rough surface its seed.
+    fn __reduce__<'py>(
+        slf: &Bound<'py, Self>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let py = slf.py();
+        let class = slf.get_type();
+        Ok(match &slf.get().recipe {
+            Recipe::Shape(name, numbers) => (class.getattr(*name)?, PyTuple::new(py, numbers)?),
+            Recipe::HeightMap(map) => {
+                let grid = map.grid();
+                let heights = ndarray::Array2::from_shape_vec(
+                    (grid.rows(), grid.columns()),
+                    map.heights().to_vec(),
+                )
+                .map_err(|e| InvalidInputError::new_err(e.to_string()))?;
+                let heights = PyArray2::from_owned_array(py, heights);
+                (
+                    class.getattr("height_map")?,
+                    (heights, grid.spacing()).into_pyobject(py)?,
+                )
+            }
+            Recipe::Rough(recipe) => (class.getattr("rough_surface")?, recipe.arguments(py)?),
+            Recipe::Tilted(inner, angle_y, angle_x) => {
+                let inner = Bound::new(py, (**inner).clone())?;
+                (
+                    inner.getattr("tilted")?,
+                    (*angle_y, *angle_x).into_pyobject(py)?,
+                )
+            }
+        })
     }
 
     /// The height f(x, y) (m) above the lowest point; `inf` where it cannot

@@ -78,6 +78,53 @@ impl Curve {
         self.phase.len()
     }
 
+    /// Pickling (multiprocessing, Dask): the fields as a dict, read back by
+    /// `_rebuild`.
+    fn __reduce__<'py>(
+        slf: &Bound<'py, Self>,
+    ) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyDict>,))> {
+        let py = slf.py();
+        let c = slf.get();
+        let state = PyDict::new(py);
+        state.set_item("phase", &c.phase)?;
+        state.set_item("depth", &c.depth)?;
+        state.set_item("force", &c.force)?;
+        state.set_item("contact_area", &c.contact_area)?;
+        state.set_item("contact_radius", &c.contact_radius)?;
+        state.set_item("iterations", &c.iterations)?;
+        state.set_item("stiffness", c.stiffness)?;
+        state.set_item("pull_off", &c.pull_off)?;
+        state.set_item("grid", c.grid)?;
+        state.set_item("peak", &c.peak)?;
+        state.set_item("caveats", &c.caveats)?;
+        state.set_item("stresses", &c.stresses)?;
+        Ok((slf.get_type().getattr("_rebuild")?, (state,)))
+    }
+
+    /// The curve whose `__reduce__` gave `state`.
+    #[staticmethod]
+    fn _rebuild(state: &Bound<'_, PyDict>) -> PyResult<Self> {
+        let get = |key: &str| {
+            state
+                .get_item(key)?
+                .ok_or_else(|| InvalidInputError::new_err(format!("a pickled Curve without {key}")))
+        };
+        Ok(Curve {
+            phase: get("phase")?.extract()?,
+            depth: get("depth")?.unbind(),
+            force: get("force")?.unbind(),
+            contact_area: get("contact_area")?.unbind(),
+            contact_radius: get("contact_radius")?.unbind(),
+            iterations: get("iterations")?.extract()?,
+            stiffness: get("stiffness")?.extract()?,
+            pull_off: get("pull_off")?.extract()?,
+            grid: get("grid")?.extract()?,
+            peak: get("peak")?.extract()?,
+            caveats: get("caveats")?.extract()?,
+            stresses: get("stresses")?.extract()?,
+        })
+    }
+
     fn __repr__(&self) -> String {
         let stiffness = self
             .stiffness

@@ -2,6 +2,7 @@
 
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
 
 use layered_contact as lc;
 
@@ -103,6 +104,55 @@ impl Solution {
 
 #[pymethods]
 impl Solution {
+    /// Pickling (multiprocessing, Dask): the fields as a dict, read back by
+    /// `_rebuild` (without warning again about an edge contact).
+    fn __reduce__<'py>(
+        slf: &Bound<'py, Self>,
+    ) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyDict>,))> {
+        let py = slf.py();
+        let s = slf.get();
+        let state = PyDict::new(py);
+        state.set_item("depth", s.depth)?;
+        state.set_item("force", s.force)?;
+        state.set_item("contact_area", s.contact_area)?;
+        state.set_item("contact_radius", s.contact_radius)?;
+        state.set_item("contact_cells", s.contact_cells)?;
+        state.set_item("edge_contact", s.edge_contact)?;
+        state.set_item("iterations", s.iterations)?;
+        state.set_item("residual", s.residual)?;
+        state.set_item("pressure", &s.pressure)?;
+        state.set_item("displacement", &s.displacement)?;
+        state.set_item("gap", &s.gap)?;
+        state.set_item("x", &s.x)?;
+        state.set_item("y", &s.y)?;
+        Ok((slf.get_type().getattr("_rebuild")?, (state,)))
+    }
+
+    /// The solution whose `__reduce__` gave `state`.
+    #[staticmethod]
+    fn _rebuild(state: &Bound<'_, PyDict>) -> PyResult<Self> {
+        let get = |key: &str| {
+            state.get_item(key)?.ok_or_else(|| {
+                InvalidInputError::new_err(format!("a pickled Solution without {key}"))
+            })
+        };
+        Ok(Solution {
+            depth: get("depth")?.extract()?,
+            force: get("force")?.extract()?,
+            contact_area: get("contact_area")?.extract()?,
+            contact_radius: get("contact_radius")?.extract()?,
+            contact_cells: get("contact_cells")?.extract()?,
+            edge_contact: get("edge_contact")?.extract()?,
+            iterations: get("iterations")?.extract()?,
+            residual: get("residual")?.extract()?,
+            pressure: get("pressure")?.extract()?,
+            displacement: get("displacement")?.extract()?,
+            gap: get("gap")?.extract()?,
+            x: get("x")?.unbind(),
+            y: get("y")?.unbind(),
+        })
+    }
+
     fn __repr__(&self) -> String {
         format!(
             "Solution(depth={:e}, force={:e}, contact_radius={:e}, iterations={})",

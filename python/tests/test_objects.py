@@ -94,3 +94,92 @@ def test_a_curve_as_a_table_and_as_csv(tmp_path):
     assert [float(r[1]) for r in rows[1:]] == list(curve.depth)
     assert [r[0] for r in rows[1:]] == list(curve.phase)
     assert [int(r[5]) for r in rows[1:]] == list(curve.iterations)
+
+
+def test_curves_and_their_fields_survive_pickling():
+    # An adhesive cycle with the peak's fields and the stresses below it:
+    # every array, dict and number comes back equal to the last bit.
+    import numpy as np
+
+    scene = {
+        "substrate": {"kind": "layer_on_rigid_base", "youngs_modulus": 1e6, "poisson_ratio": 0.48,
+                      "thickness": 1e-3},
+        "indenter": {"kind": "paraboloid", "radius": 0.01},
+        "adhesion": {"kind": "constant", "work_of_adhesion": 0.05},
+        "protocol": {"kind": "cycle", "max_depth": 2e-6, "steps": 4},
+        "resolution": {"cells_across": 16},
+        "outputs": {"fields": {"pressure": True, "gap": True}, "stresses": {"depths": [1e-5]}},
+    }
+    curve = lc.run_scene(scene)
+    copy = pickle.loads(pickle.dumps(curve))
+    assert repr(copy) == repr(curve) and len(copy) == len(curve)
+    for name in ("depth", "force", "contact_area", "contact_radius"):
+        np.testing.assert_array_equal(getattr(copy, name), getattr(curve, name))
+    for name in ("phase", "iterations", "stiffness", "pull_off", "grid", "caveats"):
+        assert getattr(copy, name) == getattr(curve, name)
+    assert curve.pull_off["force"] < 0
+    np.testing.assert_array_equal(copy.peak.pressure, curve.peak.pressure)
+    np.testing.assert_array_equal(copy.peak.gap, curve.peak.gap)
+    assert copy.peak.displacement is None and copy.peak.force == curve.peak.force
+    assert repr(copy.peak) == repr(curve.peak)
+    np.testing.assert_array_equal(copy.stresses["von_mises"], curve.stresses["von_mises"])
+
+
+def test_indenters_survive_pickling():
+    # Each kind, tilted twice included, has the same heights after the
+    # round trip, to the last bit, and prints the same.
+    import numpy as np
+
+    x, y = np.meshgrid(np.linspace(-4e-4, 4e-4, 9), np.linspace(-3e-4, 3e-4, 7))
+    heights = np.add.outer(np.linspace(0.0, 1e-6, 8), np.linspace(0.0, 2e-6, 6)) ** 1.5
+    indenters = [
+        lc.Indenter.flat_punch(5e-4),
+        lc.Indenter.sphere(1e-3),
+        lc.Indenter.paraboloid(1e-3),
+        lc.Indenter.cone(1.2, 5e-4),
+        lc.Indenter.height_map(heights, 1e-4),
+        lc.Indenter.rough_surface(0.8, 4e-4, 4e-5, 7, 16, 1e-5, rms_height=1e-7),
+        lc.Indenter.paraboloid(1e-3).tilted(0.01, -0.02).tilted(0.0, 0.03),
+    ]
+    for indenter in indenters:
+        copy = pickle.loads(pickle.dumps(indenter))
+        assert repr(copy) == repr(indenter)
+        np.testing.assert_array_equal(copy.height(x, y), indenter.height(x, y))
+        assert copy.bounding_radius == indenter.bounding_radius
+
+
+def test_rough_surfaces_are_the_scenes_own():
+    # The heights have the asked rms and zero mean; the indenter is the
+    # surface upside down; and a scene's rough_surface indenter is the same
+    # surface: the same solve on the same grid gives the same force.
+    import numpy as np
+    import pytest
+
+    args = dict(hurst=0.8, long_cutoff=3.2e-4, short_cutoff=4e-5, seed=11, cells=32, spacing=1e-5)
+    h = lc.rough_surface_heights(**args, rms_height=2e-7)
+    assert h.shape == (32, 32)
+    assert np.sqrt(np.mean(h**2)) == pytest.approx(2e-7, rel=1e-12)
+    assert abs(h.mean()) < 1e-15 * 2e-7 * h.size
+    again = lc.rough_surface_heights(**args, rms_height=2e-7)
+    np.testing.assert_array_equal(again, h)
+    other = lc.rough_surface_heights(**dict(args, seed=12), rms_height=2e-7)
+    assert np.abs(other - h).max() > 1e-8
+    indenter = lc.Indenter.rough_surface(**args, rms_height=2e-7)
+    centres = (np.arange(32) + 0.5 - 16) * 1e-5
+    x, y = np.meshgrid(centres, centres, indexing="ij")
+    np.testing.assert_allclose(indenter.height(x, y), h.max() - h, rtol=0, atol=1e-22)
+    scene = {
+        "substrate": {"kind": "half_space", "youngs_modulus": 1e6, "poisson_ratio": 0.5},
+        "indenter": dict(kind="rough_surface", amplitude={"rms_height": 2e-7}, **args),
+        "protocol": {"kind": "depth", "depth": 2e-7},
+        "boundary": "periodic",
+    }
+    curve = lc.run_scene(scene)
+    solver = lc.ContactSolver(lc.Substrate.half_space(lc.Material(1e6, 0.5)), 32, 32, 1e-5, periodic=True)
+    assert solver.solve_depth(indenter, 2e-7).force == pytest.approx(curve.force[0], rel=1e-9)
+    with pytest.raises(lc.InvalidInputError, match="exactly one"):
+        lc.rough_surface_heights(**args, rms_height=1e-7, rms_slope=0.1)
+    with pytest.raises(lc.InvalidInputError, match="exactly one"):
+        lc.Indenter.rough_surface(**args)
+    with pytest.raises(lc.InvalidInputError, match="cells"):
+        lc.rough_surface_heights(**dict(args, cells=1), rms_slope=0.1)

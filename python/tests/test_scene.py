@@ -131,3 +131,27 @@ def test_a_mistake_in_a_dict_names_its_key_path():
     ]
     with pytest.raises(lc.InvalidInputError, match=r"key `substrate\.layers\[1\]\.thickness`"):
         lc.check_scene(dict(PUNCH, substrate={"kind": "stack", "layers": layers}))
+
+
+def test_plot_curve_draws_both_phases_and_the_pull_off():
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    import numpy as np
+
+    scene = {
+        "substrate": {"kind": "half_space", "youngs_modulus": 1e6, "poisson_ratio": 0.5},
+        "indenter": {"kind": "paraboloid", "radius": 0.01},
+        "adhesion": {"kind": "constant", "work_of_adhesion": 0.05},
+        "protocol": {"kind": "cycle", "max_depth": 2e-6, "steps": 5},
+        "resolution": {"cells_across": 16},
+    }
+    curve = lc.run_scene(scene)
+    ax = lc.plot_curve(curve)
+    lines = {line.get_label(): line for line in ax.get_lines()}
+    phase = np.asarray(curve.phase)
+    for name in ("loading", "unloading"):
+        x, y = lines[name].get_data()
+        np.testing.assert_array_equal(x, np.asarray(curve.depth)[phase == name] / 1e-6)
+        np.testing.assert_array_equal(y, np.asarray(curve.force)[phase == name])
+    marker = next(line for label, line in lines.items() if label.startswith("pull-off"))
+    assert marker.get_ydata()[0] == curve.pull_off["force"] < 0

@@ -25,7 +25,7 @@ import os
 from typing import Any, Callable, Mapping, Optional, Union
 
 from . import analytic
-from ._native import subsurface_stress
+from ._native import rough_surface_heights, subsurface_stress
 from .stress import plot_section
 from ._native import (
     ConvergenceError,
@@ -63,7 +63,9 @@ __all__ = [
     "curve_table",
     "curve_to_dict",
     "edge_release",
+    "plot_curve",
     "plot_section",
+    "rough_surface_heights",
     "run_scene",
     "scene_reference",
     "scene_schema",
@@ -178,8 +180,38 @@ def write_curve_csv(curve: Curve, path: "os.PathLike[str] | str") -> None:
             writer.writerow([v if isinstance(v, (str, int)) else repr(float(v)) for v in row])
 
 
+def plot_curve(curve: Curve, ax: Any = None, unit: float = 1e-6) -> Any:
+    """Force against depth, the loading and unloading phases in their own
+    colours and the pull-off marked (matplotlib, an optional dependency).
+    Depths are plotted in ``unit`` metres (micrometres by default), forces
+    in newtons. Returns the axes."""
+    import matplotlib.pyplot as plt
+
+    import numpy as np
+
+    if ax is None:
+        _, ax = plt.subplots()
+    phase = np.asarray(curve.phase)
+    depth = np.asarray(curve.depth) / unit
+    force = np.asarray(curve.force)
+    for name in ("loading", "unloading"):
+        chosen = phase == name
+        if chosen.any():
+            ax.plot(depth[chosen], force[chosen], ".-", label=name)
+    if curve.pull_off is not None:
+        ax.plot(curve.pull_off["depth"] / unit, curve.pull_off["force"], "kx", ms=9,
+                label=f"pull-off {curve.pull_off['force']:.4g} N")
+    ax.axhline(0.0, color="0.6", lw=0.8)
+    ax.set_xlabel(f"depth [{unit:g} m]")
+    ax.set_ylabel("force [N]")
+    ax.set_title(repr(curve), fontsize=9)
+    ax.legend()
+    return ax
+
+
 def curve_to_dict(curve: Curve) -> dict:
-    """A curve as plain Python and NumPy values (picklable, for sweeps)."""
+    """A curve as plain Python and NumPy values (for sweeps that want no
+    ``layered_contact`` objects; a ``Curve`` itself pickles too)."""
     return {
         "phase": list(curve.phase),
         "depth": curve.depth,

@@ -1,17 +1,54 @@
 """Type stubs of the compiled extension (see the Rust sources in python/rust/lib.rs)."""
 
-from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, final
+
+from typing_extensions import Self
 
 import numpy as np
 import numpy.typing as npt
+
+__all__ = [
+    "ContactSolver",
+    "ConvergenceError",
+    "Curve",
+    "EdgeContactWarning",
+    "ForceCurve",
+    "Indenter",
+    "InvalidInputError",
+    "LayeredContactError",
+    "Material",
+    "ModulusFamily",
+    "Solution",
+    "Substrate",
+    "before_jump_off",
+    "check_scene",
+    "edge_release",
+    "flat_punch_pull_off_force",
+    "flat_punch_stiffness",
+    "hertz_contact_radius",
+    "hertz_force",
+    "jkr_pull_off_force",
+    "jkr_sinusoid_pull_off",
+    "jkr_state",
+    "paraboloid_pull_off_force",
+    "paraboloid_series",
+    "paraboloid_state",
+    "rough_surface_heights",
+    "run_scene",
+    "scene_reference",
+    "scene_schema",
+    "subsurface_stress",
+    "tip_pull_off",
+]
 
 class LayeredContactError(Exception): ...
 class InvalidInputError(LayeredContactError): ...
 class ConvergenceError(LayeredContactError): ...
 class EdgeContactWarning(UserWarning): ...
 
+@final
 class Material:
-    def __init__(self, youngs_modulus: float, poisson_ratio: float) -> None: ...
+    def __new__(cls, youngs_modulus: float, poisson_ratio: float) -> Self: ...
     @property
     def youngs_modulus(self) -> float: ...
     @property
@@ -19,6 +56,7 @@ class Material:
     @property
     def contact_modulus(self) -> float: ...
 
+@final
 class Substrate:
     @staticmethod
     def half_space(material: Material) -> Substrate: ...
@@ -41,6 +79,7 @@ class Substrate:
     @property
     def total_thickness(self) -> float | None: ...
 
+@final
 class Indenter:
     @staticmethod
     def flat_punch(radius: float) -> Indenter: ...
@@ -52,13 +91,26 @@ class Indenter:
     def cone(half_angle: float, base_radius: float) -> Indenter: ...
     @staticmethod
     def height_map(heights: npt.NDArray[np.float64], spacing: float) -> Indenter: ...
+    @staticmethod
+    def rough_surface(
+        hurst: float,
+        long_cutoff: float,
+        short_cutoff: float,
+        seed: int,
+        cells: int,
+        spacing: float,
+        rms_height: Optional[float] = None,
+        rms_slope: Optional[float] = None,
+    ) -> Indenter: ...
     def tilted(self, angle_y: float, angle_x: float) -> Indenter: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
     def height(
         self, x: npt.NDArray[np.float64], y: npt.NDArray[np.float64]
     ) -> npt.NDArray[np.float64]: ...
     @property
     def bounding_radius(self) -> float: ...
 
+@final
 class Solution:
     depth: float
     force: float
@@ -74,9 +126,10 @@ class Solution:
     x: npt.NDArray[np.float64]
     y: npt.NDArray[np.float64]
 
+@final
 class ContactSolver:
-    def __init__(
-        self,
+    def __new__(
+        cls,
         substrate: Substrate,
         rows: int,
         columns: int,
@@ -84,12 +137,13 @@ class ContactSolver:
         periodic: bool = False,
         tolerance: float = 1e-8,
         max_iterations: int = 10000,
-    ) -> None: ...
+    ) -> Self: ...
     def solve_depth(self, indenter: Indenter, depth: float, warm_start: bool = False) -> Solution: ...
     def solve_force(self, indenter: Indenter, force: float, warm_start: bool = False) -> Solution: ...
     @property
     def grid(self) -> Tuple[int, int, float]: ...
 
+@final
 class Curve:
     phase: list[str]
     depth: npt.NDArray[np.float64]
@@ -108,6 +162,16 @@ class Curve:
 def run_scene(
     scene: Any, progress: Optional[Callable[[dict], None]] = None, indenter: Optional[Indenter] = None
 ) -> Curve: ...
+def rough_surface_heights(
+    hurst: float,
+    long_cutoff: float,
+    short_cutoff: float,
+    seed: int,
+    cells: int,
+    spacing: float,
+    rms_height: Optional[float] = None,
+    rms_slope: Optional[float] = None,
+) -> npt.NDArray[np.float64]: ...
 def subsurface_stress(
     substrate: Substrate,
     pressure: npt.NDArray[np.float64],
@@ -137,7 +201,7 @@ def edge_release(
     indenter: Indenter,
     depth: float,
     contact: npt.NDArray[np.bool_],
-    window: float = 8.0,
+    window: float = ...,
 ) -> dict: ...
 def flat_punch_stiffness(substrate: Substrate, radius: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]: ...
 def paraboloid_pull_off_force(substrate: Substrate, radius: float, work_of_adhesion: float) -> float: ...
@@ -150,9 +214,10 @@ def before_jump_off(
     position: npt.NDArray[np.float64], force: npt.NDArray[np.float64]
 ) -> npt.NDArray[np.bool_]: ...
 
+@final
 class ModulusFamily:
-    def __init__(
-        self,
+    def __new__(
+        cls,
         substrate: Substrate,
         kind: str,
         radius: float,
@@ -160,15 +225,16 @@ class ModulusFamily:
         youngs_range: Tuple[float, float],
         nodes: int = 12,
         half_angle: float = ...,
-    ) -> None: ...
+    ) -> Self: ...
     def forces(self, depth: npt.NDArray[np.float64], youngs_modulus: float) -> npt.NDArray[np.float64]: ...
     @property
     def youngs_range(self) -> Tuple[float, float]: ...
 
+@final
 class ForceCurve:
-    def __init__(
-        self, substrate: Substrate, kind: str, radius: float, max_depth: float, half_angle: float = ...
-    ) -> None: ...
+    def __new__(
+        cls, substrate: Substrate, kind: str, radius: float, max_depth: float, half_angle: float = ...
+    ) -> Self: ...
     def forces(
         self, depth: npt.NDArray[np.float64], modulus_ratio: float = 1.0, work_of_adhesion: float = 0.0
     ) -> npt.NDArray[np.float64]: ...
