@@ -200,7 +200,7 @@ mod tests {
 
     /// Whether `m` has no prime factor above 7, by trial division.
     fn smooth(m: usize) -> bool {
-        (2..=m).all(|p| m % p != 0 || p <= 7 || (2..p).any(|d| p % d == 0))
+        (2..=m).all(|p| !m.is_multiple_of(p) || p <= 7 || (2..p).any(|d| p % d == 0))
     }
 
     /// Against a brute-force search: the least admissible size at or above

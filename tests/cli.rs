@@ -147,6 +147,36 @@ fn run_writes_curve_fields_and_plot() {
 
     let svg = std::fs::read_to_string(result.join("curve.svg")).unwrap();
     assert!(svg.starts_with("<svg") && svg.contains("<polyline"));
+    // Its texts: a title naming the scene, SI-prefixed axes, the exact
+    // values beside the BEM's, and tick labels without exponents.
+    let texts: Vec<&str> = svg
+        .split("<text")
+        .skip(1)
+        .filter_map(|t| {
+            t.split_once('>')
+                .and_then(|(_, rest)| rest.split_once("</text>"))
+        })
+        .map(|(text, _)| text.trim())
+        .collect();
+    let title = format!(
+        "flat punch on half space: {} steps on a {} x {} grid",
+        curve.steps.len(),
+        grid.rows(),
+        grid.columns()
+    );
+    for wanted in [
+        title.as_str(),
+        "depth d [um]",
+        "force F [mN]",
+        "loading (BEM)",
+        "exact stiffness",
+        "exact peak force",
+    ] {
+        assert!(texts.contains(&wanted), "{wanted:?} not in {texts:?}");
+    }
+    let ticks: Vec<f64> = texts.iter().filter_map(|t| t.parse().ok()).collect();
+    assert!(ticks.len() >= 8, "{texts:?}");
+    assert!(texts.iter().all(|t| !t.contains("e-")), "{texts:?}");
 
     // Not a terminal: one plain line per step.
     let progress = text(&out.stderr);

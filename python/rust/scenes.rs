@@ -143,16 +143,20 @@ pub(crate) fn array(py: Python<'_>, values: Vec<f64>) -> Py<PyAny> {
 }
 
 /// Runs a scene (a dict or a TOML/JSON file path), calling
-/// `progress(step_dict)` after each step; `indenter` replaces the scene's
-/// indenter by any `Indenter` (sized from its bounding radius). Releases
-/// the GIL while solving.
+/// `progress(step_dict)` after each step and `iteration(dict)` (keys
+/// `iteration`, `residual`, `contact_cells`) for every iteration of the
+/// inner solves, or, with the energy-balance adhesion, once per contact set
+/// of its family, before the steps (which then come at once); `indenter`
+/// replaces the scene's indenter by any `Indenter` (sized from its bounding
+/// radius). Releases the GIL while solving.
 #[pyfunction]
-#[pyo3(signature = (scene, progress=None, indenter=None))]
+#[pyo3(signature = (scene, progress=None, indenter=None, iteration=None))]
 pub(crate) fn run_scene(
     py: Python<'_>,
     scene: &Bound<'_, PyAny>,
     progress: Option<Py<PyAny>>,
     indenter: Option<&Indenter>,
+    iteration: Option<Py<PyAny>>,
 ) -> PyResult<Curve> {
     let mut scene = read_scene(py, scene)?;
     if let Some(shape) = indenter {
@@ -188,23 +192,48 @@ pub(crate) fn run_scene(
     let curve = py.detach(|| {
         let mut solver = scene.solver()?;
         solver.set_interrupt(Some(interrupt));
-        scene.run_on(&mut solver, &mut |step| {
+        let mut observe = |info: &lc::solver::IterationInfo| {
+            let Some(callback) = &iteration else {
+                return;
+            };
             let mut raised = raised.lock().unwrap_or_else(|e| e.into_inner());
             if raised.is_some() {
                 return;
             }
             Python::attach(|py| {
-                let outcome = py.check_signals().and_then(|()| match &progress {
-                    Some(callback) => step_dict(py, step)
-                        .and_then(|d| callback.call1(py, (d,)))
-                        .map(|_| ()),
-                    None => Ok(()),
-                });
+                let d = PyDict::new(py);
+                let outcome = d
+                    .set_item("iteration", info.iteration)
+                    .and_then(|()| d.set_item("residual", info.residual))
+                    .and_then(|()| d.set_item("contact_cells", info.contact_cells))
+                    .and_then(|()| callback.call1(py, (d,)))
+                    .map(|_| ());
                 if let Err(e) = outcome {
                     *raised = Some(e);
                 }
             });
-        })
+        };
+        scene.run_observed(
+            &mut solver,
+            &mut |step| {
+                let mut raised = raised.lock().unwrap_or_else(|e| e.into_inner());
+                if raised.is_some() {
+                    return;
+                }
+                Python::attach(|py| {
+                    let outcome = py.check_signals().and_then(|()| match &progress {
+                        Some(callback) => step_dict(py, step)
+                            .and_then(|d| callback.call1(py, (d,)))
+                            .map(|_| ()),
+                        None => Ok(()),
+                    });
+                    if let Err(e) = outcome {
+                        *raised = Some(e);
+                    }
+                });
+            },
+            &mut observe,
+        )
     });
     if let Some(e) = raised.lock().unwrap_or_else(|e| e.into_inner()).take() {
         return Err(e);

@@ -155,3 +155,41 @@ def test_plot_curve_draws_both_phases_and_the_pull_off():
         np.testing.assert_array_equal(y, np.asarray(curve.force)[phase == name])
     marker = next(line for label, line in lines.items() if label.startswith("pull-off"))
     assert marker.get_ydata()[0] == curve.pull_off["force"] < 0
+
+
+def test_iteration_reports_come_before_the_steps_of_an_adhesive_run():
+    # The energy balance reports each contact set of its family as it is
+    # solved, all before the first step;
+    # a step-by-step run reports every CG iteration, those of the coarser
+    # grids of its cold starts included (so at least the steps' own).
+    scene = {
+        "substrate": {"kind": "half_space", "youngs_modulus": 1e6, "poisson_ratio": 0.5},
+        "indenter": {"kind": "paraboloid", "radius": 0.01},
+        "protocol": {"kind": "cycle", "max_depth": 2e-6, "steps": 3},
+        "resolution": {"cells_across": 32},
+    }
+    events = []
+    curve = lc.run_scene(scene, progress=lambda s: events.append(("step", s)),
+                         iteration=lambda i: events.append(("set", i)))
+    assert sum(1 for kind, _ in events if kind == "set") >= sum(curve.iterations) > 0
+    events = []
+    adhesive = dict(scene, adhesion={"kind": "constant", "work_of_adhesion": 0.05})
+    curve = lc.run_scene(adhesive, progress=lambda s: events.append(("step", s)),
+                         iteration=lambda i: events.append(("set", i)))
+    sets = [info for kind, info in events if kind == "set"]
+    assert len(sets) >= 10 and len(events) == len(sets) + len(curve)
+    assert all(kind == "set" for kind, _ in events[: len(sets)])
+    # Counted from 1 in each family built (a family widened to reach the
+    # load is built again), each from its largest set down.
+    for a, b in zip(sets, sets[1:]):
+        if b["iteration"] != 1:
+            assert b["iteration"] == a["iteration"] + 1
+            assert b["contact_cells"] < a["contact_cells"]
+    assert sets[0]["iteration"] == 1
+    assert max(s["residual"] for s in sets) < 1e-7
+
+    def stop(info):
+        raise RuntimeError("stop at the first set")
+
+    with pytest.raises(RuntimeError, match="first set"):
+        lc.run_scene(adhesive, iteration=stop)

@@ -131,7 +131,7 @@ pub fn a_m_of(m: u32, functions: &CoatingFunctions) -> Result<f64> {
         part = rule.integrate(start, start + PANEL_WIDTH, integrand);
         sum += part;
         if start > peak && part.abs() <= 1e-17 * sum.abs() {
-            let sign = if m % 2 == 0 { 1.0 } else { -1.0 };
+            let sign = if m.is_multiple_of(2) { 1.0 } else { -1.0 };
             return Ok(sign * sum);
         }
     }

@@ -263,7 +263,7 @@ impl Convolution {
     /// columns are the output.
     fn inverse_rows(&mut self, output: &mut [f64]) -> Result<()> {
         let (rows, columns, half) = (self.rows, self.columns, self.size.1 / 2 + 1);
-        let even = self.size.1 % 2 == 0;
+        let even = self.size.1.is_multiple_of(2);
         let per_task = self.rows_per_task;
         let block = self.block;
         let fft = &self.row_inverse;

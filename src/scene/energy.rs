@@ -4,7 +4,7 @@
 
 use crate::error::{Error, Result};
 use crate::indenter::Indenter;
-use crate::solver::{AdhesiveBranches, BranchPoint, ContactSolver, Reach, SolverParams};
+use crate::solver::{AdhesiveBranches, BranchPoint, ContactSolver, Observer, Reach, SolverParams};
 
 use super::runner::Outcome;
 use super::{Caveat, Curve, Phase, Protocol, Scene, Step, MAX_PROTOCOL_STEPS, MAX_PULL_DEPTHS};
@@ -16,6 +16,7 @@ pub(super) fn run(
     indenter: &(dyn Indenter + Send + Sync),
     (advancing, receding): (f64, f64),
     progress: &mut dyn FnMut(&Step),
+    observer: &mut dyn Observer,
 ) -> Result<Outcome> {
     let reach = match scene.protocol {
         Protocol::Depth { depth } => Reach::Depth(depth),
@@ -42,7 +43,7 @@ pub(super) fn run(
             return Ok(done(solver, recorder.steps, None, false));
         }
     }
-    let branches = match solver.adhesive_branches(indenter, reach, advancing, receding, &mut ()) {
+    let branches = match solver.adhesive_branches(indenter, reach, advancing, receding, observer) {
         Err(Error::ContactReachesEdge { .. }) => return Ok(Outcome::ReachedEdge),
         other => other?,
     };

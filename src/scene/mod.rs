@@ -57,7 +57,7 @@ pub use stresses::{DepthGrid, StressOutputs, SubsurfaceResult, MAX_STRESS_PLANES
 
 use crate::error::{positive_finite, Error, Result};
 use crate::grid::{Boundary, Grid};
-use crate::solver::{ContactSolver, Fields, SolverParams};
+use crate::solver::{ContactSolver, Fields, Observer, SolverParams};
 
 use crate::grid::fft_friendly;
 use runner::{Outcome, Runner};
@@ -212,8 +212,8 @@ pub struct SolverSettings {
 pub enum AdhesionMethod {
     /// The energy (Griffith) balance over the contact edge along a family of
     /// contact sets ([`ContactSolver::adhesive_branches`]): a sphere's
-    /// pull-off within 0.25 % of exact JKR from 16 cells across its pull-off
-    /// contact and within 0.07 % from 64 (half-space and layers),
+    /// pull-off against exact JKR at each resolution is tabulated in
+    /// [`doc::accuracy`](crate::doc::accuracy) (half-space and layers),
     /// displacement or force control, a whole cycle for the price of one
     /// family. The edge-averaged balance: exact for axisymmetric contacts
     /// and for wavy surfaces on periodic grids (strips, at first order in
@@ -431,6 +431,55 @@ impl Scene {
         solver: &mut ContactSolver,
         progress: &mut dyn FnMut(&Step),
     ) -> Result<Curve> {
+        self.run_observed(solver, progress, &mut ())
+    }
+
+    /// As [`Scene::run_on`], with `observer` seeing the inner solves as they
+    /// go: every iteration of the step-by-step solves, and for the energy
+    /// balance, whose steps all come at once after it has built its family
+    /// of contact sets, one report per set of that family
+    /// ([`IterationInfo::iteration`](crate::solver::IterationInfo::iteration)
+    /// counts the sets from the largest down, again from 1 when a family is
+    /// widened to reach the load; `contact_cells` is the set's size), so
+    /// that a front-end can show progress before the first step. The
+    /// step-by-step solves report every conjugate-gradient iteration, those
+    /// of the coarser grids of a cold start included.
+    ///
+    /// ```
+    /// use std::cell::Cell;
+    ///
+    /// use layered_contact::scene::{Adhesion, IndenterSpec, Protocol, Scene};
+    /// use layered_contact::solver::IterationInfo;
+    ///
+    /// let scene = Scene {
+    ///     indenter: IndenterSpec::Paraboloid { radius: 0.01 },
+    ///     adhesion: Adhesion::Constant { work_of_adhesion: 0.05 },
+    ///     protocol: Protocol::Cycle { max_depth: 2e-6, steps: 3 },
+    ///     ..Scene::default()
+    /// };
+    /// let (sets, steps) = (Cell::new(0), Cell::new(0));
+    /// let mut solver = scene.solver()?;
+    /// let curve = scene.run_observed(
+    ///     &mut solver,
+    ///     &mut |_| steps.set(steps.get() + 1),
+    ///     // Every set is reported before the first step.
+    ///     &mut |_: &IterationInfo| {
+    ///         assert_eq!(steps.get(), 0);
+    ///         sets.set(sets.get() + 1);
+    ///     },
+    /// )?;
+    /// assert!(sets.get() >= 10 && steps.get() == curve.steps.len());
+    /// Ok::<(), layered_contact::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`Scene::run`].
+    pub fn run_observed(
+        &self,
+        solver: &mut ContactSolver,
+        progress: &mut dyn FnMut(&Step),
+        observer: &mut dyn Observer,
+    ) -> Result<Curve> {
         self.validate_settings()?;
         let indenter = self.indenter.build(self.tilt)?;
         let mut grown: Option<ContactSolver> = None;
@@ -438,9 +487,9 @@ impl Scene {
             let active = grown.as_mut().unwrap_or(&mut *solver);
             let outcome = match (self.adhesion.works(), self.solver.adhesion_method) {
                 (Some(works), AdhesionMethod::EnergyBalance) => {
-                    energy::run(self, active, &*indenter, works, progress)?
+                    energy::run(self, active, &*indenter, works, progress, observer)?
                 }
-                _ => Runner::new(self, active, &indenter).run(progress)?,
+                _ => Runner::new(self, active, &indenter, observer).run(progress)?,
             };
             match outcome {
                 Outcome::Done(mut curve) => {

@@ -4,7 +4,7 @@
 use crate::error::{Error, Result};
 use crate::grid::Boundary;
 use crate::indenter::Indenter;
-use crate::solver::{ContactSolver, Fields, Solution, SolverParams, WarmStart};
+use crate::solver::{ContactSolver, Fields, Observer, Solution, SolverParams, WarmStart};
 
 use super::{Curve, IndenterSpec, Phase, Protocol, Scene, Step, MAX_PULL_DEPTHS};
 
@@ -21,6 +21,8 @@ pub(super) struct Runner<'a> {
     scene: &'a Scene,
     solver: &'a mut ContactSolver,
     indenter: &'a dyn Indenter,
+    /// Sees every iteration of the solves.
+    observer: &'a mut dyn Observer,
     steps: Vec<Step>,
     peak: Option<Solution>,
     warm: Option<WarmStart>,
@@ -33,11 +35,13 @@ impl<'a> Runner<'a> {
         scene: &'a Scene,
         solver: &'a mut ContactSolver,
         indenter: &'a (dyn Indenter + Send + Sync),
+        observer: &'a mut dyn Observer,
     ) -> Self {
         Runner {
             scene,
             solver,
             indenter,
+            observer,
             steps: Vec::new(),
             peak: None,
             warm: None,
@@ -52,24 +56,30 @@ impl<'a> Runner<'a> {
     /// against the unloading work of adhesion, in either phase.
     fn solve(&mut self, control: Control) -> Result<Solution> {
         let warm = self.warm.as_ref();
-        let (solution, warm) =
-            match (control, self.scene.adhesion.works()) {
-                (Control::Depth(d), None) => {
-                    self.solver.solve_depth(self.indenter, d, warm, &mut ())?
-                }
-                (Control::Force(f), None) => {
-                    self.solver.solve_force(self.indenter, f, warm, &mut ())?
-                }
-                (Control::Depth(d), Some((loading, unloading))) => self
-                    .solver
-                    .solve_depth_hysteretic(self.indenter, d, loading, unloading, warm, &mut ())?,
-                (Control::Force(_), Some(_)) => {
-                    return Err(Error::Unsupported {
-                        feature: "force control with the mesh-dependent adhesion criterion",
-                        reason: "use the energy-balance method (the default)",
-                    })
-                }
-            };
+        let (solution, warm) = match (control, self.scene.adhesion.works()) {
+            (Control::Depth(d), None) => {
+                self.solver
+                    .solve_depth(self.indenter, d, warm, self.observer)?
+            }
+            (Control::Force(f), None) => {
+                self.solver
+                    .solve_force(self.indenter, f, warm, self.observer)?
+            }
+            (Control::Depth(d), Some((loading, unloading))) => self.solver.solve_depth_hysteretic(
+                self.indenter,
+                d,
+                loading,
+                unloading,
+                warm,
+                self.observer,
+            )?,
+            (Control::Force(_), Some(_)) => {
+                return Err(Error::Unsupported {
+                    feature: "force control with the mesh-dependent adhesion criterion",
+                    reason: "use the energy-balance method (the default)",
+                })
+            }
+        };
         self.warm = Some(warm);
         Ok(solution)
     }

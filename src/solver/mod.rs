@@ -13,8 +13,8 @@
 //!   by the energy balance over the contact edge, along a family of contact
 //!   sets; the [`AdhesiveBranches`] it returns answer any depth or force,
 //!   loading or unloading, with adhesion hysteresis, and locate the pull-off
-//!   (the default method of scenes; within 0.5 % of exact JKR at 16 cells
-//!   across the pull-off contact);
+//!   (the default method of scenes; its accuracy against exact JKR is
+//!   tabulated in [`doc::accuracy`](crate::doc::accuracy));
 //! * [`ContactSolver::solve_depth_adhesive`] and
 //!   [`ContactSolver::solve_depth_hysteretic`]: adhesive contact in the JKR
 //!   limit with the mesh-dependent criterion of Pohrt & Popov (2015, Facta

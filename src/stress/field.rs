@@ -329,8 +329,12 @@ impl SubsurfaceStress {
         let (bins, cosines) = (&self.bins, &self.cosines);
         let rows = self.fft.rows();
         let columns = self.fft.columns();
-        let nyquist_row = if rows % 2 == 0 { rows / 2 } else { usize::MAX };
-        let nyquist_column = if columns % 2 == 0 {
+        let nyquist_row = if rows.is_multiple_of(2) {
+            rows / 2
+        } else {
+            usize::MAX
+        };
+        let nyquist_column = if columns.is_multiple_of(2) {
             self.fft.half() - 1
         } else {
             usize::MAX

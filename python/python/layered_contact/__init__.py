@@ -107,18 +107,24 @@ def run_scene(
     scene: SceneLike,
     progress: Optional[Callable[[dict], None]] = None,
     indenter: Optional[Indenter] = None,
+    iteration: Optional[Callable[[dict], None]] = None,
 ) -> Curve:
     """Run a scene: a dict with the structure of a scene file, or the path
     of a TOML or JSON scene file (height-map paths relative to it).
 
     ``progress(step)`` is called after each step with a dict (``phase``,
-    ``depth``, ``force``, ``contact_area``, ``contact_radius``,
-    ``iterations``); an exception it raises (or Ctrl-C) stops reporting and
-    is raised when the run returns. ``indenter`` replaces the scene's
-    indenter by any :class:`Indenter`; the grid then spans its bounding
-    radius with ``resolution.cells_across`` cells across its diameter.
+    ``depth`` m, ``force`` N, ``contact_area`` m^2, ``contact_radius`` m,
+    ``iterations``). ``iteration(info)`` is called with a dict
+    (``iteration``, ``residual``, ``contact_cells``) for every iteration of
+    the inner solves; with the energy-balance adhesion (the default) once
+    per contact set of the family it builds before any step (the steps then
+    come at once), so that progress shows during that build. An exception
+    either raises (or Ctrl-C) stops reporting and is raised when the run
+    returns. ``indenter`` replaces the scene's indenter by any
+    :class:`Indenter`; the grid then spans its bounding radius with
+    ``resolution.cells_across`` cells across its diameter.
     """
-    return _run_scene(_scene(scene), progress, indenter)
+    return _run_scene(_scene(scene), progress, indenter, iteration)
 
 
 def check_scene(scene: SceneLike) -> dict:

@@ -160,7 +160,10 @@ class Curve:
     def __len__(self) -> int: ...
 
 def run_scene(
-    scene: Any, progress: Optional[Callable[[dict], None]] = None, indenter: Optional[Indenter] = None
+    scene: Any,
+    progress: Optional[Callable[[dict], None]] = None,
+    indenter: Optional[Indenter] = None,
+    iteration: Optional[Callable[[dict], None]] = None,
 ) -> Curve: ...
 def rough_surface_heights(
     hurst: float,

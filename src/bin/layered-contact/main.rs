@@ -117,7 +117,21 @@ fn run(scene: &Scene, out: &std::path::Path) -> Result<()> {
     progress.stage("building the kernel");
     let mut solver = scene.solver()?;
     progress.stage("solving");
-    let curve = scene.run_on(&mut solver, &mut |step| progress.step(step));
+    // The energy balance builds its family of contact sets before any step:
+    // each set is reported as it is solved.
+    let family = scene.adhesion.works().is_some()
+        && scene.solver.adhesion_method == layered_contact::scene::AdhesionMethod::EnergyBalance;
+    let progress = std::cell::RefCell::new(progress);
+    let curve = scene.run_observed(
+        &mut solver,
+        &mut |step| progress.borrow_mut().step(step),
+        &mut |info: &layered_contact::solver::IterationInfo| {
+            if family {
+                progress.borrow_mut().contact_set(info);
+            }
+        },
+    );
+    let mut progress = progress.into_inner();
     progress.finish();
     let curve = curve?;
     std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use ndarray::Array1;
 use plotters::prelude::*;
 
-use layered_contact::scene::{Curve, Phase, Scene};
+use layered_contact::scene::{Curve, Phase, Quantity, Scene};
 use layered_contact::Grid;
 
 use crate::Result;
@@ -22,7 +22,7 @@ pub fn write_all(scene: &Scene, curve: &Curve, out: &Path) -> Result<Vec<PathBuf
     written.extend(fields);
     written.extend(stresses);
     let svg = out.join("curve.svg");
-    plot(curve, &svg)?;
+    plot(scene, curve, &svg)?;
     written.push(svg);
     Ok(written)
 }
@@ -109,28 +109,49 @@ pub fn register_font() -> Result<()> {
     Ok(())
 }
 
-/// Force against depth, loading solid and unloading dashed.
-fn plot(curve: &Curve, path: &Path) -> Result<()> {
+/// Force against depth, loading solid and unloading dashed, under a title
+/// naming the scene; where the scene has exact values
+/// ([`Scene::reference`]) they are drawn beside the BEM curve: the exact
+/// stiffness as a dotted line through the origin, the exact peak force as a
+/// cross at the peak depth and the exact pull-off force as a dotted
+/// horizontal line. Axes in SI-prefixed units (`um`, `mN`, ...).
+fn plot(scene: &Scene, curve: &Curve, path: &Path) -> Result<()> {
     register_font()?;
-    let points = |phase: Phase| -> Vec<(f64, f64)> {
-        curve.phase(phase).map(|s| (s.depth, s.force)).collect()
+    let references = scene.reference().unwrap_or_default();
+    let exact = |quantity: Quantity| {
+        references
+            .iter()
+            .find(|r| r.quantity == quantity)
+            .map(|r| r.value)
     };
-    let depths = range(curve.steps.iter().map(|s| s.depth));
-    let forces = range(curve.steps.iter().map(|s| s.force));
+    let peak_depth = curve.phase(Phase::Loading).last().map(|s| s.depth);
+    let mut depths: Vec<f64> = curve.steps.iter().map(|s| s.depth).collect();
+    let mut forces: Vec<f64> = curve.steps.iter().map(|s| s.force).collect();
+    forces.extend(exact(Quantity::PeakForce));
+    forces.extend(exact(Quantity::PullOffForce));
+    depths.extend(peak_depth);
+    let (depth_scale, depth_unit) = si_unit(&depths, "m");
+    let (force_scale, force_unit) = si_unit(&forces, "N");
+    let depths = range(depths.iter().map(|d| d / depth_scale));
+    let forces = range(forces.iter().map(|f| f / force_scale));
+    let point = |s: &layered_contact::scene::Step| (s.depth / depth_scale, s.force / force_scale);
+    let points = |phase: Phase| -> Vec<(f64, f64)> { curve.phase(phase).map(point).collect() };
     let root = SVGBackend::new(path, (800, 560)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| e.to_string())?;
     let mut chart = ChartBuilder::on(&root)
+        .caption(title(scene, curve), (FONT, 16))
         .margin(15)
         .x_label_area_size(45)
         .y_label_area_size(75)
         .build_cartesian_2d(depths.0..depths.1, forces.0..forces.1)
         .map_err(|e| e.to_string())?;
+    let (x_span, y_span) = (depths.1 - depths.0, forces.1 - forces.0);
     chart
         .configure_mesh()
-        .x_desc("depth d [m]")
-        .y_desc("force F [N]")
-        .x_label_formatter(&|v| format!("{v:.2e}"))
-        .y_label_formatter(&|v| format!("{v:.2e}"))
+        .x_desc(format!("depth d [{depth_unit}]"))
+        .y_desc(format!("force F [{force_unit}]"))
+        .x_label_formatter(&|v| tick(*v, x_span))
+        .y_label_formatter(&|v| tick(*v, y_span))
         .label_style((FONT, 13))
         .axis_desc_style((FONT, 15))
         .draw()
@@ -142,7 +163,7 @@ fn plot(curve: &Curve, path: &Path) -> Result<()> {
             blue.stroke_width(2),
         ))
         .map_err(|e| e.to_string())?
-        .label("loading")
+        .label("loading (BEM)")
         .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], blue.stroke_width(2)));
     let orange = RGBColor(255, 127, 14);
     chart
@@ -153,16 +174,48 @@ fn plot(curve: &Curve, path: &Path) -> Result<()> {
             orange.stroke_width(2),
         ))
         .map_err(|e| e.to_string())?
-        .label("unloading")
+        .label("unloading (BEM)")
         .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], orange.stroke_width(2)));
     chart
         .draw_series(
             curve
                 .steps
                 .iter()
-                .map(|s| Circle::new((s.depth, s.force), 3, BLACK.filled())),
+                .map(|s| Circle::new(point(s), 3, BLACK.filled())),
         )
         .map_err(|e| e.to_string())?;
+    let grey = RGBColor(90, 90, 90);
+    if let (Some(k), Some(deepest)) = (exact(Quantity::Stiffness), peak_depth) {
+        let line = [
+            (0.0, 0.0),
+            (deepest / depth_scale, k * deepest / force_scale),
+        ];
+        chart
+            .draw_series(DashedLineSeries::new(line, 2, 4, grey.stroke_width(2)))
+            .map_err(|e| e.to_string())?
+            .label("exact stiffness")
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], grey.stroke_width(2)));
+    }
+    if let (Some(force), Some(deepest)) = (exact(Quantity::PeakForce), peak_depth) {
+        let at = (deepest / depth_scale, force / force_scale);
+        chart
+            .draw_series([Cross::new(at, 7, BLACK.stroke_width(2))])
+            .map_err(|e| e.to_string())?
+            .label("exact peak force")
+            .legend(|(x, y)| Cross::new((x + 10, y), 5, BLACK.stroke_width(2)));
+    }
+    if let Some(force) = exact(Quantity::PullOffForce) {
+        let line = [
+            (depths.0, force / force_scale),
+            (depths.1, force / force_scale),
+        ];
+        let red = RGBColor(214, 39, 40);
+        chart
+            .draw_series(DashedLineSeries::new(line, 2, 4, red.stroke_width(2)))
+            .map_err(|e| e.to_string())?
+            .label("exact pull-off force")
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], red.stroke_width(2)));
+    }
     chart
         .configure_series_labels()
         .label_font((FONT, 14))
@@ -172,6 +225,68 @@ fn plot(curve: &Curve, path: &Path) -> Result<()> {
         .map_err(|e| e.to_string())?;
     root.present().map_err(|e| e.to_string())?;
     Ok(())
+}
+
+/// "flat punch on half space: 7 steps on a 18 x 18 grid" (the scene
+/// file's kinds; "custom" for an indenter given in code).
+fn title(scene: &Scene, curve: &Curve) -> String {
+    let kind = |value: Option<toml::Value>| {
+        value
+            .as_ref()
+            .and_then(|v| v.get("kind"))
+            .and_then(|k| k.as_str())
+            .map_or("custom".to_string(), |k| k.replace('_', " "))
+    };
+    format!(
+        "{} on {}: {} steps on a {} x {} grid",
+        kind(toml::Value::try_from(&scene.indenter).ok()),
+        kind(toml::Value::try_from(&scene.substrate).ok()),
+        curve.steps.len(),
+        curve.grid.rows(),
+        curve.grid.columns()
+    )
+}
+
+/// The power of 1000 that brings the largest of `values` into `[1, 1000)`,
+/// and the unit with its SI prefix.
+fn si_unit(values: &[f64], unit: &str) -> (f64, String) {
+    const PREFIXES: [(i32, &str); 7] = [
+        (-5, "f"),
+        (-4, "p"),
+        (-3, "n"),
+        (-2, "u"),
+        (-1, "m"),
+        (0, ""),
+        (1, "k"),
+    ];
+    let largest = values
+        .iter()
+        .filter(|v| v.is_finite())
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    let power = if largest > 0.0 {
+        (largest.log10() / 3.0).floor() as i32
+    } else {
+        0
+    };
+    let (power, prefix) = PREFIXES
+        .iter()
+        .copied()
+        .find(|&(p, _)| p == power.clamp(-5, 1))
+        .unwrap_or((0, ""));
+    (1000f64.powi(power), format!("{prefix}{unit}"))
+}
+
+/// A tick label with the decimals that tell the ticks apart, the same on
+/// every tick of an axis `span` long; zero for
+/// values that are zero but for rounding (a millionth of the axis).
+fn tick(value: f64, span: f64) -> String {
+    if value.abs() <= 1e-6 * span {
+        return "0".to_string();
+    }
+    // Ticks are 1, 2 or 5 times a power of ten, at least a twentieth of the
+    // axis apart.
+    let digits = (-(span / 20.0).log10().floor() as i32).clamp(0, 6) as usize;
+    format!("{value:.digits$}")
 }
 
 /// The range of `values` with 5 % padding (and zero included).

@@ -5,6 +5,7 @@ use std::io::IsTerminal;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use layered_contact::scene::{Protocol, Scene, Step};
+use layered_contact::solver::IterationInfo;
 
 /// Reports the stages and steps of one scene.
 pub struct Progress {
@@ -42,6 +43,24 @@ impl Progress {
         match &self.bar {
             Some(bar) => bar.set_message(what.to_string()),
             None => tell!("[{:8.1} s] {what}", self.started.elapsed().as_secs_f64()),
+        }
+    }
+
+    /// One contact set of the energy balance's family solved (before the
+    /// steps, which follow all at once).
+    pub fn contact_set(&mut self, info: &IterationInfo) {
+        match &self.bar {
+            Some(bar) => bar.set_message(format!(
+                "adhesive branches: contact set {} of {} cells",
+                info.iteration, info.contact_cells
+            )),
+            None => tell!(
+                "[{:8.1} s] adhesive branches: contact set {}, {} cells, residual {:.1e}",
+                self.started.elapsed().as_secs_f64(),
+                info.iteration,
+                info.contact_cells,
+                info.residual
+            ),
         }
     }
 

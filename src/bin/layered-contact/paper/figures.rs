@@ -218,8 +218,8 @@ fn detachment(curve: &Curve) -> Option<(f64, f64)> {
 /// Draws one run: loading solid, unloading dashed in the order computed
 /// (starting at the peak, so the loop closes), a triangle where unloading
 /// starts, the jump off the surface as a dotted vertical line down to zero
-/// force, the BEM pull-off (least force) as a circle and the exact one as a
-/// cross.
+/// force, the BEM pull-off (least force) as a dot and the exact one as a
+/// ring around it.
 fn draw_run<'a, DB: DrawingBackend + 'a>(
     chart: &mut ChartContext<
         'a,
@@ -267,15 +267,23 @@ where
         let jump = [(d, f.max(y0)), (d, 0.0f64.min(y1))];
         chart.draw_series(DashedLineSeries::new(jump, 2, 3, color.stroke_width(1)))?;
     }
+    // The exact pull-off as a ring in the run's colour, the BEM's as a dot
+    // drawn over it: within a few tenths of a per cent the dot sits inside
+    // the ring, and both stay visible (a black cross hid the dots and did
+    // not tell the runs apart).
+    let exact = (run.exact.0 * 1e3, run.exact.1);
+    if inside(&exact) {
+        chart.draw_series(std::iter::once(Circle::new(
+            exact,
+            9,
+            color.stroke_width(2),
+        )))?;
+    }
     if let Some(p) = run.curve.pull_off() {
         let p = (p.depth * 1e3, p.force);
         if inside(&p) {
-            chart.draw_series(std::iter::once(Circle::new(p, 5, color.filled())))?;
+            chart.draw_series(std::iter::once(Circle::new(p, 4, color.filled())))?;
         }
-    }
-    let exact = (run.exact.0 * 1e3, run.exact.1);
-    if inside(&exact) {
-        chart.draw_series(std::iter::once(Cross::new(exact, 7, BLACK.stroke_width(2))))?;
     }
     Ok(())
 }
@@ -306,7 +314,7 @@ where
     let y = 14 + entries.len().div_ceil(per_row) as i32 * 22;
     let symbols = "solid: loading (dgamma0 = 0.0175 J/m^2)  |  dashed: unloading (dgamma1)  |  \
                    triangle: unloading starts  |  dotted vertical: jump off the surface  |  \
-                   circle: BEM pull-off (least force)  |  x: exact pull-off";
+                   dot: BEM pull-off (least force)  |  ring: exact pull-off";
     area.draw(&Text::new(symbols, (20, y - 6), font))
         .map_err(|e| e.to_string())?;
     Ok(())
