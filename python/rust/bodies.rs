@@ -7,7 +7,8 @@ use layered_contact as lc;
 
 use super::*;
 
-/// An isotropic linear-elastic material.
+/// An isotropic linear-elastic material: `Material(youngs_modulus, poisson_ratio)`,
+/// Young's modulus `E` in Pa (positive) and Poisson's ratio `nu` in `[0, 0.5]`.
 #[pyclass(module = "layered_contact._native", frozen)]
 #[derive(Clone)]
 pub(crate) struct Material {

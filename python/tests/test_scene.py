@@ -193,3 +193,22 @@ def test_iteration_reports_come_before_the_steps_of_an_adhesive_run():
 
     with pytest.raises(RuntimeError, match="first set"):
         lc.run_scene(adhesive, iteration=stop)
+
+
+def test_plot_field_draws_the_peak_pressure():
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    import numpy as np
+
+    scene = dict(PUNCH, outputs={"fields": {"pressure": True, "gap": True}})
+    curve = lc.run_scene(scene)
+    ax = lc.plot_field(curve.peak)
+    mesh = ax.collections[0]
+    np.testing.assert_array_equal(np.asarray(mesh.get_array()).ravel(), curve.peak.pressure.ravel())
+    assert ax.figure.axes[-1].get_ylabel() == "pressure [Pa]"
+    gap = lc.plot_field(curve.peak, "gap")
+    assert gap.figure.axes[-1].get_ylabel() == "gap [m]"
+    with pytest.raises(ValueError, match="no displacement"):
+        lc.plot_field(curve.peak, "displacement")
+    with pytest.raises(ValueError, match="expected one of"):
+        lc.plot_field(curve.peak, "stress")

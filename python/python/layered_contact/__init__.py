@@ -64,6 +64,7 @@ __all__ = [
     "curve_to_dict",
     "edge_release",
     "plot_curve",
+    "plot_field",
     "plot_section",
     "rough_surface_heights",
     "run_scene",
@@ -212,6 +213,38 @@ def plot_curve(curve: Curve, ax: Any = None, unit: float = 1e-6) -> Any:
     ax.set_ylabel("force [N]")
     ax.set_title(repr(curve), fontsize=9)
     ax.legend()
+    return ax
+
+
+FIELD_UNITS = {"pressure": "Pa", "displacement": "m", "gap": "m"}
+
+
+def plot_field(solution: Solution, field: str = "pressure", ax: Any = None) -> Any:
+    """Draws one field of a :class:`Solution` (``pressure`` Pa,
+    ``displacement`` or ``gap`` m; a curve's is ``curve.peak``) on the cell
+    centres, ``x`` (the rows) upwards and ``y`` (the columns) across, in
+    millimetres, with a colour bar in the field's unit (matplotlib, an
+    optional dependency). Returns the axes."""
+    import matplotlib.pyplot as plt
+
+    import numpy as np
+
+    if field not in FIELD_UNITS:
+        raise ValueError(f"field {field!r}: expected one of {sorted(FIELD_UNITS)}")
+    values = getattr(solution, field)
+    if values is None:
+        raise ValueError(f"the solution carries no {field}: ask for it in outputs.fields")
+    values = np.asarray(values)
+    if ax is None:
+        _, ax = plt.subplots()
+    x, y = np.asarray(solution.x) * 1e3, np.asarray(solution.y) * 1e3
+    # Cells where the indenter cannot reach have an infinite gap.
+    mesh = ax.pcolormesh(y, x, np.ma.masked_invalid(values), shading="nearest")
+    ax.set_aspect("equal")
+    ax.set_xlabel("y [mm]")
+    ax.set_ylabel("x [mm]")
+    ax.set_title(f"{field} at depth {solution.depth:.4g} m, force {solution.force:.4g} N", fontsize=9)
+    ax.figure.colorbar(mesh, ax=ax, label=f"{field} [{FIELD_UNITS[field]}]")
     return ax
 
 
