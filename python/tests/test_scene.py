@@ -92,6 +92,9 @@ def test_caveats_say_when_adhesion_is_edge_averaged():
     # Tilted: the contact sets are no longer discs about the axis.
     tilted = lc.run_scene(dict(SPHERE, tilt={"angle_y": 0.05, "angle_x": 0.0}))
     assert len(tilted.caveats) == 1 and "edge-averaged" in tilted.caveats[0]
+    # The mesh-dependent criterion says what it is.
+    mesh = lc.run_scene(dict(SPHERE, solver={"adhesion_method": "mesh_criterion"}))
+    assert len(mesh.caveats) == 1 and "mesh-dependent" in mesh.caveats[0]
 
 
 def test_every_example_scene_meets_the_schema():

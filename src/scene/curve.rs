@@ -99,6 +99,15 @@ pub enum Caveat {
     /// criterion is the cell-by-cell alternative. See
     /// [`AdhesiveBranches::edge_averaged`](crate::solver::AdhesiveBranches::edge_averaged).
     EdgeAveragedAdhesion,
+    /// The mesh-dependent adhesion criterion (Pohrt & Popov 2015, the
+    /// method of the reference experiment's simulations) computed the
+    /// adhesive steps cell by cell: its pull-off depends on the cell size
+    /// (too strong by about `3/N` on a curved edge `N` cells across) and on
+    /// how the contact edge lies on the grid (a straight edge along the grid
+    /// acts as if the work of adhesion were about 1.66 times larger): a
+    /// reference method, not a converged JKR-limit answer
+    /// ([`doc::adhesion`](crate::doc::adhesion)).
+    MeshDependentAdhesion,
 }
 
 impl std::fmt::Display for Caveat {
@@ -109,6 +118,13 @@ impl std::fmt::Display for Caveat {
                  axis nor strips across a periodic grid, so the energy balance averages the \
                  energy release rate over the edge and its forces may be off by several per \
                  cent (the JKR-limit solution only where the release is even along the edge)",
+            ),
+            Caveat::MeshDependentAdhesion => f.write_str(
+                "mesh-dependent adhesion: the criterion of Pohrt & Popov (2015) decides each \
+                 cell, so the pull-off depends on the cell size (about 3/N too strong on a \
+                 curved edge N cells across) and on how the contact edge lies on the grid (up \
+                 to about 40 % too strong along a straight edge on the grid): a reference \
+                 method, not a converged answer",
             ),
         }
     }

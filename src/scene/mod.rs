@@ -227,7 +227,10 @@ pub enum AdhesionMethod {
     /// cell ([`ContactSolver::solve_depth_hysteretic`]): the method of the
     /// reference experiments' simulations, for any contact shape, but
     /// converging slowly (about `3/N` relative error in a sphere's pull-off
-    /// force). Displacement control only.
+    /// force) and biased by how the contact edge lies on the grid; its
+    /// curves carry [`Caveat::MeshDependentAdhesion`]. Displacement control
+    /// only. The method for contacts that split into patches (rough
+    /// surfaces: `examples/scenes/rough_adhesive_film.toml`).
     MeshCriterion,
 }
 

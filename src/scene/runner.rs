@@ -182,7 +182,13 @@ impl<'a> Runner<'a> {
             steps: self.steps,
             grid: *self.solver.grid(),
             peak: self.peak,
-            caveats: Vec::new(),
+            // The step-by-step runner's adhesion is the mesh-dependent
+            // criterion's.
+            caveats: if self.scene.adhesion.works().is_some() {
+                vec![super::Caveat::MeshDependentAdhesion]
+            } else {
+                Vec::new()
+            },
             stresses: None,
         })))
     }
