@@ -2,8 +2,8 @@
 
 use layered_contact::indenter::FlatPunch;
 use layered_contact::scene::{
-    Adhesion, AdhesionMethod, Caveat, IndenterSpec, Outputs, Phase, Protocol, Resolution, Scene,
-    Step, SubstrateSpec,
+    Adhesion, AdhesionMethod, IndenterSpec, Outputs, Phase, Protocol, Resolution, Scene,
+    SubstrateSpec,
 };
 use layered_contact::solver::{ContactSolver, Fields, SolverParams};
 use layered_contact::{Boundary, Error};
@@ -339,8 +339,10 @@ fn punch_scene_converges_like_one_over_n_and_extrapolates() {
 /// criterion runs it and says what it is. Checked: the caveat; the
 /// hysteresis (the loop encloses positive work, and at the same depth the
 /// unloading force lies below the loading one); a pull-off that pulls.
+#[cfg(feature = "serde")]
 #[test]
 fn a_rough_adhesive_cycle_runs_on_a_film_with_its_caveat() {
+    use layered_contact::scene::{Caveat, Step};
     let scene: Scene =
         toml::from_str(include_str!("../examples/scenes/rough_adhesive_film.toml")).unwrap();
     let energy = Scene {

@@ -285,7 +285,7 @@ fn tick(value: f64, span: f64) -> String {
     }
     // Ticks are 1, 2 or 5 times a power of ten, at least a twentieth of the
     // axis apart.
-    let digits = (-(span / 20.0).log10().floor() as i32).clamp(0, 6) as usize;
+    let digits = (-(span / 20.0).log10().floor()).clamp(0.0, 6.0) as usize;
     format!("{value:.digits$}")
 }
 
