@@ -18,22 +18,53 @@ use super::*;
 #[derive(Clone)]
 pub(crate) struct Indenter {
     pub(crate) inner: Arc<dyn lc::indenter::Indenter + Send + Sync>,
-    pub(crate) name: String,
-    /// How it was built, for pickling.
+    /// How it was built: its repr and its pickling.
     recipe: Recipe,
 }
 
 /// The constructor call that rebuilds an indenter.
 #[derive(Clone)]
 enum Recipe {
-    /// A static method and its numbers.
-    Shape(&'static str, Vec<f64>),
+    FlatPunch(f64),
+    Sphere(f64),
+    Paraboloid(f64),
+    Cone(f64, f64),
     /// A height map, read back from the map itself.
     HeightMap(Arc<lc::indenter::HeightMap>),
     /// A rough surface, synthesised again from its seed.
     Rough(RoughSurface),
     /// `inner.tilted(angle_y, angle_x)`.
     Tilted(Box<Indenter>, f64, f64),
+}
+
+impl Recipe {
+    /// The call as `repr` shows it (after `Indenter.`).
+    fn describe(&self) -> String {
+        match self {
+            Recipe::FlatPunch(r) => format!("flat_punch(radius={r:e})"),
+            Recipe::Sphere(r) => format!("sphere(radius={r:e})"),
+            Recipe::Paraboloid(r) => format!("paraboloid(radius={r:e})"),
+            Recipe::Cone(half_angle, base_radius) => {
+                format!("cone(half_angle={half_angle}, base_radius={base_radius:e})")
+            }
+            Recipe::HeightMap(map) => {
+                let grid = map.grid();
+                format!(
+                    "height_map({} x {}, spacing={:e})",
+                    grid.rows(),
+                    grid.columns(),
+                    grid.spacing()
+                )
+            }
+            Recipe::Rough(r) => format!(
+                "rough_surface(hurst={}, seed={}, {} x {})",
+                r.hurst, r.seed, r.cells, r.cells
+            ),
+            Recipe::Tilted(inner, angle_y, angle_x) => {
+                format!("{}.tilted({angle_y}, {angle_x})", inner.recipe.describe())
+            }
+        }
+    }
 }
 
 /// The parameters of `Indenter.rough_surface` and `rough_surface_heights`.
@@ -148,14 +179,9 @@ impl lc::indenter::Indenter for Shared {
 }
 
 impl Indenter {
-    fn new(
-        shape: impl lc::indenter::Indenter + Send + Sync + 'static,
-        name: String,
-        recipe: Recipe,
-    ) -> Self {
+    fn new(shape: impl lc::indenter::Indenter + Send + Sync + 'static, recipe: Recipe) -> Self {
         Indenter {
             inner: Arc::new(shape),
-            name,
             recipe,
         }
     }
@@ -167,33 +193,21 @@ impl Indenter {
     #[staticmethod]
     fn flat_punch(radius: f64) -> PyResult<Self> {
         let shape = lc::indenter::FlatPunch::new(radius).py_err()?;
-        Ok(Indenter::new(
-            shape,
-            format!("flat_punch(radius={radius:e})"),
-            Recipe::Shape("flat_punch", vec![radius]),
-        ))
+        Ok(Indenter::new(shape, Recipe::FlatPunch(radius)))
     }
 
     /// A sphere of radius `radius` (m), the exact spherical cap.
     #[staticmethod]
     fn sphere(radius: f64) -> PyResult<Self> {
         let shape = lc::indenter::Sphere::new(radius).py_err()?;
-        Ok(Indenter::new(
-            shape,
-            format!("sphere(radius={radius:e})"),
-            Recipe::Shape("sphere", vec![radius]),
-        ))
+        Ok(Indenter::new(shape, Recipe::Sphere(radius)))
     }
 
     /// A paraboloid of tip radius `radius` (m): f = r^2 / (2 R).
     #[staticmethod]
     fn paraboloid(radius: f64) -> PyResult<Self> {
         let shape = lc::indenter::Paraboloid::new(radius).py_err()?;
-        Ok(Indenter::new(
-            shape,
-            format!("paraboloid(radius={radius:e})"),
-            Recipe::Shape("paraboloid", vec![radius]),
-        ))
+        Ok(Indenter::new(shape, Recipe::Paraboloid(radius)))
     }
 
     /// A cone of half-angle `half_angle` (rad, axis to face) and base radius
@@ -201,11 +215,7 @@ impl Indenter {
     #[staticmethod]
     fn cone(half_angle: f64, base_radius: f64) -> PyResult<Self> {
         let shape = lc::indenter::Cone::new(half_angle, base_radius).py_err()?;
-        Ok(Indenter::new(
-            shape,
-            format!("cone(half_angle={half_angle}, base_radius={base_radius:e})"),
-            Recipe::Shape("cone", vec![half_angle, base_radius]),
-        ))
+        Ok(Indenter::new(shape, Recipe::Cone(half_angle, base_radius)))
     }
 
     /// Any shape as a 2D array of heights (m, `rows x columns`, `+inf` where
@@ -223,7 +233,6 @@ impl Indenter {
         let map = Arc::new(lc::indenter::HeightMap::new(grid, values).py_err()?);
         Ok(Indenter {
             inner: map.clone(),
-            name: format!("height_map({rows} x {columns}, spacing={spacing:e})"),
             recipe: Recipe::HeightMap(map),
         })
     }
@@ -258,11 +267,7 @@ impl Indenter {
         };
         let (surface, grid) = recipe.build()?;
         let map = py.detach(|| surface.indenter(&grid)).py_err()?;
-        Ok(Indenter::new(
-            map,
-            format!("rough_surface(hurst={hurst}, seed={seed}, {cells} x {cells})"),
-            Recipe::Rough(recipe),
-        ))
+        Ok(Indenter::new(map, Recipe::Rough(recipe)))
     }
 
     /// The tilted indenter: rotated by `angle_y` about the y axis (the face
@@ -272,7 +277,6 @@ impl Indenter {
             lc::indenter::Tilted::new(Shared(self.inner.clone()), angle_y, angle_x).py_err()?;
         Ok(Indenter::new(
             shape,
-            format!("{}.tilted({angle_y}, {angle_x})", self.name),
             Recipe::Tilted(Box::new(self.clone()), angle_y, angle_x),
         ))
     }
@@ -285,7 +289,13 @@ impl Indenter {
         let py = slf.py();
         let class = slf.get_type();
         Ok(match &slf.get().recipe {
-            Recipe::Shape(name, numbers) => (class.getattr(*name)?, PyTuple::new(py, numbers)?),
+            Recipe::FlatPunch(r) => (class.getattr("flat_punch")?, (*r,).into_pyobject(py)?),
+            Recipe::Sphere(r) => (class.getattr("sphere")?, (*r,).into_pyobject(py)?),
+            Recipe::Paraboloid(r) => (class.getattr("paraboloid")?, (*r,).into_pyobject(py)?),
+            Recipe::Cone(half_angle, base_radius) => (
+                class.getattr("cone")?,
+                (*half_angle, *base_radius).into_pyobject(py)?,
+            ),
             Recipe::HeightMap(map) => {
                 let grid = map.grid();
                 let heights = ndarray::Array2::from_shape_vec(
@@ -342,6 +352,6 @@ impl Indenter {
     }
 
     fn __repr__(&self) -> String {
-        format!("Indenter.{}", self.name)
+        format!("Indenter.{}", self.recipe.describe())
     }
 }
