@@ -74,7 +74,7 @@ impl ForceCurve {
     /// The forces (N) at `depth` (m, any shape) for a top layer whose
     /// contact modulus is `modulus_ratio` times the table's, with work of
     /// adhesion `work_of_adhesion` (J/m^2): the fixed-grips branch, 0 before
-    /// contact and after detachment, NaN beyond `max_depth`.
+    /// contact and after detachment, NaN beyond `reach(...)`.
     #[pyo3(signature = (depth, modulus_ratio=1.0, work_of_adhesion=0.0))]
     fn forces<'py>(
         &self,
@@ -91,6 +91,15 @@ impl ForceCurve {
         PyArray1::from_vec(py, forces).reshape(shape)
     }
 
+    /// The deepest indentation (m) whose force the table gives for
+    /// `modulus_ratio` and `work_of_adhesion` (J/m^2): `max_depth` without
+    /// adhesion, less with it when adhesion lifts the indenter at the
+    /// table's largest contact radius by more.
+    #[pyo3(signature = (modulus_ratio=1.0, work_of_adhesion=0.0))]
+    fn reach(&self, modulus_ratio: f64, work_of_adhesion: f64) -> f64 {
+        self.inner.reach(modulus_ratio, work_of_adhesion)
+    }
+
     /// The contact modulus `E1*` of the table's body, Pa.
     #[getter]
     fn contact_modulus(&self) -> f64 {
@@ -104,7 +113,7 @@ impl ForceCurve {
     }
 }
 
-/// The approach curves of a tip (as [`ForceCurve`]) on `substrate` with
+/// The force curves of a tip (as [`ForceCurve`]) on `substrate` with
 /// its top layer's Young's modulus anywhere in `youngs_range` (Pa), from
 /// `nodes` exact tables at Chebyshev nodes in `ln E`
 /// (`analytic::ModulusFamily`): for fits and force maps on supports where
@@ -146,20 +155,32 @@ impl ModulusFamily {
         Ok(ModulusFamily { inner })
     }
 
-    /// The approach forces (N) at `depth` (m, any shape) for a top layer of
-    /// Young's modulus `youngs_modulus` (Pa); NaN outside the range.
+    /// The forces (N) at `depth` (m, any shape) for a top layer of Young's
+    /// modulus `youngs_modulus` (Pa) and work of adhesion
+    /// `work_of_adhesion` (J/m^2, 0 for the approach), along the
+    /// fixed-grips branch; NaN outside the range.
+    #[pyo3(signature = (depth, youngs_modulus, work_of_adhesion=0.0))]
     fn forces<'py>(
         &self,
         py: Python<'py>,
         depth: PyReadonlyArrayDyn<'py, f64>,
         youngs_modulus: f64,
+        work_of_adhesion: f64,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         checked_len("depth", depth.shape())?;
         let shape = depth.shape().to_vec();
         let depths: Vec<f64> = depth.as_array().iter().copied().collect();
         let inner = &self.inner;
-        let forces = py.detach(|| inner.forces(&depths, youngs_modulus));
+        let forces = py.detach(|| inner.adhesive_forces(&depths, youngs_modulus, work_of_adhesion));
         PyArray1::from_vec(py, forces).reshape(shape)
+    }
+
+    /// The deepest indentation (m) whose force the family gives at
+    /// `youngs_modulus` (Pa) with `work_of_adhesion` (J/m^2); NaN outside
+    /// the range.
+    #[pyo3(signature = (youngs_modulus, work_of_adhesion=0.0))]
+    fn reach(&self, youngs_modulus: f64, work_of_adhesion: f64) -> f64 {
+        self.inner.reach(youngs_modulus, work_of_adhesion)
     }
 
     /// The range of Young's moduli covered, Pa.

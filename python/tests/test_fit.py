@@ -268,3 +268,27 @@ def test_a_modulus_family_serves_a_force_map_on_a_gel():
     assert abs(plain.params["youngs_modulus"] / estimates[0] - 1.0) < 1e-5
     with pytest.raises(lc.InvalidInputError, match="modulus_range"):
         CurveModel("paraboloid", R, gel, max_depth=2.5e-6, modulus_range=(3e4, 3e3))
+
+
+def test_a_modulus_family_serves_retract_curves_on_a_gel():
+    # Retract curves on a support that does not scale: the family's table
+    # at a modulus (interpolated at each contact radius) is within 1e-7 of
+    # the exact table's curve with adhesion, and a fit of the modulus and
+    # the work of adhesion to a noisy retract curve builds no table per
+    # modulus and recovers both (1 % and 3 %).
+    gel = Sample(thickness=H, poisson_ratio=NU, base_youngs_modulus=2.5e3,
+                 base_poisson_ratio=0.5)
+    truth = CurveModel("paraboloid", R, gel, max_depth=2.5e-6)
+    # The fit reaches past the deepest point by half the span (3.55 um).
+    family = CurveModel("paraboloid", R, gel, max_depth=3.6e-6, modulus_range=(3e3, 30e3))
+    z = np.linspace(0.5 * H + Z0, -0.8e-6 + Z0, 2000)
+    exact = truth.force(z - Z0, E, W)
+    assert exact.min() < 0.0
+    scale = np.max(np.abs(exact))
+    np.testing.assert_allclose(family.force(z - Z0, E, W), exact, rtol=0.0, atol=1e-7 * scale)
+    f = exact + 0.01 * scale * np.random.default_rng(8).standard_normal(z.size)
+    fit = fit_curve(z, f, tip="paraboloid", radius=R, sample=gel, segment="retract",
+                    youngs_modulus=8e3, work_of_adhesion=0.5e-3, model=family)
+    assert abs(fit.params["youngs_modulus"] / E - 1) < 0.01, fit.params
+    assert abs(fit.params["work_of_adhesion"] / W - 1) < 0.03, fit.params
+    assert family._tables == {}

@@ -110,6 +110,11 @@ class Sample:
         return self.base_youngs_modulus is None and not self.below
 
 
+# How many times a table is rebuilt twice as deep when an adhesive curve
+# does not reach the model's max_depth.
+_DEEPER_TABLES = 6
+
+
 class CurveModel:
     """The exact force (N) against indentation (m) of one tip on one sample.
 
@@ -123,10 +128,12 @@ class CurveModel:
     elastic support, layers below), every modulus tried builds its own
     exact table (0.1 to 3 s). ``modulus_range=(lo, hi)`` (Pa) builds instead
     ``nodes`` tables once (``analytic::ModulusFamily``: Chebyshev nodes in
-    ``ln E``, 8e-9 from the exact curve at 10 nodes per decade) and serves
-    every approach curve with a modulus in the range from them (0.3 ms for
-    40 depths): the choice for a force map of many curves on one sample.
-    Adhesive curves and moduli outside the range still build their tables.
+    ``ln E``, interpolated at each contact radius; 2e-10 from the exact
+    curve at 10 nodes per decade, 8e-10 with adhesion at 12) and serves
+    every curve, approach or retract, with a modulus in the range from them
+    at the cost of one table's (``BENCHMARKS.md``): the choice for a force
+    map of many curves on one sample. Moduli outside the range still build
+    their own tables.
     """
 
     def __init__(self, tip: str, radius: Optional[float], sample: Sample, max_depth: float,
@@ -160,11 +167,10 @@ class CurveModel:
         self.nodes = int(nodes)
         self._family = None
 
-    def _family_for(self, youngs_modulus: float, work_of_adhesion: float):
-        """The modulus family when it serves this call (approach, modulus in
-        range, a sample that does not scale), built on first use."""
+    def _family_for(self, youngs_modulus: float):
+        """The modulus family when it serves this call (modulus in range, a
+        sample that does not scale), built on first use."""
         if (self.modulus_range is None or self.sample.scales_with_modulus
-                or work_of_adhesion != 0.0
                 or not self.modulus_range[0] <= youngs_modulus <= self.modulus_range[1]):
             return None
         if self._family is None:
@@ -174,18 +180,32 @@ class CurveModel:
                 self.modulus_range, nodes=self.nodes, half_angle=self.half_angle,
             )
         return self._family
-    def _table(self, youngs_modulus: float):
+    def _table(self, youngs_modulus: float, work_of_adhesion: float):
         """The native ``ForceCurve`` for this modulus (one for every
-        modulus on glass or a half-space), cached."""
+        modulus on glass or a half-space), cached, and the modulus ratio to
+        pass it. Adhesion lifts the indenter at a given contact radius, so
+        a table reaches less deep with it (``ForceCurve.reach``): one that
+        does not reach ``max_depth`` for this work is rebuilt deeper."""
         key = 1.0 if self.sample.scales_with_modulus else youngs_modulus
         table = self._tables.get(key)
-        if table is None:
-            table = _native.ForceCurve(
-                self.sample.substrate(key), self.tip, self.radius, self.max_depth,
-                half_angle=self.half_angle,
-            )
-            self._tables[key] = table
-        return table
+        depth = self.max_depth
+        for _ in range(_DEEPER_TABLES):
+            if table is None:
+                table = _native.ForceCurve(
+                    self.sample.substrate(key), self.tip, self.radius, depth,
+                    half_angle=self.half_angle,
+                )
+                self._tables[key] = table
+            ratio = self.sample.contact_modulus(youngs_modulus) / table.contact_modulus
+            if table.reach(ratio, work_of_adhesion) >= self.max_depth:
+                return table, ratio
+            depth = 2.0 * max(depth, table.max_depth)
+            table = None
+        raise InvalidInputError(
+            f"work_of_adhesion {work_of_adhesion}: the adhesive curve at youngs_modulus "
+            f"{youngs_modulus} does not reach max_depth {self.max_depth} within the exact "
+            "solution's range of contact radii"
+        )
 
     def force(
         self,
@@ -207,11 +227,10 @@ class CurveModel:
             raise InvalidInputError(
                 f"indentation {np.nanmax(depth)}: beyond the model's max_depth {self.max_depth}"
             )
-        family = self._family_for(youngs_modulus, work_of_adhesion)
-        if family is not None:
-            return family.forces(depth, youngs_modulus)
-        table = self._table(youngs_modulus)
-        ratio = self.sample.contact_modulus(youngs_modulus) / table.contact_modulus
+        family = self._family_for(youngs_modulus)
+        if family is not None and family.reach(youngs_modulus, work_of_adhesion) >= self.max_depth:
+            return family.forces(depth, youngs_modulus, work_of_adhesion)
+        table, ratio = self._table(youngs_modulus, work_of_adhesion)
         return table.forces(depth, ratio, work_of_adhesion)
 
 

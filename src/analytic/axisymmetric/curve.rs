@@ -30,6 +30,14 @@ const POINTS: usize = 500;
 const SMALLEST: f64 = 1e-5;
 /// Attempts to widen the table until it reaches the deepest indentation.
 const WIDENINGS: usize = 24;
+/// The table's largest contact radius over the least that reaches its
+/// `max_depth` without adhesion: adhesion lifts the indenter at a given
+/// contact radius, so an adhesive curve needs larger radii to reach the
+/// same depth. Twice the radius holds, for a paraboloid on a half-space,
+/// works of adhesion up to `9 E* max_depth^2 / (4 pi a)` (`a` the contact
+/// radius at `max_depth` without adhesion: the lift at `2 a` is then `3
+/// max_depth`); beyond, [`ForceCurve::reach`] says how deep the table goes.
+const HEADROOM: f64 = 2.0;
 /// Safeguarded Newton steps of the inversion (1e-14 of an interval after 5).
 const NEWTON_STEPS: usize = 8;
 
@@ -75,6 +83,16 @@ impl ForceCurve {
     /// range of contact radii (a spherical cap's below 0.95 of its radius);
     /// others as [`LayeredTip::at_contact_radius`](super::LayeredTip::at_contact_radius).
     pub fn new(exact: &Axisymmetric, tip: Tip, max_depth: f64) -> Result<Self> {
+        let largest = Self::largest_radius(exact, tip, max_depth)?;
+        Self::tabulate(exact, tip, largest, max_depth)
+    }
+
+    /// The largest contact radius of a table that reaches `max_depth`:
+    /// Hertz's or Sneddon's at that depth, widened by half at a time (at
+    /// most [`WIDENINGS`] times, within the tip's and the solution's range)
+    /// until the exact depth there reaches `max_depth`, then [`HEADROOM`]
+    /// times that (within the range) for adhesive curves.
+    pub(super) fn largest_radius(exact: &Axisymmetric, tip: Tip, max_depth: f64) -> Result<f64> {
         let max_depth = positive_finite("max_depth", max_depth)?;
         let states = exact.tip(tip, 0.0)?;
         let ball = match tip {
@@ -84,44 +102,12 @@ impl ForceCurve {
         let limit = tip.max_contact_radius().min(exact.max_contact_radius());
         let mut largest = first_radius(tip, max_depth).min(limit);
         for _ in 0..WIDENINGS {
-            let step = -SMALLEST.ln() / (POINTS - 1) as f64;
-            let log_radius: Vec<f64> = (0..POINTS)
-                .map(|k| largest.ln() - step * (POINTS - 1 - k) as f64)
-                .collect();
-            let radius: Vec<f64> = log_radius.iter().map(|l| l.exp()).collect();
-            let mut columns = [(); 4].map(|_| Vec::with_capacity(POINTS));
-            for &a in &radius {
-                let state = match &ball {
-                    Some(ball) => ball.at_contact_radius(a)?,
-                    None => states.at_contact_radius(a)?,
-                };
-                let punch = exact.flat_punch(a)?;
-                for (column, value) in columns.iter_mut().zip([
-                    state.depth,
-                    state.force,
-                    punch.stiffness(),
-                    punch.edge_factor(),
-                ]) {
-                    column.push(value);
-                }
-            }
-            let [depth, force, stiffness, edge] = columns;
-            if depth[POINTS - 1] >= max_depth {
-                crate::solver::all_finite("force curve table", &depth)?;
-                crate::solver::all_finite("force curve table", &force)?;
-                return Ok(ForceCurve {
-                    contact_modulus: exact.contact_modulus,
-                    tip: Some(tip),
-                    log_radius,
-                    radius,
-                    log_depth: depth.iter().map(|d| d.ln()).collect(),
-                    log_force: force.iter().map(|f| f.ln()).collect(),
-                    depth,
-                    force,
-                    stiffness,
-                    edge,
-                    max_depth,
-                });
+            let state = match &ball {
+                Some(ball) => ball.at_contact_radius(largest)?,
+                None => states.at_contact_radius(largest)?,
+            };
+            if state.depth >= max_depth {
+                return Ok((HEADROOM * largest).min(limit));
             }
             if largest >= limit {
                 break;
@@ -135,6 +121,147 @@ impl ForceCurve {
         })
     }
 
+    /// The table of `tip` on the body of `exact` at [`POINTS`] radii evenly
+    /// spaced in `ln a` up to `largest` (m), for indentations up to
+    /// `max_depth` (m), which the depth at `largest` must reach.
+    pub(super) fn tabulate(
+        exact: &Axisymmetric,
+        tip: Tip,
+        largest: f64,
+        max_depth: f64,
+    ) -> Result<Self> {
+        let max_depth = positive_finite("max_depth", max_depth)?;
+        let largest = positive_finite("largest contact radius of a table", largest)?;
+        let states = exact.tip(tip, 0.0)?;
+        let ball = match tip {
+            Tip::Paraboloid { radius } => Some(exact.paraboloid(radius, 0.0)?),
+            _ => None,
+        };
+        let step = -SMALLEST.ln() / (POINTS - 1) as f64;
+        let log_radius: Vec<f64> = (0..POINTS)
+            .map(|k| largest.ln() - step * (POINTS - 1 - k) as f64)
+            .collect();
+        let radius: Vec<f64> = log_radius.iter().map(|l| l.exp()).collect();
+        let mut columns = [(); 4].map(|_| Vec::with_capacity(POINTS));
+        for &a in &radius {
+            let state = match &ball {
+                Some(ball) => ball.at_contact_radius(a)?,
+                None => states.at_contact_radius(a)?,
+            };
+            let punch = exact.flat_punch(a)?;
+            for (column, value) in columns.iter_mut().zip([
+                state.depth,
+                state.force,
+                punch.stiffness(),
+                punch.edge_factor(),
+            ]) {
+                column.push(value);
+            }
+        }
+        let [depth, force, stiffness, edge] = columns;
+        if !(depth[POINTS - 1] >= max_depth) {
+            return Err(Error::InvalidParameter {
+                name: "max_depth",
+                value: max_depth,
+                expected: "a depth the table's largest contact radius reaches",
+            });
+        }
+        crate::solver::all_finite("force curve table", &depth)?;
+        crate::solver::all_finite("force curve table", &force)?;
+        Ok(ForceCurve {
+            contact_modulus: exact.contact_modulus,
+            tip: Some(tip),
+            log_radius,
+            radius,
+            log_depth: depth.iter().map(|d| d.ln()).collect(),
+            log_force: force.iter().map(|f| f.ln()).collect(),
+            depth,
+            force,
+            stiffness,
+            edge,
+            max_depth,
+        })
+    }
+
+    /// The exact solution a table of `tip` on `substrate` to `max_depth`
+    /// needs: eight times Hertz's or Sneddon's contact radius at that depth,
+    /// within [`Axisymmetric::MAX_RADIUS_OVER_THICKNESS`] layer thicknesses.
+    pub(super) fn exact_on(
+        substrate: &Substrate,
+        tip: Tip,
+        max_depth: f64,
+    ) -> Result<Axisymmetric> {
+        let max_depth = positive_finite("max_depth", max_depth)?;
+        let reach = 8.0 * first_radius(tip.validated()?, max_depth);
+        Axisymmetric::up_to_contact_radius_in_range(substrate, reach)
+    }
+
+    /// The table whose columns are `sum_k c_k` of the `curves`' (tables on
+    /// the same radii, or flat punches of one radius), the forces and
+    /// stiffnesses per unit of each table's contact modulus and then times
+    /// `contact_modulus` (Pa): the interpolant of a family of tables at one
+    /// modulus. `None` unless the tables share their radii and the result
+    /// is positive and finite where the tables' logarithms are needed.
+    pub(super) fn combine(
+        curves: &[ForceCurve],
+        coefficients: &[f64],
+        contact_modulus: f64,
+    ) -> Option<ForceCurve> {
+        let first = curves.first()?;
+        let n = first.radius.len();
+        let mut out = ForceCurve {
+            contact_modulus,
+            depth: vec![0.0; n],
+            force: vec![0.0; n],
+            stiffness: vec![0.0; n],
+            edge: vec![0.0; n],
+            log_depth: Vec::new(),
+            log_force: Vec::new(),
+            ..first.clone_shape()
+        };
+        for (curve, &c) in curves.iter().zip(coefficients) {
+            if curve.radius != first.radius || curve.tip != first.tip {
+                return None;
+            }
+            if c == 0.0 {
+                continue;
+            }
+            let per_modulus = c * contact_modulus / curve.contact_modulus;
+            for k in 0..n {
+                out.depth[k] += c * curve.depth[k];
+                out.force[k] += per_modulus * curve.force[k];
+                out.stiffness[k] += per_modulus * curve.stiffness[k];
+                out.edge[k] += c * curve.edge[k];
+            }
+            out.max_depth = out.max_depth.min(curve.max_depth);
+        }
+        if out.tip.is_some() {
+            out.log_depth = out.depth.iter().map(|d| d.ln()).collect();
+            out.log_force = out.force.iter().map(|f| f.ln()).collect();
+        }
+        let finite = [&out.log_depth, &out.log_force, &out.stiffness, &out.edge]
+            .iter()
+            .all(|column| column.iter().all(|v| v.is_finite()));
+        finite.then_some(out)
+    }
+
+    /// The table's tip and radii, with empty columns.
+    fn clone_shape(&self) -> ForceCurve {
+        ForceCurve {
+            contact_modulus: self.contact_modulus,
+            tip: self.tip,
+            log_radius: self.log_radius.clone(),
+            radius: self.radius.clone(),
+            depth: Vec::new(),
+            force: Vec::new(),
+            log_depth: Vec::new(),
+            log_force: Vec::new(),
+            stiffness: Vec::new(),
+            edge: Vec::new(),
+            max_depth: self.max_depth,
+        }
+    }
+
     /// The curve of `tip` on `substrate` to `max_depth` (m), with the exact
     /// solutions built as far as the table needs: eight times Hertz's or
     /// Sneddon's contact radius at that depth, within
@@ -145,9 +272,7 @@ impl ForceCurve {
     /// # Errors
     /// As [`ForceCurve::new`] and [`Axisymmetric::new`].
     pub fn on(substrate: &Substrate, tip: Tip, max_depth: f64) -> Result<Self> {
-        let max_depth = positive_finite("max_depth", max_depth)?;
-        let reach = 8.0 * first_radius(tip.validated()?, max_depth);
-        let exact = Axisymmetric::up_to_contact_radius_in_range(substrate, reach)?;
+        let exact = Self::exact_on(substrate, tip, max_depth)?;
         Self::new(&exact, tip, max_depth)
     }
 
@@ -199,11 +324,40 @@ impl ForceCurve {
     /// 0 before contact and after detachment. Scaling by the modulus is
     /// exact only on a single layer over a rigid base or a half-space;
     /// elsewhere build the table at the modulus wanted and pass 1. A NaN,
-    /// a depth beyond [`max_depth`](Self::max_depth), a ratio that is not
-    /// positive or a negative work gives NaN. For many depths,
-    /// [`forces`](Self::forces) builds the branch once.
+    /// a depth beyond [`reach`](Self::reach) (the table's
+    /// [`max_depth`](Self::max_depth) without adhesion, less with it), a
+    /// ratio that is not positive or a negative work gives NaN. For many
+    /// depths, [`forces`](Self::forces) builds the branch once.
     pub fn force(&self, depth: f64, modulus_ratio: f64, work_of_adhesion: f64) -> f64 {
         self.forces(&[depth], modulus_ratio, work_of_adhesion)[0]
+    }
+
+    /// The deepest indentation (m) whose force the table gives for
+    /// `modulus_ratio` and `work_of_adhesion` (J/m^2): its
+    /// [`max_depth`](Self::max_depth) without adhesion; with adhesion the
+    /// JKR depth at the table's largest contact radius, if that is less
+    /// (adhesion lifts the indenter at a given contact radius, by more the
+    /// larger the work and the softer the layer). NaN where
+    /// [`forces`](Self::forces) gives NaN for every depth. A table that
+    /// must reach deeper with adhesion is built to a larger `max_depth`.
+    pub fn reach(&self, modulus_ratio: f64, work_of_adhesion: f64) -> f64 {
+        let usable = modulus_ratio > 0.0
+            && modulus_ratio.is_finite()
+            && work_of_adhesion >= 0.0
+            && work_of_adhesion.is_finite();
+        let last = self.radius.len() - 1;
+        match (usable, self.tip) {
+            (false, _) => f64::NAN,
+            (true, None) => self.max_depth,
+            (true, Some(_)) => {
+                let modulus = modulus_ratio * self.contact_modulus;
+                let lift = (2.0 * std::f64::consts::PI * self.radius[last] * work_of_adhesion
+                    / modulus)
+                    .sqrt()
+                    / self.edge[last];
+                self.max_depth.min(self.depth[last] - lift)
+            }
+        }
     }
 
     /// [`force`](Self::force) at each of `depths`.
@@ -265,7 +419,9 @@ impl ForceCurve {
         depths
             .iter()
             .map(|&depth| match depth {
-                x if outside(x) => f64::NAN,
+                // Beyond the adhesive branch's deepest state: the table
+                // does not reach (see `reach`).
+                x if outside(x) || x > d[n - 1] => f64::NAN,
                 x if x < d[start] || start + 1 >= n => 0.0,
                 x => hermite(&self.log_radius, &f, invert(&self.log_radius, &d, x, start)),
             })

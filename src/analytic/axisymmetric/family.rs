@@ -10,20 +10,25 @@ use super::{ForceCurve, Tip};
 /// The fewest and most Chebyshev nodes a [`ModulusFamily`] may have.
 pub const MODULUS_NODES: (usize, usize) = (4, 64);
 
-/// The approach curves (no adhesion) of one tip on a body whose top
+/// The force curves (approach and retract) of one tip on a body whose top
 /// layer's Young's modulus ranges over `[lo, hi]`, the rest fixed
-/// ([`Substrate::with_surface_youngs_modulus`]): exact
-/// tables ([`ForceCurve`]) at `n` Chebyshev nodes of the second kind in
-/// `ln E`, and at any modulus in the range the barycentric interpolant
-/// (Berrut & Trefethen 2004, SIAM Rev. 46, 501) of `F / E*` at each depth.
-/// `F / E*` is analytic in `ln E` (it moves from the support-dominated to
-/// the layer-dominated limit over a decade or two), so the error falls
-/// geometrically with `n`; `tests/force_curve.rs` measures it. On glass or
-/// a half-space a single [`ForceCurve`] scales exactly and needs no family.
+/// ([`Substrate::with_surface_youngs_modulus`]): exact tables
+/// ([`ForceCurve`]) at `n` Chebyshev nodes of the second kind in `ln E`, on
+/// one set of contact radii, and at any modulus in the range the table
+/// whose columns (depth, force and punch stiffness per unit `E*`, edge
+/// factor) are the barycentric interpolants (Berrut & Trefethen 2004, SIAM
+/// Rev. 46, 501) of the nodes' at each contact radius
+/// ([`curve`](Self::curve)). They are analytic in `ln E` (the contact
+/// moves from the support-dominated to the layer-dominated limit over a
+/// decade or two), so the error falls geometrically with `n`;
+/// `tests/force_curve.rs` measures it, with and without adhesion. On glass
+/// or a half-space a single [`ForceCurve`] scales exactly and needs no
+/// family.
 ///
 /// A fit on an elastic support otherwise builds a table per modulus it
 /// tries (0.3 to 3 s each); a force map of many curves on one sample
-/// builds the family once and then evaluates a curve in `n` table look-ups.
+/// builds the family once and then evaluates a curve at the cost of one
+/// table's (`cargo bench --bench axisymmetric`, `BENCHMARKS.md`).
 ///
 /// ```
 /// use layered_contact::analytic::{Axisymmetric, ForceCurve, ModulusFamily, Tip};
@@ -36,6 +41,9 @@ pub const MODULUS_NODES: (usize, usize) = (4, 64);
 /// let direct = ForceCurve::on(&film.with_surface_youngs_modulus(8e3)?, tip, 2e-6)?;
 /// let (f, g) = (family.forces(&[1e-6], 8e3)[0], direct.force(1e-6, 1.0, 0.0));
 /// assert!((f / g - 1.0).abs() < 1e-6);
+/// // Retract curves too (work of adhesion 1 mJ/m^2):
+/// let retract = family.curve(8e3)?.force(-0.1e-6, 1.0, 1e-3);
+/// assert!((retract / direct.force(-0.1e-6, 1.0, 1e-3) - 1.0).abs() < 1e-6);
 /// # Ok::<(), layered_contact::Error>(())
 /// ```
 #[derive(Debug, Clone)]
@@ -103,16 +111,33 @@ impl ModulusFamily {
                 }
             })
             .collect();
-        let curves = x
+        let substrates = x
             .iter()
-            .map(|&ln_e| {
-                let substrate = body.with_surface_youngs_modulus(ln_e.exp())?;
-                match tip {
-                    Some(tip) => ForceCurve::on(&substrate, tip, max_depth),
-                    None => ForceCurve::flat_punch_on(&substrate, radius),
-                }
-            })
+            .map(|&ln_e| body.with_surface_youngs_modulus(ln_e.exp()))
             .collect::<Result<Vec<_>>>()?;
+        let curves = match tip {
+            None => substrates
+                .iter()
+                .map(|substrate| ForceCurve::flat_punch_on(substrate, radius))
+                .collect::<Result<Vec<_>>>()?,
+            Some(tip) => {
+                // One set of radii for every node, wide enough for the
+                // node that needs the widest, so that the tables combine
+                // at each contact radius.
+                let exact = substrates
+                    .iter()
+                    .map(|substrate| ForceCurve::exact_on(substrate, tip, max_depth))
+                    .collect::<Result<Vec<_>>>()?;
+                let mut largest: f64 = 0.0;
+                for e in &exact {
+                    largest = largest.max(ForceCurve::largest_radius(e, tip, max_depth)?);
+                }
+                exact
+                    .iter()
+                    .map(|e| ForceCurve::tabulate(e, tip, largest, max_depth))
+                    .collect::<Result<Vec<_>>>()?
+            }
+        };
         Ok(ModulusFamily {
             nodes: x,
             range: (lo, hi),
@@ -126,13 +151,30 @@ impl ModulusFamily {
         self.range
     }
 
-    /// The approach force (N) at each of `depths` (m) for a top layer of
-    /// Young's modulus `youngs_modulus` (Pa): NaN outside the range, and
-    /// where a table gives NaN (beyond its depth).
-    pub fn forces(&self, depths: &[f64], youngs_modulus: f64) -> Vec<f64> {
+    /// The table at Young's modulus `youngs_modulus` (Pa) of the top layer:
+    /// at each contact radius of the tables, the barycentric interpolant in
+    /// `ln E` of the non-adhesive depth, the force and the punch stiffness
+    /// per unit `E*`, and the punch's edge factor. Its curves, with or
+    /// without adhesion ([`ForceCurve::forces`] with ratio 1), cost what a
+    /// single table's do.
+    ///
+    /// Interpolating at fixed contact radius rather than at fixed depth
+    /// serves retract curves too: the JKR state at a radius follows from
+    /// these columns alone, while the nodes' branches end at different
+    /// depths.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for a modulus outside
+    /// [`youngs_range`](Self::youngs_range) or an interpolated table that
+    /// is not positive and finite where it must be.
+    pub fn curve(&self, youngs_modulus: f64) -> Result<ForceCurve> {
         let (lo, hi) = self.range;
         if !(youngs_modulus >= lo && youngs_modulus <= hi) {
-            return vec![f64::NAN; depths.len()];
+            return Err(Error::InvalidParameter {
+                name: "youngs_modulus",
+                value: youngs_modulus,
+                expected: "within the family's youngs_range (Pa)",
+            });
         }
         let x = youngs_modulus.ln();
         // The node itself, or the barycentric coefficients.
@@ -152,18 +194,46 @@ impl ModulusFamily {
                 raw.iter().map(|r| r / sum).collect()
             }
         };
-        let mut out = vec![0.0; depths.len()];
-        for ((curve, c), node) in self.curves.iter().zip(&coefficients).zip(&self.nodes) {
-            if *c == 0.0 {
-                continue;
-            }
-            // F / E* of this node, interpolated, times E* of the modulus
-            // wanted: E*/E*_node = E / E_node (one Poisson ratio).
-            let scale = c * (x - node).exp();
-            for (o, f) in out.iter_mut().zip(curve.forces(depths, 1.0, 0.0)) {
-                *o += scale * f;
-            }
+        // E* of the modulus wanted: E*/E*_node = E / E_node (one Poisson
+        // ratio).
+        let modulus = self.curves[0].contact_modulus() * (x - self.nodes[0]).exp();
+        ForceCurve::combine(&self.curves, &coefficients, modulus).ok_or(Error::InvalidParameter {
+            name: "youngs_modulus",
+            value: youngs_modulus,
+            expected: "a modulus whose interpolated table is positive and finite",
+        })
+    }
+
+    /// The deepest indentation (m) whose force the family gives at
+    /// `youngs_modulus` (Pa) with `work_of_adhesion` (J/m^2): see
+    /// [`ForceCurve::reach`]. NaN outside the range.
+    pub fn reach(&self, youngs_modulus: f64, work_of_adhesion: f64) -> f64 {
+        self.curve(youngs_modulus)
+            .map_or(f64::NAN, |curve| curve.reach(1.0, work_of_adhesion))
+    }
+
+    /// The approach force (N) at each of `depths` (m) for a top layer of
+    /// Young's modulus `youngs_modulus` (Pa): NaN outside the range, and
+    /// where a table gives NaN (beyond its depth). See
+    /// [`curve`](Self::curve).
+    pub fn forces(&self, depths: &[f64], youngs_modulus: f64) -> Vec<f64> {
+        self.adhesive_forces(depths, youngs_modulus, 0.0)
+    }
+
+    /// The force (N) at each of `depths` (m) for a top layer of Young's
+    /// modulus `youngs_modulus` (Pa) and work of adhesion
+    /// `work_of_adhesion` (J/m^2), along the fixed-grips branch (as
+    /// [`ForceCurve::forces`]): NaN outside the range, for a negative work
+    /// and beyond the tables' depth.
+    pub fn adhesive_forces(
+        &self,
+        depths: &[f64],
+        youngs_modulus: f64,
+        work_of_adhesion: f64,
+    ) -> Vec<f64> {
+        match self.curve(youngs_modulus) {
+            Ok(curve) => curve.forces(depths, 1.0, work_of_adhesion),
+            Err(_) => vec![f64::NAN; depths.len()],
         }
-        out
     }
 }

@@ -97,8 +97,43 @@ pub(super) fn build_table(
     })
 }
 
+/// How many times a table is rebuilt twice as deep when an adhesive curve
+/// does not reach the model's depth (`ForceCurve::reach`).
+const DEEPER_TABLES: usize = 6;
+
 impl Model {
+    /// The model's forces at `depths` (m) for the parameters `v`: NaN only
+    /// where no exact table reaches (a depth beyond the model's, or
+    /// adhesion so strong that tables [`DEEPER_TABLES`] times twice as deep
+    /// still end above it).
     pub(super) fn forces(&self, depths: &[f64], v: &Values) -> Vec<f64> {
+        let out = self.forces_from_tables(depths, v);
+        let short = |forces: &[f64]| {
+            forces
+                .iter()
+                .zip(depths)
+                .any(|(f, d)| f.is_nan() && *d <= self.max_depth)
+        };
+        if !short(&out) {
+            return out;
+        }
+        // Adhesion lifts the indenter at a given contact radius: the
+        // tables end above the deepest points. Deeper ones, built here.
+        let mut depth = self.max_depth;
+        for _ in 0..DEEPER_TABLES {
+            depth *= 2.0;
+            let Ok(table) = self.table_for(v, depth) else {
+                break;
+            };
+            let forces = table.forces(depths, 1.0, v.work);
+            if !short(&forces) {
+                return forces;
+            }
+        }
+        out
+    }
+
+    fn forces_from_tables(&self, depths: &[f64], v: &Values) -> Vec<f64> {
         let base = self.sample.base;
         let fixed = v.thickness == self.sample.thickness
             && v.base_modulus == base.map(|b| b.youngs_modulus());
@@ -109,28 +144,30 @@ impl Model {
         }
         if let Some(family) = &self.family {
             let (lo, hi) = family.youngs_range();
-            if fixed && v.work == 0.0 && (lo..=hi).contains(&v.modulus) {
-                return family.forces(depths, v.modulus);
+            if fixed && (lo..=hi).contains(&v.modulus) {
+                return family.adhesive_forces(depths, v.modulus, v.work);
             }
         }
-        // The support's Poisson ratio stays as given.
-        let table = match (base, v.base_modulus) {
-            (Some(b), Some(e)) => Material::new(e, b.poisson_ratio()).map(Some),
-            _ => Ok(base),
-        }
-        .map_err(Into::into)
-        .and_then(|base| {
-            let sample = Sample {
-                thickness: v.thickness,
-                base,
-                below: self.sample.below.clone(),
-                ..self.sample
-            };
-            build_table(&sample, self.tip, self.radius, self.max_depth, v.modulus)
-        });
-        match table {
+        match self.table_for(v, self.max_depth) {
             Ok(table) => table.forces(depths, 1.0, v.work),
             Err(_) => vec![f64::NAN; depths.len()],
         }
+    }
+
+    /// The exact table at the parameters `v` to `max_depth`.
+    fn table_for(&self, v: &Values, max_depth: f64) -> Result<ForceCurve> {
+        let base = self.sample.base;
+        // The support's Poisson ratio stays as given.
+        let base = match (base, v.base_modulus) {
+            (Some(b), Some(e)) => Some(Material::new(e, b.poisson_ratio())?),
+            _ => base,
+        };
+        let sample = Sample {
+            thickness: v.thickness,
+            base,
+            below: self.sample.below.clone(),
+            ..self.sample
+        };
+        build_table(&sample, self.tip, self.radius, max_depth, v.modulus)
     }
 }
