@@ -159,15 +159,15 @@ impl ForceCurve {
             }
         }
         let [depth, force, stiffness, edge] = columns;
-        if !(depth[POINTS - 1] >= max_depth) {
+        crate::solver::all_finite("force curve table", &depth)?;
+        crate::solver::all_finite("force curve table", &force)?;
+        if depth[POINTS - 1] < max_depth {
             return Err(Error::InvalidParameter {
                 name: "max_depth",
                 value: max_depth,
                 expected: "a depth the table's largest contact radius reaches",
             });
         }
-        crate::solver::all_finite("force curve table", &depth)?;
-        crate::solver::all_finite("force curve table", &force)?;
         Ok(ForceCurve {
             contact_modulus: exact.contact_modulus,
             tip: Some(tip),
