@@ -1,7 +1,7 @@
 //! The figure of `doc::bottom_effect`: the exact force of a paraboloid on
 //! an incompressible layer bonded to glass, relative to Hertz's, against
 //! `chi = sqrt(R d)/h`, with the exact fourth-order series and the series
-//! of Dimitriadis et al. (2002). Writes `src/doc/bottom_effect.svg`, which
+//! of Dimitriadis et al. (2002) and Garcia & Garcia (2018). Writes `src/doc/bottom_effect.svg`, which
 //! the guide page includes.
 //!
 //! ```sh
@@ -12,7 +12,7 @@ use plotters::prelude::*;
 use plotters::style::FontStyle;
 
 use layered_contact::analytic::{
-    truncated_series, Axisymmetric, ParaboloidForceSeries, DIMITRIADIS_BONDED,
+    truncated_series, Axisymmetric, ParaboloidForceSeries, DIMITRIADIS_BONDED, GARCIA_PARABOLOID,
 };
 use layered_contact::{Material, Substrate};
 
@@ -62,9 +62,10 @@ fn main() -> Result<()> {
         ))?
         .label("exact (layered-contact)")
         .legend(|(x, y)| PathElement::new([(x, y), (x + 20, y)], BLACK.stroke_width(2)));
-    let curves: [(&str, Option<&[f64; 4]>, RGBColor); 3] = [
+    let curves: [(&str, Option<&[f64; 4]>, RGBColor); 4] = [
         ("exact series, 4th order", Some(&series), BLUE),
         ("Dimitriadis et al. (2002)", Some(&DIMITRIADIS_BONDED), RED),
+        ("Garcia & Garcia (2018)", Some(&GARCIA_PARABOLOID), RGBColor(0, 150, 70)),
         ("Hertz", None, RGBColor(120, 120, 120)),
     ];
     for (name, c, color) in curves {

@@ -48,8 +48,9 @@ pub use lambda::{a_m, a_m_of, lambda, lambda_g};
 pub use layered_jkr::LayeredJkrCycle;
 pub use punch::{BoussinesqPunch, JkrFlatPunch};
 pub use series::{
-    truncated_series, ParaboloidForceSeries, PunchStiffnessSeries, SeriesStiffness,
-    DIMITRIADIS_BONDED, DIMITRIADIS_UNBONDED,
+    truncated_series, ConeForceSeries, ParaboloidForceSeries, PunchStiffnessSeries,
+    SeriesStiffness, DIMITRIADIS_BONDED, DIMITRIADIS_UNBONDED, GARCIA_CONE, GARCIA_PARABOLOID,
+    GARCIA_PUNCH,
 };
 pub use sinusoid::JkrSinusoid;
 

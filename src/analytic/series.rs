@@ -238,6 +238,112 @@ impl ParaboloidForceSeries {
     }
 }
 
+/// The bonded-layer coefficients of Garcia & Garcia (2018, Biophys. J.
+/// 114, 2923) at `nu = 0.5` for a paraboloid, in `chi = sqrt(R d)/h`: 1.133,
+/// 1.497, 1.469, 0.755. Their first two are the exact series' form, `c` and
+/// `(7/6) c^2`, with Dimitriadis' `c = 1.133` (and `c^2` = 1.283) where the
+/// exact `c` is 1.12695; the exact coefficients are those of
+/// [`ParaboloidForceSeries`] ([`doc::bottom_effect`](crate::doc::bottom_effect)
+/// compares them).
+pub const GARCIA_PARABOLOID: [f64; 4] = [1.133, 1.497, 1.469, 0.755];
+
+/// Garcia & Garcia (2018) for a cone, in `chi = d tan(theta)/h`
+/// (`theta` the half-angle): 0.721, 0.650, 0.491, 0.225. The first two are
+/// the exact form `2 c/pi`, `5 c^2/pi^2` with Dimitriadis' `c`; the exact
+/// coefficients are those of [`ConeForceSeries`].
+pub const GARCIA_CONE: [f64; 4] = [0.721, 0.650, 0.491, 0.225];
+
+/// Garcia & Garcia (2018) for a flat punch, in `chi = a/h`: 1.133, 1.283,
+/// 0.598, -0.291, against the exact [`PunchStiffnessSeries`] (Lyashenko,
+/// Popov & Borysiuk 2023): `c`, `c^2` with Dimitriadis' `c`.
+pub const GARCIA_PUNCH: [f64; 4] = [1.133, 1.283, 0.598, -0.291];
+
+/// The force of a cone of half-angle `theta` pressed into a layer bonded
+/// to a rigid base over Sneddon's, `F_S = (2/pi) E* tan(theta) d^2`,
+/// expanded in `chi = d tan(theta)/h` to fourth order, with `c = 2 a0/pi`:
+///
+/// ```text
+/// F / F_S = 1 + (2c/pi) chi + (5 c^2/pi^2) chi^2 + [14 c^3/pi^3 + 16 a1/pi^4] chi^3
+///             + [42 c^4/pi^4 + 112 c a1/pi^5] chi^4 + O(chi^5).
+/// ```
+///
+/// The first two orders follow from the constant shift of the paraboloid's
+/// derivation ([`doc::bottom_effect`](crate::doc::bottom_effect)): with
+/// Sneddon's `d_0 = (pi/2) a cot(theta)` and `F = (pi/2) E* a^2 cot(theta)`,
+/// `y = a/h` solves `y - (c/2) y^2 = (2/pi) chi` and `F/F_S = (pi y / (2
+/// chi))^2`. In `u = 2 chi/pi` the series is `1 + c u + (5/4) c^2 u^2 +
+/// (7/4) c^3 u^3 + (21/8) c^4 u^4` plus `(2 a1/pi) u^3 + (7 c a1/pi) u^4`;
+/// the rational factors of the third and fourth orders were identified from
+/// exact solutions at Poisson ratios 0 and 0.5 and then checked at 0.3 and
+/// 0.45 (`tests/bottom_effect.rs`, to the least-squares fits' precision, as
+/// for the paraboloid).
+///
+/// ```
+/// use layered_contact::analytic::{ConeForceSeries, GARCIA_CONE};
+///
+/// let c = ConeForceSeries::new(0.5)?.coefficients();
+/// // 0.7174, 0.6434, 0.4889, 0.3004 against Garcia & Garcia's 0.721, 0.650,
+/// // 0.491, 0.225:
+/// assert!((c[0] - 0.71744).abs() < 1e-5 && (GARCIA_CONE[0] / c[0] - 1.0) < 0.006);
+/// Ok::<(), layered_contact::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ConeForceSeries {
+    coefficients: [f64; 4],
+}
+
+impl ConeForceSeries {
+    /// The series for a layer of Poisson ratio `poisson_ratio` bonded to a
+    /// rigid base.
+    ///
+    /// # Errors
+    /// [`Error::InvalidPoissonRatio`](crate::Error::InvalidPoissonRatio) if
+    /// `poisson_ratio` is outside `[0, 0.5]`.
+    pub fn new(poisson_ratio: f64) -> Result<Self> {
+        Ok(Self::from_moments(
+            a_m(0, poisson_ratio)?,
+            a_m(1, poisson_ratio)?,
+        ))
+    }
+
+    /// The series for a layer resting on a rigid base without friction,
+    /// the same for every Poisson ratio.
+    ///
+    /// # Errors
+    /// As [`a_m_of`](super::a_m_of).
+    pub fn frictionless() -> Result<Self> {
+        let resting = crate::substrate::CoatingFunctions::frictionless_rigid_base();
+        Ok(Self::from_moments(
+            super::a_m_of(0, &resting)?,
+            super::a_m_of(1, &resting)?,
+        ))
+    }
+
+    fn from_moments(a0: f64, a1: f64) -> Self {
+        use std::f64::consts::PI;
+        let c = 2.0 * a0 / PI;
+        let (p2, p3, p4) = (PI * PI, PI.powi(3), PI.powi(4));
+        ConeForceSeries {
+            coefficients: [
+                2.0 * c / PI,
+                5.0 * c * c / p2,
+                14.0 * c.powi(3) / p3 + 16.0 * a1 / p4,
+                42.0 * c.powi(4) / p4 + 112.0 * c * a1 / (p4 * PI),
+            ],
+        }
+    }
+
+    /// The coefficients of `chi`, `chi^2`, `chi^3`, `chi^4`.
+    pub fn coefficients(&self) -> [f64; 4] {
+        self.coefficients
+    }
+
+    /// `F / F_S` at `chi = d tan(theta)/h` by the truncated series.
+    pub fn ratio_at(&self, chi: f64) -> f64 {
+        truncated_series(&self.coefficients, chi)
+    }
+}
+
 /// `1 + c[0] x + c[1] x^2 + c[2] x^3 + c[3] x^4`: a bottom-effect series
 /// such as [`DIMITRIADIS_BONDED`] at `x`.
 pub fn truncated_series(coefficients: &[f64; 4], x: f64) -> f64 {
