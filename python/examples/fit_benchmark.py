@@ -15,6 +15,7 @@ import sys
 import time
 
 import numpy as np
+import scipy.optimize  # noqa: F401  (imported here, not inside the first timed fit)
 
 from layered_contact.fit import CurveModel, Sample, fit_curve
 
