@@ -65,7 +65,11 @@ fn main() -> Result<()> {
     let curves: [(&str, Option<&[f64; 4]>, RGBColor); 4] = [
         ("exact series, 4th order", Some(&series), BLUE),
         ("Dimitriadis et al. (2002)", Some(&DIMITRIADIS_BONDED), RED),
-        ("Garcia & Garcia (2018)", Some(&GARCIA_PARABOLOID), RGBColor(0, 150, 70)),
+        (
+            "Garcia & Garcia (2018)",
+            Some(&GARCIA_PARABOLOID),
+            RGBColor(0, 150, 70),
+        ),
         ("Hertz", None, RGBColor(120, 120, 120)),
     ];
     for (name, c, color) in curves {

@@ -232,7 +232,10 @@ fn garcia_and_garcia_coefficients_against_the_exact_series() {
     ];
     for (published, form) in forms {
         for k in 0..2 {
-            assert!((published[k] - form[k]).abs() <= 5e-4, "{published:?} {form:?}");
+            assert!(
+                (published[k] - form[k]).abs() <= 5e-4,
+                "{published:?} {form:?}"
+            );
         }
     }
     let exact = [
@@ -265,17 +268,28 @@ fn where_the_garcia_series_leave_the_exact_curve() {
     let exact = Axisymmetric::new(&substrate, 20.0).unwrap();
     let paraboloid_series = ParaboloidForceSeries::new(0.5).unwrap().coefficients();
     let cone_series = ConeForceSeries::new(0.5).unwrap().coefficients();
-    let rows: [(&str, fn(&Axisymmetric, f64, f64) -> (f64, f64), Option<&[f64; 4]>); 5] = [
+    let rows: [(
+        &str,
+        fn(&Axisymmetric, f64, f64) -> (f64, f64),
+        Option<&[f64; 4]>,
+    ); 5] = [
         ("paraboloid, Garcia", paraboloid, Some(&GARCIA_PARABOLOID)),
         ("cone, Sneddon", cone, None),
         ("cone, Garcia", cone, Some(&GARCIA_CONE)),
         ("cone, exact series", cone, Some(&cone_series)),
-        ("paraboloid, exact series", paraboloid, Some(&paraboloid_series)),
+        (
+            "paraboloid, exact series",
+            paraboloid,
+            Some(&paraboloid_series),
+        ),
     ];
     let mut table = Vec::new();
     for (name, tip, c) in rows {
         let at = [0.05, 0.2].map(|tol| departure(&exact, estar, tip, c, tol));
-        println!("{name}: 5 % at chi = {:.4}, 20 % at chi = {:.4}", at[0], at[1]);
+        println!(
+            "{name}: 5 % at chi = {:.4}, 20 % at chi = {:.4}",
+            at[0], at[1]
+        );
         for eps in [0.2, 0.45, 0.9] {
             let (chi, ratio) = tip(&exact, estar, eps);
             let model = c.map_or(1.0, |c| truncated_series(c, chi));
