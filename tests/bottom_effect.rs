@@ -91,10 +91,14 @@ fn series_coefficients_match_the_exact_solution() {
 /// a scan of the exact curve of `tip` (`chi` and the ratio at a contact
 /// radius over the thickness, as [`paraboloid`] and [`cone`]) in contact
 /// radius and bisection.
+/// `chi` and the force ratio of a tip at a contact radius over the
+/// thickness ([`paraboloid`], [`cone`]).
+type TipRatio = fn(&Axisymmetric, f64, f64) -> (f64, f64);
+
 fn departure(
     exact: &Axisymmetric,
     estar: f64,
-    tip: fn(&Axisymmetric, f64, f64) -> (f64, f64),
+    tip: TipRatio,
     coefficients: Option<&[f64; 4]>,
     tol: f64,
 ) -> f64 {
@@ -268,11 +272,7 @@ fn where_the_garcia_series_leave_the_exact_curve() {
     let exact = Axisymmetric::new(&substrate, 20.0).unwrap();
     let paraboloid_series = ParaboloidForceSeries::new(0.5).unwrap().coefficients();
     let cone_series = ConeForceSeries::new(0.5).unwrap().coefficients();
-    let rows: [(
-        &str,
-        fn(&Axisymmetric, f64, f64) -> (f64, f64),
-        Option<&[f64; 4]>,
-    ); 5] = [
+    let rows: [(&str, TipRatio, Option<&[f64; 4]>); 5] = [
         ("paraboloid, Garcia", paraboloid, Some(&GARCIA_PARABOLOID)),
         ("cone, Sneddon", cone, None),
         ("cone, Garcia", cone, Some(&GARCIA_CONE)),
