@@ -53,6 +53,12 @@ pub(crate) struct Solution {
     edge_contact: bool,
     /// Iterations on this grid.
     iterations: usize,
+    /// Iterations of the multi-resolution start on the coarser grids.
+    coarse_iterations: usize,
+    /// The mean gap over the grid, m (`u_bar` of rough-contact studies;
+    /// `None` without the gap field or where the indenter does not cover
+    /// the grid).
+    mean_gap: Option<f64>,
     /// Final residual.
     residual: f64,
     /// Cell pressures, Pa (compression positive).
@@ -92,6 +98,8 @@ impl Solution {
             contact_cells: s.contact_cells,
             edge_contact: s.edge_contact,
             iterations: s.iterations,
+            coarse_iterations: s.coarse_iterations,
+            mean_gap: s.mean_gap(),
             residual: s.residual,
             pressure: field(py, &s.pressure)?,
             displacement: field(py, &s.displacement)?,
@@ -119,6 +127,8 @@ impl Solution {
         state.set_item("contact_cells", s.contact_cells)?;
         state.set_item("edge_contact", s.edge_contact)?;
         state.set_item("iterations", s.iterations)?;
+        state.set_item("coarse_iterations", s.coarse_iterations)?;
+        state.set_item("mean_gap", s.mean_gap)?;
         state.set_item("residual", s.residual)?;
         state.set_item("pressure", &s.pressure)?;
         state.set_item("displacement", &s.displacement)?;
@@ -144,6 +154,8 @@ impl Solution {
             contact_cells: get("contact_cells")?.extract()?,
             edge_contact: get("edge_contact")?.extract()?,
             iterations: get("iterations")?.extract()?,
+            coarse_iterations: get("coarse_iterations")?.extract()?,
+            mean_gap: get("mean_gap")?.extract()?,
             residual: get("residual")?.extract()?,
             pressure: get("pressure")?.extract()?,
             displacement: get("displacement")?.extract()?,

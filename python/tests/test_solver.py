@@ -85,3 +85,34 @@ def test_solves_release_the_gil():
     # Holding the GIL would freeze the other thread for the whole solve
     # (a count of a few at most); released, it counts millions.
     assert during > 10_000
+
+
+def test_rough_contact_outputs_along_a_force_protocol():
+    # A seeded rough surface on a periodic half-space under three loads:
+    # the mean gap is the gap field's mean (the indenter covers the grid),
+    # falls as the load grows while the contact fraction grows, survives
+    # pickling, and the multi-resolution start's iterations are reported.
+    import pickle
+
+    n, spacing = 64, 1e-6
+    heights = lc.rough_surface_heights(hurst=0.8, long_cutoff=16e-6, short_cutoff=4e-6, seed=3,
+                                       cells=n, spacing=spacing, rms_slope=0.1)
+    indenter = lc.Indenter.height_map(heights.max() - heights, spacing)
+    solver = lc.ContactSolver(lc.Substrate.half_space(lc.Material(1e6, 0.5)), n, n, spacing,
+                              periodic=True)
+    area = (n * spacing) ** 2
+    gaps, fractions = [], []
+    for pressure in (2e3, 5e3, 1e4):
+        s = solver.solve_force(indenter, pressure * area)
+        assert s.mean_gap == pytest.approx(float(np.mean(s.gap)), rel=1e-12)
+        gaps.append(s.mean_gap)
+        fractions.append(s.contact_area / area)
+    assert gaps[0] > gaps[1] > gaps[2] > 0.0
+    assert fractions[0] < fractions[1] < fractions[2] < 1.0
+    assert s.coarse_iterations > 0
+    copy = pickle.loads(pickle.dumps(s))
+    assert copy.mean_gap == s.mean_gap and copy.coarse_iterations == s.coarse_iterations
+    # A punch narrower than its isolated grid leaves the gap infinite
+    # beyond its rim: no mean gap.
+    punch = lc.ContactSolver(lc.Substrate.half_space(lc.Material(1e6, 0.5)), 32, 32, 1e-5)
+    assert punch.solve_depth(lc.Indenter.flat_punch(1e-4), 1e-6).mean_gap is None

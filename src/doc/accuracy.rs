@@ -210,6 +210,13 @@
 //! four cells per wavelength); a surface cut off at four cells is resolved
 //! to about 3 % of its contact area here, 11 % with the point kernel.
 //!
+//! The mean gap `u_bar` ([`Solution::mean_gap`](crate::solver::Solution::mean_gap))
+//! and the interfacial stiffness `-dp_bar/du_bar` between loads of a force
+//! protocol, against Westergaard's wavy surface (`u_bar / D = 1 - s + s ln
+//! s`, `s = p_bar/p*`; `tests/interface.rs`): the mean gap within 8.1e-4,
+//! 2.0e-4 and 9.2e-6 at 128, 256 and 512 cells per wavelength (`s` = 0.1
+//! to 0.7), the stiffness within 0.07 % at 512.
+//!
 //! An adhesive cycle by the energy balance takes two warm-started clamped
 //! solves of about eight preconditioned iterations per set of the family,
 //! with one set per cell of radius (or per 10 % of it).

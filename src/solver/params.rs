@@ -138,6 +138,29 @@ pub struct Solution {
     pub gap: Option<Array2<f64>>,
 }
 
+impl Solution {
+    /// The mean gap over the grid, m: the mean separation `u_bar` between
+    /// the indenter and the deformed surface of a rough contact, whose
+    /// derivative along a force protocol gives the interfacial stiffness
+    /// `-dp_bar/du_bar` (Persson 2007, Phys. Rev. Lett. 99, 125502). On a
+    /// periodic half-space the mean displacement is zero (the uniform mode
+    /// is fixed by the approach), so `u_bar = <h> - d` with `h` the
+    /// indenter's heights; for Westergaard's wavy surface of amplitude
+    /// `D` (`h = D (1 - cos)`), `u_bar / D = 1 - s + s ln s` with `s = p_bar/p*`
+    /// (`tests/interface.rs` checks the BEM against it).
+    ///
+    /// `None` without the gap field ([`Fields::gap`]) or where the indenter
+    /// does not cover every cell (an isolated sphere: the gap is infinite
+    /// beyond it).
+    pub fn mean_gap(&self) -> Option<f64> {
+        let gap = self.gap.as_ref()?;
+        if gap.is_empty() || gap.iter().any(|g| !g.is_finite()) {
+            return None;
+        }
+        gap.mean()
+    }
+}
+
 /// The state a solve ends in, to start the next load step from: the cell
 /// pressures and, for adhesive contact, which cells are attached (the
 /// history that makes loading and unloading differ).

@@ -119,6 +119,8 @@ class Solution:
     contact_cells: int
     edge_contact: bool
     iterations: int
+    coarse_iterations: int
+    mean_gap: Optional[float]
     residual: float
     pressure: Optional[npt.NDArray[np.float64]]
     displacement: Optional[npt.NDArray[np.float64]]
