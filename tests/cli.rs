@@ -508,16 +508,27 @@ fn fit_recovers_the_film_from_a_curve() {
         assert!(!out.status.success());
         assert!(text(&out.stderr).contains(message), "{}", text(&out.stderr));
     }
-    // An unbonded film rests on glass or an elastic support, not on layers.
+    // An unbonded film may rest on bonded layers too: the bonded film's
+    // retract curve read with the model of a film resting on a coating on
+    // glass (softer: 0.78 of the bonded punch stiffness at a/h = 0.5) gives
+    // a stiffer film, 2.01 times (measured; the same with and without the
+    // modulus family, which takes 7 s instead of 62). On the way the fit
+    // tries works of adhesion whose tables do not reach the curve: rejected
+    // steps, not a failed fit.
     let mut resting = args.to_vec();
-    resting.extend(["--unbonded", "--below", "1e6,0.4,1e-6"]);
+    resting.extend([
+        "--unbonded",
+        "--below",
+        "1e6,0.4,1e-6",
+        "--modulus-range",
+        "3e3,60e3",
+    ]);
     let out = tool(&resting, &dir);
-    assert!(!out.status.success());
-    assert!(
-        text(&out.stderr).contains("--unbonded"),
-        "{}",
-        text(&out.stderr)
-    );
+    let resting_out = text(&out.stdout);
+    assert!(out.status.success(), "{resting_out}{}", text(&out.stderr));
+    let stiffer = estimate(&resting_out, "youngs_modulus").0 / e;
+    println!("resting on a coating: {stiffer:.3} of the film's modulus");
+    assert!(stiffer > 1.1, "{resting_out}");
     // A layer under the film needs three numbers.
     let mut stacked = args.to_vec();
     stacked.extend(["--below", "1e6,0.4"]);

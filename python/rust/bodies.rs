@@ -101,6 +101,18 @@ impl Substrate {
         })
     }
 
+    /// A layer of thickness `thickness` (m) resting without friction on
+    /// `support`, a body of bonded layers (a half-space, a layer, a stack):
+    /// the interface under the layer carries no shear, those below stay
+    /// bonded.
+    #[staticmethod]
+    fn layer_resting_on(layer: &Material, thickness: f64, support: &Substrate) -> PyResult<Self> {
+        Ok(Substrate {
+            inner: lc::Substrate::layer_resting_on(layer.inner, thickness, &support.inner)
+                .py_err()?,
+        })
+    }
+
     /// A layer of thickness `thickness` (m) bonded to a rigid base.
     #[staticmethod]
     fn layer_on_rigid_base(layer: &Material, thickness: f64) -> PyResult<Self> {
@@ -194,6 +206,23 @@ impl Substrate {
                         vec![layer, h, material(b)?],
                     ),
                 }
+            }
+            lc::Substrate::Stack(stack) if stack.top_rests() => {
+                let rest: Vec<(lc::Material, f64)> = stack.layers()[1..]
+                    .iter()
+                    .map(|l| (*l.material(), l.thickness()))
+                    .collect();
+                let support = Substrate {
+                    inner: lc::Substrate::stack(&rest, *stack.base()).py_err()?,
+                };
+                (
+                    "layer_resting_on",
+                    vec![
+                        material(stack.top().material())?,
+                        number(stack.top().thickness())?,
+                        Py::new(py, support)?.into_any(),
+                    ],
+                )
             }
             lc::Substrate::Stack(stack) => {
                 let layers = stack

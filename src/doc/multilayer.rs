@@ -141,6 +141,27 @@
 //! for one layer the sum is the single-layer kernel itself. This keeps
 //! every table as small as a single layer's whatever the thickness ratios.
 //!
+//! ## A top layer resting without friction
+//!
+//! [`Substrate::layer_resting_on`](crate::Substrate::layer_resting_on)
+//! puts a layer on a body of bonded layers with a shear-free interface
+//! between them (a cell or a gel film lying on a coated support). Across
+//! it only the normal traction and displacement of each Fourier mode are
+//! continuous, so the layer sees its support through the support's normal
+//! surface compliance alone, `2 R_2(q h_2) / (E2* q)`. The layer's own
+//! frictionless closed form
+//! ([`CoatingFunctions::frictionless`](crate::substrate::CoatingFunctions::frictionless))
+//! holds with its constant `rho = E1*/E2*` replaced by `rho(t) = (E1*/E2*)
+//! R_2(t h_2/h_1)`, and its Taylor series with `rho`'s. The compliance
+//! recursion above could not carry this interface directly: above a
+//! sliding interface the tangential compliance has a pole at `q = 0` (the
+//! layer slides as a membrane). `tests/unbonded.rs` checks `R(t)` against
+//! the plane-strain equations integrated through every layer (within
+//! 1.3e-15), and the boundary elements against the exact solution on such
+//! a body (-0.6 % for a punch 64 cells across). The kernel takes its
+//! `Lambda_g` whole (one term, not one per interface); stresses below such
+//! a body are refused with a typed error.
+//!
 //! ## Limits, costs and checks
 //!
 //! * [`Substrate::stack`](crate::Substrate::stack) reduces exactly first:

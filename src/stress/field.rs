@@ -110,6 +110,15 @@ impl SubsurfaceStress {
         boundary: Boundary,
         (rows, columns): (usize, usize),
     ) -> Result<Self> {
+        if let Substrate::Stack(stack) = substrate {
+            if stack.top_rests() {
+                return Err(Error::Unsupported {
+                    feature: "stresses below a layer resting on layers without friction",
+                    reason: "the stress modes carry a frictionless interface only at the base; \
+                             the sliding interface under a stack's top layer is not propagated",
+                });
+            }
+        }
         let column = column_of(substrate);
         let half = columns / 2 + 1;
         let dx = grid.spacing();

@@ -9,6 +9,7 @@
 //!   [`doc::multilayer`](crate::doc::multilayer).
 
 pub mod closed_form;
+mod resting;
 mod series;
 pub mod stack;
 
@@ -384,6 +385,13 @@ impl Substrate {
                     Self::layer_resting_on_elastic_base(top, c.thickness, base)
                 }
             },
+            Substrate::Stack(stack) if stack.top_rests() => {
+                let support = self.support().flatten().ok_or(Error::Unsupported {
+                    feature: "a resting layer without its support",
+                    reason: "the layers below a resting top layer form a valid body",
+                })?;
+                Self::layer_resting_on(top, stack.top().thickness(), &support)
+            }
             Substrate::Stack(stack) => {
                 let layers: Vec<(Material, f64)> = std::iter::once((top, stack.top().thickness()))
                     .chain(
@@ -477,6 +485,10 @@ impl Substrate {
             Substrate::Coated(coating) => vec![Term {
                 length: coating.thickness,
                 functions: Spectral::Closed(coating.functions()),
+            }],
+            Substrate::Stack(stack) if stack.top_rests() => vec![Term {
+                length: stack.top().thickness(),
+                functions: Spectral::Resting(stack.functions()),
             }],
             Substrate::Stack(stack) => {
                 let h1 = stack.top().thickness();
@@ -572,6 +584,8 @@ pub(crate) enum Spectral {
     Closed(CoatingFunctions),
     /// One interface of a stack.
     Bracket(stack::Bracket),
+    /// A stack whose top layer rests on the rest without friction, whole.
+    Resting(StackFunctions),
 }
 
 impl Spectral {
@@ -580,6 +594,7 @@ impl Spectral {
         match self {
             Spectral::Closed(functions) => functions.lambda(u),
             Spectral::Bracket(bracket) => bracket.lambda(u),
+            Spectral::Resting(functions) => functions.lambda(u),
         }
     }
 
@@ -588,6 +603,7 @@ impl Spectral {
         match self {
             Spectral::Closed(functions) => functions.lambda_taylor(),
             Spectral::Bracket(bracket) => bracket.lambda_taylor(),
+            Spectral::Resting(functions) => functions.lambda_taylor(),
         }
     }
 }

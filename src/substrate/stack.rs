@@ -61,14 +61,18 @@ impl Layer {
     }
 }
 
-/// Two or more bonded layers, top first, on a base; built by
+/// Two or more layers, top first, on a base; built by
 /// [`Substrate::stack`](super::Substrate::stack), which merges what can be
-/// merged (so adjacent layers differ in material and every thickness is
-/// positive and finite).
+/// merged (so adjacent bonded layers differ in material and every thickness
+/// is positive and finite), or by
+/// [`Substrate::layer_resting_on`](super::Substrate::layer_resting_on), whose
+/// top layer rests on the bonded layers below without friction.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Stack {
     layers: Arc<[Layer]>,
     base: Base,
+    /// The top layer rests on the layers below without friction.
+    resting: bool,
 }
 
 impl Stack {
@@ -76,7 +80,24 @@ impl Stack {
         Stack {
             layers: layers.into(),
             base,
+            resting: false,
         }
+    }
+
+    /// A stack whose top layer rests without friction on the bonded
+    /// `layers[1..]` on `base`.
+    pub(crate) fn resting(layers: Vec<Layer>, base: Base) -> Self {
+        Stack {
+            resting: true,
+            ..Stack::new(layers, base)
+        }
+    }
+
+    /// Whether the top layer rests on the layers below without friction
+    /// (the interface under it carries no shear); every other interface is
+    /// bonded.
+    pub fn top_rests(&self) -> bool {
+        self.resting
     }
 
     /// The layers, top first.
@@ -104,6 +125,9 @@ impl Stack {
     pub fn functions(&self) -> StackFunctions {
         StackFunctions {
             shape: Arc::new(Shape::new(self)),
+            resting: self
+                .resting
+                .then(|| Arc::new(super::resting::Resting::new(self))),
         }
     }
 }
@@ -522,12 +546,17 @@ impl Shape {
 #[derive(Debug, Clone)]
 pub struct StackFunctions {
     shape: Arc<Shape>,
+    /// The top layer resting on the rest without friction.
+    resting: Option<Arc<super::resting::Resting>>,
 }
 
 impl StackFunctions {
     /// The coating factor `R(t)`, `t = q h1`.
     pub fn r(&self, t: f64) -> f64 {
         let t = t.abs();
+        if let Some(resting) = &self.resting {
+            return super::closed_form::frictionless_r(resting.rho(t), t);
+        }
         self.shape.r(&|tau: f64| terms_at(tau * t))
     }
 
@@ -535,6 +564,9 @@ impl StackFunctions {
     /// relative precision.
     pub fn lambda(&self, t: f64) -> f64 {
         let t = t.abs();
+        if let Some(resting) = &self.resting {
+            return super::closed_form::frictionless_lambda(resting.rho(t), t);
+        }
         self.shape.lambda(&|tau: f64| terms_at(tau * t))
     }
 
@@ -543,11 +575,24 @@ impl StackFunctions {
         *self.shape.modulus_ratios.last().expect("a base")
     }
 
+    /// The Taylor coefficients of the whole `Lambda_g(t)` at `t = 0` (the
+    /// kernel takes a bonded stack's per interface, [`Self::brackets`]).
+    pub(crate) fn lambda_taylor(&self) -> Series {
+        match &self.resting {
+            Some(resting) => super::closed_form::frictionless_lambda_taylor(&resting.rho_taylor()),
+            None => Series::constant(1.0).sub(&self.shape.r(&|tau: f64| Some(terms_series(tau)))),
+        }
+    }
+
     /// `R(t) / t`; at `t = 0` on a rigid base the uniaxial-strain limit
     /// `(E1*/2) sum (h_i/h1) / M_i`, `M_i` the layers' uniaxial-strain moduli
     /// (`+inf` on an elastic base).
     pub fn r_over_t(&self, t: f64) -> f64 {
         let t = t.abs();
+        if let Some(resting) = &self.resting {
+            let (rho, rho_over_t) = resting.rho_and_over_t(t);
+            return super::closed_form::frictionless_r_over_t(rho, rho_over_t, t);
+        }
         if t == 0.0 {
             return if self.shape.rigid_base {
                 self.shape.uniaxial
@@ -603,7 +648,10 @@ impl StackFunctions {
     /// The Taylor coefficients of `R(t)` at `t = 0`, for tests.
     #[doc(hidden)]
     pub fn r_taylor(&self) -> [f64; TAYLOR_TERMS] {
-        self.shape.r(&|tau: f64| Some(terms_series(tau))).0
+        match self.resting {
+            Some(_) => Series::constant(1.0).sub(&self.lambda_taylor()).0,
+            None => self.shape.r(&|tau: f64| Some(terms_series(tau))).0,
+        }
     }
 }
 

@@ -69,8 +69,9 @@ class Sample:
     base_youngs_modulus: Optional[float] = None
     base_poisson_ratio: float = 0.3
     below: Tuple[Tuple[float, float, float], ...] = ()
-    #: False: the layer rests on its support (rigid or elastic) without
-    #: friction (Dimitriadis et al. 2002's unbonded layer).
+    #: False: the layer rests on its support (rigid, elastic, or the layers
+    #: ``below`` on it, themselves bonded) without friction (Dimitriadis et
+    #: al. 2002's unbonded layer).
     bonded: bool = True
 
     def substrate(self, youngs_modulus: float) -> Substrate:
@@ -84,10 +85,9 @@ class Sample:
             self.base_youngs_modulus, self.base_poisson_ratio)
         if not self.bonded:
             if self.below:
-                raise InvalidInputError(
-                    "bonded=False: an unbonded layer rests on a rigid or an elastic "
-                    "support, not on layers below"
-                )
+                support = Substrate.stack(
+                    [(Material(e, nu), t) for e, nu, t in self.below], base)
+                return Substrate.layer_resting_on(layer, self.thickness, support)
             if base is None:
                 return Substrate.layer_resting_on_rigid_base(layer, self.thickness)
             return Substrate.layer_resting_on_elastic_base(layer, self.thickness, base)

@@ -22,6 +22,10 @@ use model::{build_table, Model, Sample, Values};
 /// curves over a decade, with or without adhesion (`tests/force_curve.rs`).
 const FAMILY_NODES: usize = 12;
 
+/// The residual, in units of the curve's largest force, of a point the
+/// model cannot reach at a trial step (see `Problem::residuals`).
+const UNREACHABLE: f64 = 1e6;
+
 /// Step of the central differences of the Jacobian, in scaled parameters.
 const JACOBIAN_STEP: f64 = 1e-6;
 
@@ -53,7 +57,8 @@ pub(crate) struct FitArgs {
     /// Poisson ratio of the elastic support.
     #[arg(long, default_value_t = 0.3)]
     base_poisson: f64,
-    /// The film rests on glass without friction instead of being bonded.
+    /// The film rests on its support (glass, --base-modulus, or the --below
+    /// layers, themselves bonded) without friction instead of being bonded.
     #[arg(long)]
     unbonded: bool,
     /// A bonded layer under the film, `E,nu,thickness` (Pa, -, m); repeat
@@ -205,14 +210,22 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for Problem<'_> {
         self.params.clone()
     }
 
+    /// The scaled residuals; a trial point where the model has no force
+    /// (parameters whose exact tables do not reach the curve's depths, such
+    /// as a work of adhesion thousands of times too large) gets residuals
+    /// of [`UNREACHABLE`] largest forces there, so that Levenberg-Marquardt
+    /// rejects the step and shrinks its trust region instead of stopping.
     fn residuals(&self) -> Option<DVector<f64>> {
         let model = self.model();
         let r = DVector::from_iterator(
             model.len(),
-            model
-                .iter()
-                .zip(self.force)
-                .map(|(m, f)| (f - m) / self.force_unit),
+            model.iter().zip(self.force).map(|(m, f)| {
+                if m.is_finite() {
+                    (f - m) / self.force_unit
+                } else {
+                    UNREACHABLE
+                }
+            }),
         );
         r.iter().all(|v| v.is_finite()).then_some(r)
     }

@@ -52,15 +52,22 @@ impl Sample {
     pub(super) fn substrate(&self, modulus: f64) -> Result<Substrate> {
         let film = Material::new(modulus, self.poisson)?;
         if self.unbonded {
-            return match (self.thickness, self.base, self.below.is_empty()) {
-                (Some(h), None, true) => Ok(Substrate::layer_resting_on_rigid_base(film, h)?),
-                (Some(h), Some(base), true) => {
-                    Ok(Substrate::layer_resting_on_elastic_base(film, h, base)?)
+            let h = self
+                .thickness
+                .ok_or("--unbonded: the resting film needs its --thickness")?;
+            if !self.below.is_empty() {
+                let mut layers = Vec::new();
+                for &(e, nu, t) in &self.below {
+                    layers.push((Material::new(e, nu)?, t));
                 }
-                _ => Err("--unbonded: a film of --thickness resting on glass or on \
-                          --base-modulus (not on --below layers)"
-                    .into()),
-            };
+                let support =
+                    Substrate::stack(&layers, self.base.map_or(Base::Rigid, Base::Elastic))?;
+                return Ok(Substrate::layer_resting_on(film, h, &support)?);
+            }
+            return Ok(match self.base {
+                None => Substrate::layer_resting_on_rigid_base(film, h)?,
+                Some(base) => Substrate::layer_resting_on_elastic_base(film, h, base)?,
+            });
         }
         if !self.below.is_empty() {
             let h = self
