@@ -154,6 +154,16 @@ fn bad_requests_give_nan_or_errors() {
     ));
 }
 
+/// A 4 um film of 10 kPa bonded to a gel of 1.25 kPa (`nu = 0.5`), and a
+/// paraboloid of 5 um: a body whose force does not scale with the film's
+/// modulus.
+fn film_over_a_gel() -> (Substrate, Tip) {
+    let gel = Material::new(1.25e3, 0.5).unwrap();
+    let film =
+        Substrate::layer_on_elastic_base(Material::new(1e4, 0.5).unwrap(), 4e-6, gel).unwrap();
+    (film, Tip::Paraboloid { radius: 5e-6 })
+}
+
 #[test]
 fn a_modulus_family_converges_geometrically_in_its_nodes() {
     // A film over a gel four times softer than its lower end, moduli over a
@@ -164,10 +174,7 @@ fn a_modulus_family_converges_geometrically_in_its_nodes() {
     // tables' own precision; 0.3 ms for 40 depths at 12 nodes). Asserted:
     // 1e-6 at 10 nodes and a fall of at least 100 from 6.
     use layered_contact::analytic::ModulusFamily;
-    let gel = Material::new(1.25e3, 0.5).unwrap();
-    let film =
-        Substrate::layer_on_elastic_base(Material::new(1e4, 0.5).unwrap(), 4e-6, gel).unwrap();
-    let tip = Tip::Paraboloid { radius: 5e-6 };
+    let (film, tip) = film_over_a_gel();
     let depths: Vec<f64> = (1..=40).map(|k| 2e-6 * k as f64 / 40.0).collect();
     let moduli = [5.3e3, 9.1e3, 17.7e3, 33e3, 47e3];
     let exact: Vec<Vec<f64>> = moduli
@@ -206,10 +213,7 @@ fn a_modulus_family_serves_retract_curves() {
     // curve's largest force (forces cross zero). Measured: see the
     // assertion's message.
     use layered_contact::analytic::ModulusFamily;
-    let gel = Material::new(1.25e3, 0.5).unwrap();
-    let film =
-        Substrate::layer_on_elastic_base(Material::new(1e4, 0.5).unwrap(), 4e-6, gel).unwrap();
-    let tip = Tip::Paraboloid { radius: 5e-6 };
+    let (film, tip) = film_over_a_gel();
     let work = 2e-3;
     let depths: Vec<f64> = (0..=60)
         .map(|k| -0.6e-6 + 2.6e-6 * k as f64 / 60.0)

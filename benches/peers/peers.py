@@ -26,6 +26,25 @@ R, DEPTH, L, TOL = 1.0, 0.25, 2.0, 1e-8
 FORCE = 4.0 / 3.0 * np.sqrt(R) * DEPTH**1.5
 
 
+def timed_tamaas(solve):
+    """Seconds and iterations of `solve()`, a tamaas solve: tamaas logs its
+    iterations on stderr, read there."""
+    with tempfile.TemporaryFile(mode="w+") as log:
+        sys.stderr.flush()
+        saved = os.dup(2)
+        os.dup2(log.fileno(), 2)
+        try:
+            start = time.perf_counter()
+            solve()
+            seconds = time.perf_counter() - start
+        finally:
+            os.dup2(saved, 2)
+            os.close(saved)
+        log.seek(0)
+        rows = [line.split() for line in log if line.strip()[:1].isdigit()]
+    return seconds, int(rows[-1][0]) + 1 if rows else -1
+
+
 def tamaas_load(n):
     import tamaas as tm
 
@@ -35,22 +54,7 @@ def tamaas_load(n):
     x = (np.arange(n2) + 0.5) * l2 / n2 - l2 / 2
     xx, yy = np.meshgrid(x, x, indexing="ij")
     solver = tm.PolonskyKeerRey(model, -(xx**2 + yy**2) / (2 * R), TOL)
-    # tamaas logs its iterations on stderr: read them there.
-    with tempfile.TemporaryFile(mode="w+") as log:
-        sys.stderr.flush()
-        saved = os.dup(2)
-        os.dup2(log.fileno(), 2)
-        try:
-            start = time.perf_counter()
-            solver.solve(FORCE / l2**2)
-            seconds = time.perf_counter() - start
-        finally:
-            os.dup2(saved, 2)
-            os.close(saved)
-        log.seek(0)
-        rows = [line.split() for line in log if line.strip()[:1].isdigit()]
-    iterations = int(rows[-1][0]) + 1 if rows else -1
-    return seconds, iterations
+    return timed_tamaas(lambda: solver.solve(FORCE / l2**2))
 
 
 def contactmechanics(n, control):

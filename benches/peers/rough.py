@@ -24,12 +24,12 @@ Needs numpy, tamaas and layered_contact in the running Python.
 
 import os
 import sys
-import tempfile
 import time
 
 import numpy as np
 
 import layered_contact as lc
+from peers import timed_tamaas
 
 L, PRESSURE, TOL = 1.0, 0.01, 1e-8
 HURST, SLOPE, SEED = 0.8, 0.1, 1
@@ -71,28 +71,14 @@ def this_crate(heights):
 
 
 def tamaas(heights):
-    """Seconds, iterations, contact fraction (tamaas logs its iterations on
-    stderr: read there)."""
+    """Seconds, iterations, contact fraction."""
     import tamaas as tm
 
     n = heights.shape[0]
     model = tm.ModelFactory.createModel(tm.model_type.basic_2d, [L, L], [n, n])
     model.E, model.nu = 1.0, 0.0
     solver = tm.PolonskyKeerRey(model, np.ascontiguousarray(heights), TOL)
-    with tempfile.TemporaryFile(mode="w+") as log:
-        sys.stderr.flush()
-        saved = os.dup(2)
-        os.dup2(log.fileno(), 2)
-        try:
-            start = time.perf_counter()
-            solver.solve(PRESSURE)
-            seconds = time.perf_counter() - start
-        finally:
-            os.dup2(saved, 2)
-            os.close(saved)
-        log.seek(0)
-        rows = [line.split() for line in log if line.strip()[:1].isdigit()]
-    iterations = int(rows[-1][0]) + 1 if rows else -1
+    seconds, iterations = timed_tamaas(lambda: solver.solve(PRESSURE))
     fraction = float(np.mean(model.traction > 0.0))
     return seconds, iterations, fraction
 

@@ -189,10 +189,8 @@ impl ParaboloidForceSeries {
     /// [`Error::InvalidPoissonRatio`](crate::Error::InvalidPoissonRatio) if
     /// `poisson_ratio` is outside `[0, 0.5]`.
     pub fn new(poisson_ratio: f64) -> Result<Self> {
-        Ok(Self::from_moments(
-            a_m(0, poisson_ratio)?,
-            a_m(1, poisson_ratio)?,
-        ))
+        let (a0, a1) = bonded_moments(poisson_ratio)?;
+        Ok(Self::from_moments(a0, a1))
     }
 
     /// The series for a layer resting on a rigid base without friction
@@ -204,11 +202,8 @@ impl ParaboloidForceSeries {
     /// # Errors
     /// As [`a_m_of`](super::a_m_of).
     pub fn frictionless() -> Result<Self> {
-        let resting = crate::substrate::CoatingFunctions::frictionless_rigid_base();
-        Ok(Self::from_moments(
-            super::a_m_of(0, &resting)?,
-            super::a_m_of(1, &resting)?,
-        ))
+        let (a0, a1) = resting_moments()?;
+        Ok(Self::from_moments(a0, a1))
     }
 
     /// The series from the moments `a0`, `a1` of the layer's `Lambda_g`.
@@ -300,10 +295,8 @@ impl ConeForceSeries {
     /// [`Error::InvalidPoissonRatio`](crate::Error::InvalidPoissonRatio) if
     /// `poisson_ratio` is outside `[0, 0.5]`.
     pub fn new(poisson_ratio: f64) -> Result<Self> {
-        Ok(Self::from_moments(
-            a_m(0, poisson_ratio)?,
-            a_m(1, poisson_ratio)?,
-        ))
+        let (a0, a1) = bonded_moments(poisson_ratio)?;
+        Ok(Self::from_moments(a0, a1))
     }
 
     /// The series for a layer resting on a rigid base without friction,
@@ -312,11 +305,8 @@ impl ConeForceSeries {
     /// # Errors
     /// As [`a_m_of`](super::a_m_of).
     pub fn frictionless() -> Result<Self> {
-        let resting = crate::substrate::CoatingFunctions::frictionless_rigid_base();
-        Ok(Self::from_moments(
-            super::a_m_of(0, &resting)?,
-            super::a_m_of(1, &resting)?,
-        ))
+        let (a0, a1) = resting_moments()?;
+        Ok(Self::from_moments(a0, a1))
     }
 
     fn from_moments(a0: f64, a1: f64) -> Self {
@@ -342,6 +332,19 @@ impl ConeForceSeries {
     pub fn ratio_at(&self, chi: f64) -> f64 {
         truncated_series(&self.coefficients, chi)
     }
+}
+
+/// The moments `a0`, `a1` of a layer of Poisson ratio `nu` bonded to a
+/// rigid base.
+fn bonded_moments(nu: f64) -> Result<(f64, f64)> {
+    Ok((a_m(0, nu)?, a_m(1, nu)?))
+}
+
+/// The moments `a0`, `a1` of a layer resting on a rigid base without
+/// friction (the same for every Poisson ratio).
+fn resting_moments() -> Result<(f64, f64)> {
+    let resting = crate::substrate::CoatingFunctions::frictionless_rigid_base();
+    Ok((super::a_m_of(0, &resting)?, super::a_m_of(1, &resting)?))
 }
 
 /// `1 + c[0] x + c[1] x^2 + c[2] x^3 + c[3] x^4`: a bottom-effect series
