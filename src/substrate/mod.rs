@@ -9,6 +9,7 @@
 //!   [`doc::multilayer`](crate::doc::multilayer).
 
 pub mod closed_form;
+mod frictionless;
 mod resting;
 mod series;
 pub mod stack;

@@ -58,19 +58,19 @@ const NEWTON_STEPS: usize = 8;
 /// ```
 #[derive(Debug, Clone)]
 pub struct ForceCurve {
-    contact_modulus: f64,
-    tip: Option<Tip>,
+    pub(super) contact_modulus: f64,
+    pub(super) tip: Option<Tip>,
     /// `ln a`, evenly spaced (one entry for a flat punch).
-    log_radius: Vec<f64>,
-    radius: Vec<f64>,
-    depth: Vec<f64>,
-    force: Vec<f64>,
+    pub(super) log_radius: Vec<f64>,
+    pub(super) radius: Vec<f64>,
+    pub(super) depth: Vec<f64>,
+    pub(super) force: Vec<f64>,
     /// `ln d0`, `ln F0` (empty for a flat punch).
-    log_depth: Vec<f64>,
-    log_force: Vec<f64>,
-    stiffness: Vec<f64>,
-    edge: Vec<f64>,
-    max_depth: f64,
+    pub(super) log_depth: Vec<f64>,
+    pub(super) log_force: Vec<f64>,
+    pub(super) stiffness: Vec<f64>,
+    pub(super) edge: Vec<f64>,
+    pub(super) max_depth: f64,
 }
 
 impl ForceCurve {
@@ -194,72 +194,6 @@ impl ForceCurve {
         let max_depth = positive_finite("max_depth", max_depth)?;
         let reach = 8.0 * first_radius(tip.validated()?, max_depth);
         Axisymmetric::up_to_contact_radius_in_range(substrate, reach)
-    }
-
-    /// The table whose columns are `sum_k c_k` of the `curves`' (tables on
-    /// the same radii, or flat punches of one radius), the forces and
-    /// stiffnesses per unit of each table's contact modulus and then times
-    /// `contact_modulus` (Pa): the interpolant of a family of tables at one
-    /// modulus. `None` unless the tables share their radii and the result
-    /// is positive and finite where the tables' logarithms are needed.
-    pub(super) fn combine(
-        curves: &[ForceCurve],
-        coefficients: &[f64],
-        contact_modulus: f64,
-    ) -> Option<ForceCurve> {
-        let first = curves.first()?;
-        let n = first.radius.len();
-        let mut out = ForceCurve {
-            contact_modulus,
-            depth: vec![0.0; n],
-            force: vec![0.0; n],
-            stiffness: vec![0.0; n],
-            edge: vec![0.0; n],
-            log_depth: Vec::new(),
-            log_force: Vec::new(),
-            ..first.clone_shape()
-        };
-        for (curve, &c) in curves.iter().zip(coefficients) {
-            if curve.radius != first.radius || curve.tip != first.tip {
-                return None;
-            }
-            if c == 0.0 {
-                continue;
-            }
-            let per_modulus = c * contact_modulus / curve.contact_modulus;
-            for k in 0..n {
-                out.depth[k] += c * curve.depth[k];
-                out.force[k] += per_modulus * curve.force[k];
-                out.stiffness[k] += per_modulus * curve.stiffness[k];
-                out.edge[k] += c * curve.edge[k];
-            }
-            out.max_depth = out.max_depth.min(curve.max_depth);
-        }
-        if out.tip.is_some() {
-            out.log_depth = out.depth.iter().map(|d| d.ln()).collect();
-            out.log_force = out.force.iter().map(|f| f.ln()).collect();
-        }
-        let finite = [&out.log_depth, &out.log_force, &out.stiffness, &out.edge]
-            .iter()
-            .all(|column| column.iter().all(|v| v.is_finite()));
-        finite.then_some(out)
-    }
-
-    /// The table's tip and radii, with empty columns.
-    fn clone_shape(&self) -> ForceCurve {
-        ForceCurve {
-            contact_modulus: self.contact_modulus,
-            tip: self.tip,
-            log_radius: self.log_radius.clone(),
-            radius: self.radius.clone(),
-            depth: Vec::new(),
-            force: Vec::new(),
-            log_depth: Vec::new(),
-            log_force: Vec::new(),
-            stiffness: Vec::new(),
-            edge: Vec::new(),
-            max_depth: self.max_depth,
-        }
     }
 
     /// The curve of `tip` on `substrate` to `max_depth` (m), with the exact

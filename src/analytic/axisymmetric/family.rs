@@ -237,3 +237,71 @@ impl ModulusFamily {
         }
     }
 }
+
+impl ForceCurve {
+    /// The table whose columns are `sum_k c_k` of the `curves`' (tables on
+    /// the same radii, or flat punches of one radius), the forces and
+    /// stiffnesses per unit of each table's contact modulus and then times
+    /// `contact_modulus` (Pa): the interpolant of a family of tables at one
+    /// modulus. `None` unless the tables share their radii and the result
+    /// is positive and finite where the tables' logarithms are needed.
+    pub(super) fn combine(
+        curves: &[ForceCurve],
+        coefficients: &[f64],
+        contact_modulus: f64,
+    ) -> Option<ForceCurve> {
+        let first = curves.first()?;
+        let n = first.radius.len();
+        let mut out = ForceCurve {
+            contact_modulus,
+            depth: vec![0.0; n],
+            force: vec![0.0; n],
+            stiffness: vec![0.0; n],
+            edge: vec![0.0; n],
+            log_depth: Vec::new(),
+            log_force: Vec::new(),
+            ..first.clone_shape()
+        };
+        for (curve, &c) in curves.iter().zip(coefficients) {
+            if curve.radius != first.radius || curve.tip != first.tip {
+                return None;
+            }
+            if c == 0.0 {
+                continue;
+            }
+            let per_modulus = c * contact_modulus / curve.contact_modulus;
+            for k in 0..n {
+                out.depth[k] += c * curve.depth[k];
+                out.force[k] += per_modulus * curve.force[k];
+                out.stiffness[k] += per_modulus * curve.stiffness[k];
+                out.edge[k] += c * curve.edge[k];
+            }
+            out.max_depth = out.max_depth.min(curve.max_depth);
+        }
+        if out.tip.is_some() {
+            out.log_depth = out.depth.iter().map(|d| d.ln()).collect();
+            out.log_force = out.force.iter().map(|f| f.ln()).collect();
+        }
+        let finite = [&out.log_depth, &out.log_force, &out.stiffness, &out.edge]
+            .iter()
+            .all(|column| column.iter().all(|v| v.is_finite()));
+        finite.then_some(out)
+    }
+
+    /// The table's tip and radii, with empty columns.
+    fn clone_shape(&self) -> ForceCurve {
+        ForceCurve {
+            contact_modulus: self.contact_modulus,
+            tip: self.tip,
+            log_radius: self.log_radius.clone(),
+            radius: self.radius.clone(),
+            depth: Vec::new(),
+            force: Vec::new(),
+            log_depth: Vec::new(),
+            log_force: Vec::new(),
+            stiffness: Vec::new(),
+            edge: Vec::new(),
+            max_depth: self.max_depth,
+        }
+    }
+}

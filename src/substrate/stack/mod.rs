@@ -333,7 +333,7 @@ impl StackFunctions {
     pub fn r(&self, t: f64) -> f64 {
         let t = t.abs();
         if let Some(resting) = &self.resting {
-            return super::closed_form::frictionless_r(resting.rho(t), t);
+            return super::frictionless::frictionless_r(resting.rho(t), t);
         }
         self.shape.r(&|tau: f64| terms_at(tau * t))
     }
@@ -343,7 +343,7 @@ impl StackFunctions {
     pub fn lambda(&self, t: f64) -> f64 {
         let t = t.abs();
         if let Some(resting) = &self.resting {
-            return super::closed_form::frictionless_lambda(resting.rho(t), t);
+            return super::frictionless::frictionless_lambda(resting.rho(t), t);
         }
         self.shape.lambda(&|tau: f64| terms_at(tau * t))
     }
@@ -357,7 +357,7 @@ impl StackFunctions {
     /// kernel takes a bonded stack's per interface, [`Self::brackets`]).
     pub(crate) fn lambda_taylor(&self) -> Series {
         match &self.resting {
-            Some(resting) => super::closed_form::frictionless_lambda_taylor(&resting.rho_taylor()),
+            Some(resting) => super::frictionless::frictionless_lambda_taylor(&resting.rho_taylor()),
             None => Series::constant(1.0).sub(&self.shape.r(&|tau: f64| Some(terms_series(tau)))),
         }
     }
@@ -369,7 +369,7 @@ impl StackFunctions {
         let t = t.abs();
         if let Some(resting) = &self.resting {
             let (rho, rho_over_t) = resting.rho_and_over_t(t);
-            return super::closed_form::frictionless_r_over_t(rho, rho_over_t, t);
+            return super::frictionless::frictionless_r_over_t(rho, rho_over_t, t);
         }
         if t == 0.0 {
             return if self.shape.rigid_base {
