@@ -12,11 +12,11 @@ impl Substrate {
     /// a body of bonded layers: the interface under the layer carries no
     /// shear (Dimitriadis et al. 2002's unbonded case), every interface
     /// below stays bonded. The layer couples to its support through the
-    /// normal surface compliance alone, so its coating factor is
-    /// [`CoatingFunctions::frictionless`]' with the support's ratio `rho =
+    /// normal surface compliance alone, so its coating factor is that of
+    /// [`CoatingFunctions::frictionless`] with the support's ratio `rho =
     /// E1*/E2*` replaced by `(E1*/E2*) R_2(q h_2)`, `R_2` the support's own
     /// coating factor (`tests/unbonded.rs` checks it against the
-    /// plane-strain equations integrated through both layers).
+    /// plane-strain equations integrated through every layer).
     ///
     /// On a half-space this is [`Substrate::layer_resting_on_elastic_base`];
     /// `thickness = +inf` gives the layer's half-space.
@@ -29,7 +29,7 @@ impl Substrate {
     /// let resting = Substrate::layer_resting_on(cell, 4e-6, &coating)?;
     /// let Substrate::Stack(stack) = &resting else { unreachable!() };
     /// assert!(stack.top_rests() && stack.layers().len() == 2);
-    /// // Bonded, the same layers are stiffer under long waves:
+    /// // Bonded, the same layers are stiffer (a smaller coating factor):
     /// let bonded = Substrate::stack(&[(cell, 4e-6), (Material::new(1e6, 0.4)?, 1e-6)], Base::Rigid)?;
     /// let Substrate::Stack(bonded) = &bonded else { unreachable!() };
     /// assert!(stack.functions().r(0.5) > bonded.functions().r(0.5));
