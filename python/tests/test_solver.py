@@ -116,3 +116,32 @@ def test_rough_contact_outputs_along_a_force_protocol():
     # beyond its rim: no mean gap.
     punch = lc.ContactSolver(lc.Substrate.half_space(lc.Material(1e6, 0.5)), 32, 32, 1e-5)
     assert punch.solve_depth(lc.Indenter.flat_punch(1e-4), 1e-6).mean_gap is None
+
+
+def test_interface_curve_follows_westergaard():
+    # Westergaard's wavy surface (plane strain, periodic): contact fraction
+    # (2/pi) asin(sqrt(s)), mean gap u/D = 1 - s + s ln s and interfacial
+    # stiffness p*/(D ln(1/s)), s = p/p*, p* = pi E* D / lambda. On 256
+    # cells per wavelength the BEM's mean gap is within 2e-4 of it (Rust's
+    # tests/interface.rs), so the central difference at s = 0.3 between
+    # loads 2 % apart is within its truncation error: measured 7e-5 (mean
+    # gap) and 4.6e-4 (stiffness), asserted 4e-4 and 1 %.
+    wavelength, amplitude, n = 1e-3, 1e-6, 256
+    material = lc.Material(1e6, 0.5)
+    estar = 1e6 / (1 - 0.25)
+    p_star = math.pi * estar * amplitude / wavelength
+    spacing = wavelength / n
+    x = (np.arange(n) + 0.5 - n / 2) * spacing
+    heights = np.repeat((amplitude * (1 - np.cos(2 * math.pi * x / wavelength)))[:, None], 8, axis=1)
+    solver = lc.ContactSolver(lc.Substrate.half_space(material), n, 8, spacing, periodic=True)
+    s = np.array([0.294, 0.3, 0.306])
+    curve = lc.interface_curve(solver, lc.Indenter.height_map(heights, spacing), s * p_star)
+    exact_gap = amplitude * (1 - s + s * np.log(s))
+    np.testing.assert_allclose(curve["mean_gap"], exact_gap, rtol=4e-4)
+    np.testing.assert_allclose(curve["contact_fraction"], 2 / math.pi * np.arcsin(np.sqrt(s)),
+                               atol=2.0 / n)
+    exact_stiffness = p_star / (amplitude * math.log(1 / 0.3))
+    assert abs(curve["stiffness"][1] / exact_stiffness - 1) < 0.01, curve["stiffness"]
+    assert len(curve["gaps"]) == 3 and curve["gaps"][0].shape == (n, 8)
+    with pytest.raises(lc.InvalidInputError, match="increasing"):
+        lc.interface_curve(solver, lc.Indenter.height_map(heights, spacing), [2e3, 1e3])

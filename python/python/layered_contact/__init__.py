@@ -26,6 +26,7 @@ from typing import Any, Callable, Mapping, Optional, Union
 
 from . import analytic
 from ._native import rough_surface_heights, subsurface_stress
+from .rough import interface_curve
 from .stress import plot_section
 from ._native import (
     ConvergenceError,
@@ -72,6 +73,7 @@ __all__ = [
     "scene_schema",
     "subsurface_stress",
     "write_curve_csv",
+    "interface_curve",
 ]
 
 
