@@ -17,7 +17,7 @@
 //! slopes from fifth-order differences of the evenly spaced table, and a
 //! safeguarded Newton inversion of `d(ln a)` within its interval.
 
-use super::{Axisymmetric, Tip};
+use super::{Axisymmetric, ContactState, LayeredParaboloid, LayeredTip, Tip};
 use crate::error::{positive_finite, Error, Result};
 use crate::substrate::Substrate;
 
@@ -83,8 +83,9 @@ impl ForceCurve {
     /// range of contact radii (a spherical cap's below 0.95 of its radius);
     /// others as [`LayeredTip::at_contact_radius`](super::LayeredTip::at_contact_radius).
     pub fn new(exact: &Axisymmetric, tip: Tip, max_depth: f64) -> Result<Self> {
-        let largest = Self::largest_radius(exact, tip, max_depth)?;
-        Self::tabulate(exact, tip, largest, max_depth)
+        let branch = Branch::new(exact, tip)?;
+        let largest = Self::largest_radius(exact, &branch, tip, max_depth)?;
+        Self::tabulate(exact, &branch, tip, largest, max_depth)
     }
 
     /// The largest contact radius of a table that reaches `max_depth`:
@@ -92,21 +93,17 @@ impl ForceCurve {
     /// most [`WIDENINGS`] times, within the tip's and the solution's range)
     /// until the exact depth there reaches `max_depth`, then [`HEADROOM`]
     /// times that (within the range) for adhesive curves.
-    pub(super) fn largest_radius(exact: &Axisymmetric, tip: Tip, max_depth: f64) -> Result<f64> {
+    pub(super) fn largest_radius(
+        exact: &Axisymmetric,
+        branch: &Branch,
+        tip: Tip,
+        max_depth: f64,
+    ) -> Result<f64> {
         let max_depth = positive_finite("max_depth", max_depth)?;
-        let states = exact.tip(tip, 0.0)?;
-        let ball = match tip {
-            Tip::Paraboloid { radius } => Some(exact.paraboloid(radius, 0.0)?),
-            _ => None,
-        };
         let limit = tip.max_contact_radius().min(exact.max_contact_radius());
         let mut largest = first_radius(tip, max_depth).min(limit);
         for _ in 0..WIDENINGS {
-            let state = match &ball {
-                Some(ball) => ball.at_contact_radius(largest)?,
-                None => states.at_contact_radius(largest)?,
-            };
-            if state.depth >= max_depth {
+            if branch.at(largest)?.depth >= max_depth {
                 return Ok((HEADROOM * largest).min(limit));
             }
             if largest >= limit {
@@ -126,17 +123,13 @@ impl ForceCurve {
     /// `max_depth` (m), which the depth at `largest` must reach.
     pub(super) fn tabulate(
         exact: &Axisymmetric,
+        branch: &Branch,
         tip: Tip,
         largest: f64,
         max_depth: f64,
     ) -> Result<Self> {
         let max_depth = positive_finite("max_depth", max_depth)?;
         let largest = positive_finite("largest contact radius of a table", largest)?;
-        let states = exact.tip(tip, 0.0)?;
-        let ball = match tip {
-            Tip::Paraboloid { radius } => Some(exact.paraboloid(radius, 0.0)?),
-            _ => None,
-        };
         let step = -SMALLEST.ln() / (POINTS - 1) as f64;
         let log_radius: Vec<f64> = (0..POINTS)
             .map(|k| largest.ln() - step * (POINTS - 1 - k) as f64)
@@ -144,10 +137,7 @@ impl ForceCurve {
         let radius: Vec<f64> = log_radius.iter().map(|l| l.exp()).collect();
         let mut columns = [(); 4].map(|_| Vec::with_capacity(POINTS));
         for &a in &radius {
-            let state = match &ball {
-                Some(ball) => ball.at_contact_radius(a)?,
-                None => states.at_contact_radius(a)?,
-            };
+            let state = branch.at(a)?;
             let punch = exact.flat_punch(a)?;
             for (column, value) in columns.iter_mut().zip([
                 state.depth,
@@ -275,42 +265,34 @@ impl ForceCurve {
     /// [`forces`](Self::forces) gives NaN for every depth. A table that
     /// must reach deeper with adhesion is built to a larger `max_depth`.
     pub fn reach(&self, modulus_ratio: f64, work_of_adhesion: f64) -> f64 {
-        let usable = modulus_ratio > 0.0
-            && modulus_ratio.is_finite()
-            && work_of_adhesion >= 0.0
-            && work_of_adhesion.is_finite();
         let last = self.radius.len() - 1;
-        match (usable, self.tip) {
+        match (usable(modulus_ratio, work_of_adhesion), self.tip) {
             (false, _) => f64::NAN,
             (true, None) => self.max_depth,
             (true, Some(_)) => {
                 let modulus = modulus_ratio * self.contact_modulus;
-                let lift = (2.0 * std::f64::consts::PI * self.radius[last] * work_of_adhesion
-                    / modulus)
-                    .sqrt()
-                    / self.edge[last];
-                self.max_depth.min(self.depth[last] - lift)
+                let lift = self.lift(last, modulus, work_of_adhesion);
+                self.max_depth.min(self.depth[last] + lift)
             }
         }
     }
 
+    /// `d - d0 = -sqrt(2 pi a w / E*) / psi1` at entry `k` of the table: the
+    /// JKR state's depth less the non-adhesive one at the same radius.
+    fn lift(&self, k: usize, modulus: f64, work_of_adhesion: f64) -> f64 {
+        -(2.0 * std::f64::consts::PI * self.radius[k] * work_of_adhesion / modulus).sqrt()
+            / self.edge[k]
+    }
+
     /// [`force`](Self::force) at each of `depths`.
     pub fn forces(&self, depths: &[f64], modulus_ratio: f64, work_of_adhesion: f64) -> Vec<f64> {
-        let usable = modulus_ratio > 0.0
-            && modulus_ratio.is_finite()
-            && work_of_adhesion >= 0.0
-            && work_of_adhesion.is_finite();
-        if !usable {
+        if !usable(modulus_ratio, work_of_adhesion) {
             return vec![f64::NAN; depths.len()];
         }
         let modulus = modulus_ratio * self.contact_modulus;
         let n = self.radius.len();
-        // d - d0 at each radius.
         let lift: Vec<f64> = (0..n)
-            .map(|k| {
-                -(2.0 * std::f64::consts::PI * self.radius[k] * work_of_adhesion / modulus).sqrt()
-                    / self.edge[k]
-            })
+            .map(|k| self.lift(k, modulus, work_of_adhesion))
             .collect();
         let outside = |depth: f64| depth.is_nan() || depth > self.max_depth;
         if self.tip.is_none() {
@@ -360,6 +342,41 @@ impl ForceCurve {
                 x => hermite(&self.log_radius, &f, invert(&self.log_radius, &d, x, start)),
             })
             .collect()
+    }
+}
+
+/// Whether a modulus ratio and a work of adhesion give a curve: a positive
+/// finite ratio, a non-negative finite work.
+fn usable(modulus_ratio: f64, work_of_adhesion: f64) -> bool {
+    modulus_ratio > 0.0
+        && modulus_ratio.is_finite()
+        && work_of_adhesion >= 0.0
+        && work_of_adhesion.is_finite()
+}
+
+/// The non-adhesive states of a tip on one body along the contact radius:
+/// a paraboloid's from its own solution, any other tip's from
+/// [`Axisymmetric::tip`] (which also validates the tip).
+pub(super) enum Branch {
+    Paraboloid(LayeredParaboloid),
+    Tip(LayeredTip),
+}
+
+impl Branch {
+    pub(super) fn new(exact: &Axisymmetric, tip: Tip) -> Result<Self> {
+        let states = exact.tip(tip, 0.0)?;
+        Ok(match tip {
+            Tip::Paraboloid { radius } => Branch::Paraboloid(exact.paraboloid(radius, 0.0)?),
+            _ => Branch::Tip(states),
+        })
+    }
+
+    /// The state at contact radius `a` (m).
+    fn at(&self, a: f64) -> Result<ContactState> {
+        match self {
+            Branch::Paraboloid(ball) => ball.at_contact_radius(a),
+            Branch::Tip(states) => states.at_contact_radius(a),
+        }
     }
 }
 

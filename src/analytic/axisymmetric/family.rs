@@ -5,6 +5,7 @@
 use crate::error::{Error, Result};
 use crate::substrate::Substrate;
 
+use super::curve::Branch;
 use super::{ForceCurve, Tip};
 
 /// The fewest and most Chebyshev nodes a [`ModulusFamily`] may have.
@@ -126,15 +127,19 @@ impl ModulusFamily {
                 // at each contact radius.
                 let exact = substrates
                     .iter()
-                    .map(|substrate| ForceCurve::exact_on(substrate, tip, max_depth))
+                    .map(|substrate| {
+                        let exact = ForceCurve::exact_on(substrate, tip, max_depth)?;
+                        let branch = Branch::new(&exact, tip)?;
+                        Ok((exact, branch))
+                    })
                     .collect::<Result<Vec<_>>>()?;
                 let mut largest: f64 = 0.0;
-                for e in &exact {
-                    largest = largest.max(ForceCurve::largest_radius(e, tip, max_depth)?);
+                for (e, branch) in &exact {
+                    largest = largest.max(ForceCurve::largest_radius(e, branch, tip, max_depth)?);
                 }
                 exact
                     .iter()
-                    .map(|e| ForceCurve::tabulate(e, tip, largest, max_depth))
+                    .map(|(e, branch)| ForceCurve::tabulate(e, branch, tip, largest, max_depth))
                     .collect::<Result<Vec<_>>>()?
             }
         };
@@ -254,13 +259,16 @@ impl ForceCurve {
         let n = first.radius.len();
         let mut out = ForceCurve {
             contact_modulus,
+            tip: first.tip,
+            log_radius: first.log_radius.clone(),
+            radius: first.radius.clone(),
             depth: vec![0.0; n],
             force: vec![0.0; n],
-            stiffness: vec![0.0; n],
-            edge: vec![0.0; n],
             log_depth: Vec::new(),
             log_force: Vec::new(),
-            ..first.clone_shape()
+            stiffness: vec![0.0; n],
+            edge: vec![0.0; n],
+            max_depth: first.max_depth,
         };
         for (curve, &c) in curves.iter().zip(coefficients) {
             if curve.radius != first.radius || curve.tip != first.tip {
@@ -286,22 +294,5 @@ impl ForceCurve {
             .iter()
             .all(|column| column.iter().all(|v| v.is_finite()));
         finite.then_some(out)
-    }
-
-    /// The table's tip and radii, with empty columns.
-    fn clone_shape(&self) -> ForceCurve {
-        ForceCurve {
-            contact_modulus: self.contact_modulus,
-            tip: self.tip,
-            log_radius: self.log_radius.clone(),
-            radius: self.radius.clone(),
-            depth: Vec::new(),
-            force: Vec::new(),
-            log_depth: Vec::new(),
-            log_force: Vec::new(),
-            stiffness: Vec::new(),
-            edge: Vec::new(),
-            max_depth: self.max_depth,
-        }
     }
 }
