@@ -49,6 +49,19 @@ impl Sample {
         self.base.is_none() && self.below.is_empty()
     }
 
+    /// The `--below` layers, top first.
+    fn below_layers(&self) -> Result<Vec<(Material, f64)>> {
+        self.below
+            .iter()
+            .map(|&(e, nu, t)| Ok((Material::new(e, nu)?, t)))
+            .collect()
+    }
+
+    /// What the layers rest on: glass, or the elastic support.
+    fn support_base(&self) -> Base {
+        self.base.map_or(Base::Rigid, Base::Elastic)
+    }
+
     pub(super) fn substrate(&self, modulus: f64) -> Result<Substrate> {
         let film = Material::new(modulus, self.poisson)?;
         if self.unbonded {
@@ -56,12 +69,7 @@ impl Sample {
                 .thickness
                 .ok_or("--unbonded: the resting film needs its --thickness")?;
             if !self.below.is_empty() {
-                let mut layers = Vec::new();
-                for &(e, nu, t) in &self.below {
-                    layers.push((Material::new(e, nu)?, t));
-                }
-                let support =
-                    Substrate::stack(&layers, self.base.map_or(Base::Rigid, Base::Elastic))?;
+                let support = Substrate::stack(&self.below_layers()?, self.support_base())?;
                 return Ok(Substrate::layer_resting_on(film, h, &support)?);
             }
             return Ok(match self.base {
@@ -74,11 +82,8 @@ impl Sample {
                 .thickness
                 .ok_or("--below needs the film's --thickness")?;
             let mut layers = vec![(film, h)];
-            for &(e, nu, t) in &self.below {
-                layers.push((Material::new(e, nu)?, t));
-            }
-            let base = self.base.map_or(Base::Rigid, Base::Elastic);
-            return Ok(Substrate::stack(&layers, base)?);
+            layers.extend(self.below_layers()?);
+            return Ok(Substrate::stack(&layers, self.support_base())?);
         }
         Ok(match (self.thickness, self.base) {
             (None, _) => Substrate::half_space(film),
