@@ -89,6 +89,8 @@
 #![warn(missing_docs)]
 
 pub mod analytic;
+#[cfg(feature = "mpi")]
+pub mod distributed;
 pub mod doc;
 pub mod error;
 mod files;
@@ -99,6 +101,7 @@ pub mod material;
 mod numerics;
 mod parallel;
 pub mod scene;
+mod slab;
 pub mod solver;
 pub mod stress;
 pub mod substrate;

@@ -25,6 +25,7 @@ use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 use rustfft::{Fft, FftPlanner};
 
 use crate::error::{Error, Result};
+use crate::slab::{even_starts, Slab};
 
 /// Bytes of the column lines a thread transforms at once (a block fits in
 /// the second-level cache).
@@ -51,6 +52,37 @@ pub(super) struct Convolution {
     /// Spectrum columns per block and blocks per task.
     block: usize,
     blocks_per_task: usize,
+    /// The split across the ranks of a distributed run, `None` when serial.
+    split: Option<Split>,
+}
+
+/// How a distributed convolution splits its work: each rank transforms its
+/// own data rows (passes 1 and 3) and its own spectrum columns (pass 2);
+/// two all-to-all exchanges carry the half-spectra between the two.
+struct Split {
+    slab: Slab,
+    /// Data rows of each rank (in rank order; they add up to `rows`).
+    row_counts: Vec<usize>,
+    /// Spectrum columns: rank `k` filters `columns[k]..columns[k + 1]`.
+    columns: Vec<usize>,
+    send: Vec<Complex<f64>>,
+    receive: Vec<Complex<f64>>,
+}
+
+impl Split {
+    fn rank(&self) -> usize {
+        self.slab.exchange.rank()
+    }
+
+    /// This rank's spectrum columns.
+    fn own_columns(&self) -> std::ops::Range<usize> {
+        let k = self.rank();
+        self.columns[k]..self.columns[k + 1]
+    }
+
+    fn width(&self, k: usize) -> usize {
+        self.columns[k + 1] - self.columns[k]
+    }
 }
 
 /// One thread's scratch.
@@ -112,6 +144,39 @@ impl Convolution {
     /// Plans and buffers for `rows x columns` data on an FFT grid of `size`
     /// (`size.0 >= rows`, `size.1 >= columns`; larger means zero-padded).
     pub(super) fn new(rows: usize, columns: usize, size: (usize, usize)) -> Result<Self> {
+        Self::build(rows, columns, size, None)
+    }
+
+    /// As [`Convolution::new`], split across the ranks of `slab`: this rank
+    /// holds `row_counts[rank]` of the `rows` data rows (rank `k` the band
+    /// after those of ranks `0..k`) and filters an even share of the
+    /// spectrum columns. Every rank must apply it together.
+    pub(super) fn distributed(
+        rows: usize,
+        columns: usize,
+        size: (usize, usize),
+        slab: &Slab,
+        row_counts: Vec<usize>,
+    ) -> Result<Self> {
+        let half = size.1 / 2 + 1;
+        let split = Split {
+            slab: slab.clone(),
+            columns: even_starts(half, slab.exchange.ranks()),
+            row_counts: Vec::new(),
+            send: Vec::new(),
+            receive: Vec::new(),
+        };
+        let mut convolution = Self::build(rows, columns, size, Some(split))?;
+        convolution.set_row_counts(row_counts)?;
+        Ok(convolution)
+    }
+
+    fn build(
+        rows: usize,
+        columns: usize,
+        size: (usize, usize),
+        split: Option<Split>,
+    ) -> Result<Self> {
         let (n0, n1) = size;
         let mut real_planner = RealFftPlanner::<f64>::new();
         let row_forward = real_planner.plan_fft_forward(n1);
@@ -130,8 +195,10 @@ impl Convolution {
         .max()
         .unwrap_or(0);
         let tasks = task_count(n0 * n1);
-        let block = (BLOCK_BYTES / (16 * n0)).clamp(1, half);
-        let blocks = half.div_ceil(block);
+        // The spectrum columns this process filters.
+        let width = split.as_ref().map_or(half, |s| s.width(s.rank()));
+        let block = (BLOCK_BYTES / (16 * n0)).clamp(1, width.max(1));
+        let blocks = width.div_ceil(block);
         let lines = (block * n0).max(half);
         let scratch = (0..tasks)
             .map(|_| {
@@ -142,6 +209,7 @@ impl Convolution {
                 })
             })
             .collect::<Result<Vec<_>>>()?;
+        let local_rows = if split.is_some() { 0 } else { rows };
         Ok(Convolution {
             rows,
             columns,
@@ -150,13 +218,70 @@ impl Convolution {
             row_inverse,
             column_forward,
             column_inverse,
-            row_spectra: zeroed(rows * half)?,
-            filtered: zeroed(rows * half)?,
+            row_spectra: zeroed(local_rows * half)?,
+            filtered: zeroed(rows * width)?,
             tasks: scratch,
-            rows_per_task: rows.div_ceil(tasks),
+            rows_per_task: local_rows.div_ceil(tasks),
             block,
             blocks_per_task: blocks.div_ceil(tasks),
+            split,
         })
+    }
+
+    /// Sets how many data rows each rank holds (a distributed convolution
+    /// only; a box placed anew on the grid changes them), growing the
+    /// buffers if needed.
+    pub(super) fn set_row_counts(&mut self, row_counts: Vec<usize>) -> Result<()> {
+        let Some(split) = self.split.as_mut() else {
+            return Ok(());
+        };
+        if row_counts.len() != split.slab.exchange.ranks()
+            || row_counts.iter().sum::<usize>() != self.rows
+        {
+            return Err(Error::Internal {
+                what: "distributed FFT",
+                detail: format!("row counts {row_counts:?} do not split {} rows", self.rows),
+            });
+        }
+        let half = self.size.1 / 2 + 1;
+        let local = row_counts[split.rank()];
+        let width = split.width(split.rank());
+        let exchanged = (local * half).max(self.rows * width);
+        // MPI counts are 32-bit.
+        if exchanged > i32::MAX as usize {
+            return Err(Error::InvalidParameter {
+                name: "half-spectrum values one rank exchanges",
+                value: exchanged as f64,
+                expected: "below 2^31 (MPI counts): use more ranks",
+            });
+        }
+        let grow = |buffer: &mut Vec<Complex<f64>>, len: usize| -> Result<()> {
+            if buffer.len() < len {
+                *buffer = zeroed(len)?;
+            }
+            Ok(())
+        };
+        grow(&mut self.row_spectra, local * half)?;
+        grow(&mut split.send, exchanged)?;
+        grow(&mut split.receive, exchanged)?;
+        self.rows_per_task = local.div_ceil(self.tasks.len()).max(1);
+        split.row_counts = row_counts;
+        Ok(())
+    }
+
+    /// This process's data rows.
+    fn local_rows(&self) -> usize {
+        self.split
+            .as_ref()
+            .map_or(self.rows, |s| s.row_counts[s.rank()])
+    }
+
+    /// The spectrum columns this process filters, as a range of the
+    /// `size.1 / 2 + 1` columns of the half-spectrum.
+    pub(super) fn own_columns(&self) -> std::ops::Range<usize> {
+        self.split
+            .as_ref()
+            .map_or(0..self.size.1 / 2 + 1, Split::own_columns)
     }
 
     /// The FFT grid (height, width).
@@ -168,8 +293,9 @@ impl Convolution {
     /// cells, `input` zero-padded to the FFT grid; the multiplier is even in
     /// the row wavenumber (every multiplier here is: a function of `|q|`
     /// times the cell's even filter) and given by its `height / 2 + 1` rows
-    /// of non-negative row wavenumbers for each of the `half` spectrum
-    /// columns (column-major), the FFT normalisation included.
+    /// of non-negative row wavenumbers for each of the spectrum columns
+    /// [`Convolution::own_columns`] (column-major), the FFT normalisation
+    /// included. Distributed, `input` and `output` are this rank's data rows.
     pub(super) fn apply(
         &mut self,
         input: &[f64],
@@ -177,7 +303,9 @@ impl Convolution {
         multiplier: &[f64],
     ) -> Result<()> {
         self.forward_rows(input)?;
+        self.exchange_to_columns()?;
         self.filter_columns(multiplier)?;
+        self.exchange_to_rows()?;
         self.inverse_rows(output)
     }
 
@@ -186,9 +314,10 @@ impl Convolution {
         let (columns, half) = (self.columns, self.size.1 / 2 + 1);
         let per_task = self.rows_per_task;
         let fft = &self.row_forward;
+        let local = self.local_rows();
         let tasks: Vec<_> = input
             .chunks(per_task * columns)
-            .zip(self.row_spectra.chunks_mut(per_task * half))
+            .zip(self.row_spectra[..local * half].chunks_mut(per_task * half))
             .zip(self.tasks.iter_mut())
             .collect();
         run_tasks(tasks, |((input, spectra), scratch)| {
@@ -205,14 +334,49 @@ impl Convolution {
         })
     }
 
+    /// Distributed: sends each rank the spectrum columns it filters of this
+    /// rank's rows, and receives this rank's columns of every row, as a
+    /// row-major `rows x width` matrix in `receive`.
+    fn exchange_to_columns(&mut self) -> Result<()> {
+        let Some(split) = self.split.as_mut() else {
+            return Ok(());
+        };
+        let (rank, ranks) = (split.rank(), split.slab.exchange.ranks());
+        let half = self.size.1 / 2 + 1;
+        let local = split.row_counts[rank];
+        let mut at = 0;
+        for k in 0..ranks {
+            let columns = split.columns[k]..split.columns[k + 1];
+            for row in self.row_spectra[..local * half].chunks_exact(half) {
+                let values = &row[columns.clone()];
+                split.send[at..at + values.len()].copy_from_slice(values);
+                at += values.len();
+            }
+        }
+        let send_counts: Vec<usize> = (0..ranks).map(|k| local * split.width(k)).collect();
+        let width = split.width(rank);
+        let receive_counts: Vec<usize> = split.row_counts.iter().map(|r| r * width).collect();
+        split.slab.exchange.all_to_all(
+            &split.send[..at],
+            &send_counts,
+            &mut split.receive[..self.rows * width],
+            &receive_counts,
+        );
+        Ok(())
+    }
+
     /// Pass 2: column transforms, multiplication, inverse column transforms.
     fn filter_columns(&mut self, multiplier: &[f64]) -> Result<()> {
-        let (rows, n0, half) = (self.rows, self.size.0, self.size.1 / 2 + 1);
+        let (rows, n0) = (self.rows, self.size.0);
         let (block, per_task) = (self.block, self.blocks_per_task * self.block);
         let (forward, inverse) = (&self.column_forward, &self.column_inverse);
-        let row_spectra = &self.row_spectra;
-        let tasks: Vec<_> = self
-            .filtered
+        // The rows' spectra of the columns filtered here: row-major, of
+        // `stride` values per row.
+        let (source, stride): (&[Complex<f64>], usize) = match &self.split {
+            Some(split) => (&split.receive, split.width(split.rank())),
+            None => (&self.row_spectra, self.size.1 / 2 + 1),
+        };
+        let tasks: Vec<_> = self.filtered[..rows * stride]
             .chunks_mut(per_task * rows)
             .zip(self.tasks.iter_mut())
             .enumerate()
@@ -225,7 +389,7 @@ impl Convolution {
                 let lines = &mut scratch.lines[..width * n0];
                 // Gather the block's columns (a blocked transpose).
                 for (w, line) in lines.chunks_exact_mut(n0).enumerate() {
-                    let column = row_spectra[j0 + w..].iter().step_by(half);
+                    let column = source[j0 + w..].iter().step_by(stride);
                     for (value, spectrum) in line[..rows].iter_mut().zip(column) {
                         *value = *spectrum;
                     }
@@ -259,6 +423,41 @@ impl Convolution {
         })
     }
 
+    /// Distributed: sends each rank its rows of the columns filtered here,
+    /// and receives this rank's rows of every rank's columns (per rank `k`
+    /// a row-major `local rows x width(k)` matrix, in rank order, in
+    /// `receive`).
+    fn exchange_to_rows(&mut self) -> Result<()> {
+        let Some(split) = self.split.as_mut() else {
+            return Ok(());
+        };
+        let (rank, ranks) = (split.rank(), split.slab.exchange.ranks());
+        let (rows, block) = (self.rows, self.block);
+        let width = split.width(rank);
+        let mut at = 0;
+        for i in 0..rows {
+            for (j0, tile) in (0..width)
+                .step_by(block)
+                .zip(self.filtered[..rows * width].chunks(block * rows))
+            {
+                let w = tile.len() / rows;
+                debug_assert_eq!(j0 % block, 0);
+                split.send[at..at + w].copy_from_slice(&tile[i * w..(i + 1) * w]);
+                at += w;
+            }
+        }
+        let send_counts: Vec<usize> = split.row_counts.iter().map(|r| r * width).collect();
+        let local = split.row_counts[rank];
+        let receive_counts: Vec<usize> = (0..ranks).map(|k| local * split.width(k)).collect();
+        split.slab.exchange.all_to_all(
+            &split.send[..at],
+            &send_counts,
+            &mut split.receive[..local * (self.size.1 / 2 + 1)],
+            &receive_counts,
+        );
+        Ok(())
+    }
+
     /// Pass 3: complex-to-real transforms of the filtered rows; their data
     /// columns are the output.
     fn inverse_rows(&mut self, output: &mut [f64]) -> Result<()> {
@@ -268,7 +467,9 @@ impl Convolution {
         let block = self.block;
         let fft = &self.row_inverse;
         let filtered = &self.filtered;
-        let tasks: Vec<_> = output
+        let split = self.split.as_ref();
+        let local = self.local_rows();
+        let tasks: Vec<_> = output[..local * columns]
             .chunks_mut(per_task * columns)
             .zip(self.tasks.iter_mut())
             .enumerate()
@@ -277,10 +478,27 @@ impl Convolution {
             for (r, row) in output.chunks_exact_mut(columns).enumerate() {
                 let i = task * per_task + r;
                 let spectrum = &mut scratch.lines[..half];
-                // Gather the row from the tiles of pass 2.
-                for (j0, tile) in (0..half).step_by(block).zip(filtered.chunks(block * rows)) {
-                    let width = tile.len() / rows;
-                    spectrum[j0..j0 + width].copy_from_slice(&tile[i * width..(i + 1) * width]);
+                match split {
+                    // Gather the row from every rank's block of columns.
+                    Some(split) => {
+                        let mut at = 0;
+                        for k in 0..split.slab.exchange.ranks() {
+                            let (j0, w) = (split.columns[k], split.width(k));
+                            spectrum[j0..j0 + w]
+                                .copy_from_slice(&split.receive[at + i * w..at + (i + 1) * w]);
+                            at += local * w;
+                        }
+                    }
+                    // Gather the row from the tiles of pass 2.
+                    None => {
+                        for (j0, tile) in
+                            (0..half).step_by(block).zip(filtered.chunks(block * rows))
+                        {
+                            let width = tile.len() / rows;
+                            spectrum[j0..j0 + width]
+                                .copy_from_slice(&tile[i * width..(i + 1) * width]);
+                        }
+                    }
                 }
                 // A real signal has real DC and Nyquist terms; clear the rounding.
                 spectrum[0].im = 0.0;

@@ -13,6 +13,7 @@
 //! box, not on the padded grid.
 
 use crate::error::Result;
+use crate::slab::Slab;
 
 use super::convolution::{multiplier, wavenumber, zeroed, Convolution};
 use super::fourier::FourierCompliance;
@@ -27,6 +28,8 @@ pub(crate) struct BoxInverse {
     convolution: Convolution,
     input: Vec<f64>,
     output: Vec<f64>,
+    /// Distributed: the split of the grid's rows across the ranks.
+    slab: Option<Slab>,
 }
 
 impl BoxInverse {
@@ -43,6 +46,7 @@ impl BoxInverse {
         surface_modulus: f64,
         delta: f64,
         size: (usize, usize),
+        slab: Option<&Slab>,
     ) -> Result<Self> {
         let (m0, m1) = size;
         let smallest = wavenumber(1, m0.max(m1).max(2), delta).abs();
@@ -60,12 +64,28 @@ impl BoxInverse {
                 0.5 * surface_modulus * q
             }
         };
+        let mut multiplier = multiplier(size, delta, stiffness)?;
+        let (convolution, local) = match slab {
+            None => (Convolution::new(m0, m1, size)?, m0),
+            Some(slab) => {
+                // Until the box is placed, rank 0 holds all its rows.
+                let mut counts = vec![0; slab.exchange.ranks()];
+                counts[0] = m0;
+                let convolution = Convolution::distributed(m0, m1, size, slab, counts)?;
+                let columns = convolution.own_columns();
+                let distinct = m0 / 2 + 1;
+                multiplier.truncate(columns.end * distinct);
+                multiplier.drain(..columns.start * distinct);
+                (convolution, 0)
+            }
+        };
         Ok(BoxInverse {
             size,
-            multiplier: multiplier(size, delta, stiffness)?,
-            convolution: Convolution::new(m0, m1, size)?,
-            input: zeroed(m0 * m1)?,
-            output: zeroed(m0 * m1)?,
+            multiplier,
+            convolution,
+            input: zeroed(local * m1)?,
+            output: zeroed(local * m1)?,
+            slab: slab.cloned(),
         })
     }
 
@@ -92,8 +112,10 @@ impl BoxInverse {
         residual: &[f64],
         result: &mut [f64],
     ) -> Result<(f64, f64)> {
-        let rows = residual.len() / columns.max(1);
         let (m0, m1) = self.size;
+        // This rank's grid rows `grid.start..` and box rows `boxed`
+        // (serial: all of either).
+        let (grid, boxed) = self.place(origin.0, residual.len() / columns.max(1))?;
         // The box columns on the grid, `first..last`, and the grid column
         // of the first.
         let first = usize::try_from(-origin.1).unwrap_or(0).min(m1);
@@ -101,15 +123,16 @@ impl BoxInverse {
             .unwrap_or(0)
             .clamp(first, m1);
         let column = |bj: usize| (origin.1 + bj as isize) as usize;
-        // The grid row of box row `bi`, if on the grid.
-        let grid_row = |bi: usize| {
-            usize::try_from(origin.0 + bi as isize)
+        // The local grid row of (local) box row `b`, if on this rank.
+        let grid_row = |b: usize| {
+            usize::try_from(origin.0 + (boxed.start + b) as isize)
                 .ok()
-                .filter(|&i| i < rows)
+                .filter(|i| grid.contains(i))
+                .map(|i| i - grid.start)
         };
-        for_each_row(&mut self.input, m1, |bi, line| {
+        for_each_row(&mut self.input[..boxed.len() * m1], m1, |b, line| {
             line.fill(0.0);
-            if let Some(i) = grid_row(bi) {
+            if let Some(i) = grid_row(b) {
                 let cells = i * columns + column(first)..i * columns + column(last);
                 for ((value, &m), &r) in line[first..last]
                     .iter_mut()
@@ -122,18 +145,21 @@ impl BoxInverse {
         });
         self.convolution
             .apply(&self.input, &mut self.output, &self.multiplier)?;
-        // Grid rows under the box.
-        let top = usize::try_from(origin.0).unwrap_or(0).min(rows);
-        let bottom = usize::try_from(origin.0 + m0 as isize)
+        // Local grid rows under the box.
+        let local = grid.len();
+        let top = usize::try_from(origin.0 - grid.start as isize)
             .unwrap_or(0)
-            .clamp(top, rows);
+            .min(local);
+        let bottom = usize::try_from(origin.0 + m0 as isize - grid.start as isize)
+            .unwrap_or(0)
+            .clamp(top, local);
         let output = &self.output;
         let sums = map_rows(
             &mut result[top * columns..bottom * columns],
             columns,
             |r, row| {
                 let i = top + r;
-                let bi = (i as isize - origin.0) as usize;
+                let bi = (i as isize + grid.start as isize - origin.0) as usize - boxed.start;
                 let cells = column(first)..column(last);
                 let mut sums = (0.0, 0.0);
                 for (((out, &m), &r), &z) in row[cells.clone()]
@@ -154,5 +180,46 @@ impl BoxInverse {
         Ok(sums
             .into_iter()
             .fold((0.0, 0.0), |(s, d), (a, b)| (s + a, d + b)))
+    }
+
+    /// This rank's grid rows and the box rows it holds, the box's first row
+    /// being grid row `origin` of a grid whose rank holds `local` rows.
+    /// Distributed, box rows above the grid go to the first rank, rows
+    /// below it to the last, the others to the rank of their grid row; the
+    /// convolution learns the new split.
+    fn place(
+        &mut self,
+        origin: isize,
+        local: usize,
+    ) -> Result<(std::ops::Range<usize>, std::ops::Range<usize>)> {
+        let m0 = self.size.0;
+        let Some(slab) = self.slab.as_ref() else {
+            return Ok((0..local, 0..m0));
+        };
+        let ranks = slab.exchange.ranks();
+        // The box rows before rank k's band: those whose grid row lies
+        // before its first row.
+        let before = |k: usize| -> usize {
+            if k == 0 {
+                return 0;
+            }
+            if k == ranks {
+                return m0;
+            }
+            usize::try_from(slab.starts[k] as isize - origin)
+                .unwrap_or(0)
+                .min(m0)
+        };
+        let counts: Vec<usize> = (0..ranks).map(|k| before(k + 1) - before(k)).collect();
+        let rank = slab.exchange.rank();
+        let boxed = before(rank)..before(rank + 1);
+        let grid = slab.rows();
+        self.convolution.set_row_counts(counts)?;
+        let needed = boxed.len() * self.size.1;
+        if self.input.len() < needed {
+            self.input = zeroed(needed)?;
+            self.output = zeroed(needed)?;
+        }
+        Ok((grid, boxed))
     }
 }

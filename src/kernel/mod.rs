@@ -23,6 +23,6 @@ pub use fourier::FourierCompliance;
 pub use influence::{InfluenceCoefficients, MAX_TAIL_ERROR};
 pub(crate) use inverse::BoxInverse;
 pub use operator::{
-    check_film, memory_estimate, ComplianceOperator, DIRECT_LOADS_PER_LOG2,
-    MIN_THICKNESS_OVER_SPACING,
+    check_film, distributed_memory_estimate, memory_estimate, ComplianceOperator,
+    DIRECT_LOADS_PER_LOG2, MIN_THICKNESS_OVER_SPACING,
 };

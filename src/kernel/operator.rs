@@ -3,6 +3,7 @@
 
 use crate::error::{Error, Result};
 use crate::grid::{Boundary, Grid};
+use crate::slab::Slab;
 use crate::substrate::Substrate;
 
 use super::convolution::{multiplier, wavenumber, Convolution};
@@ -66,6 +67,8 @@ pub struct ComplianceOperator {
     /// `E*` of the surface material, for the approximate inverse.
     surface_modulus: f64,
     convolution: Convolution,
+    /// The split across the ranks of a distributed run, `None` when serial.
+    slab: Option<Slab>,
 }
 
 impl std::fmt::Debug for ComplianceOperator {
@@ -91,6 +94,28 @@ pub fn memory_estimate(grid: &Grid, boundary: Boundary) -> usize {
         + 2 * 8 * (size.0 / 2 + 1) * half
         + 8 * cells
         + 10 * 8 * cells
+}
+
+/// Bytes per rank of the compliance operator's buffers and a solver's
+/// per-cell vectors on `grid` split across `ranks` ranks: each rank's share
+/// of [`memory_estimate`], plus the whole kernel spectrum that every rank
+/// builds once (and the influence coefficients it is built from, on an
+/// isolated grid), and the two exchange buffers of its half-spectra.
+pub fn distributed_memory_estimate(grid: &Grid, boundary: Boundary, ranks: usize) -> usize {
+    let size = fft_size(grid, boundary);
+    let half = size.1 / 2 + 1;
+    let ranks = ranks.max(1);
+    let whole_spectrum = 8 * (size.0 / 2 + 1) * half;
+    // On an isolated grid the spectrum is built from the influence
+    // coefficients through the half-spectra of its rows.
+    let building = match boundary {
+        Boundary::Isolated => 8 * grid.len() + 2 * whole_spectrum,
+        Boundary::Periodic => 0,
+    };
+    memory_estimate(grid, boundary).div_ceil(ranks)
+        + whole_spectrum
+        + building
+        + 2 * 16 * grid.rows().div_ceil(ranks) * half
 }
 
 /// The FFT grid: twice the grid each way when isolated (zero padding), the
@@ -239,6 +264,29 @@ impl ComplianceOperator {
     /// `Delta / E*` is not a normal `f64` number (cell size and modulus out of
     /// range together).
     pub fn new(substrate: &Substrate, grid: &Grid, boundary: Boundary) -> Result<Self> {
+        Self::build(substrate, grid, boundary, None)
+    }
+
+    /// The operator split across the ranks of `slab`: it applies to this
+    /// rank's rows of pressures and displacements, and keeps its share of
+    /// the kernel's spectrum (every rank builds the whole spectrum once and
+    /// keeps its columns). No influence coefficients are kept.
+    pub(crate) fn distributed(
+        substrate: &Substrate,
+        grid: &Grid,
+        boundary: Boundary,
+        slab: &Slab,
+    ) -> Result<Self> {
+        let operator = Self::build(substrate, grid, boundary, Some(slab));
+        slab.agree(operator)
+    }
+
+    fn build(
+        substrate: &Substrate,
+        grid: &Grid,
+        boundary: Boundary,
+        slab: Option<&Slab>,
+    ) -> Result<Self> {
         check_film(substrate, grid)?;
         let cell_compliance = grid.spacing() / substrate.surface_material().contact_modulus();
         if !(MIN_CELL_COMPLIANCE..=MAX_CELL_COMPLIANCE).contains(&cell_compliance) {
@@ -252,13 +300,22 @@ impl ComplianceOperator {
         // The big buffers: reserve all at once first, so that a grid too
         // large for this machine is a typed error carrying the estimate
         // instead of an abort.
-        let estimate = memory_estimate(grid, boundary);
+        let estimate = match slab {
+            None => memory_estimate(grid, boundary),
+            Some(slab) => distributed_memory_estimate(grid, boundary, slab.exchange.ranks()),
+        };
         Vec::<u8>::new()
             .try_reserve_exact(estimate)
             .map_err(|_| Error::OutOfMemory {
                 bytes: estimate,
                 what: "the compliance operator and solver buffers",
             })?;
+        let convolution = match slab {
+            None => Convolution::new(grid.rows(), grid.columns(), size)?,
+            Some(slab) => {
+                Convolution::distributed(grid.rows(), grid.columns(), size, slab, slab.counts())?
+            }
+        };
         let mut operator = ComplianceOperator {
             grid: *grid,
             boundary,
@@ -268,19 +325,47 @@ impl ComplianceOperator {
             spectrum: Vec::new(),
             inverse_spectrum: Vec::new(),
             surface_modulus: substrate.surface_material().contact_modulus(),
-            convolution: Convolution::new(grid.rows(), grid.columns(), size)?,
+            convolution,
+            slab: slab.cloned(),
         };
-        operator.spectrum = match boundary {
+        let spectrum = match boundary {
             Boundary::Isolated => {
                 let influence = InfluenceCoefficients::isolated(substrate, grid);
                 check_tail(&influence, substrate)?;
                 let spectrum = operator.isolated_spectrum(&influence)?;
-                operator.influence = Some(influence);
+                if slab.is_none() {
+                    operator.influence = Some(influence);
+                }
                 spectrum
             }
             Boundary::Periodic => operator.periodic_spectrum(&FourierCompliance::new(substrate))?,
         };
+        operator.spectrum = operator.own_part(spectrum);
         Ok(operator)
+    }
+
+    /// The columns of a whole multiplier that this rank's convolution
+    /// filters (all of them when serial).
+    fn own_part(&self, mut multiplier: Vec<f64>) -> Vec<f64> {
+        if self.slab.is_none() {
+            return multiplier;
+        }
+        let distinct = self.convolution.size().0 / 2 + 1;
+        let columns = self.convolution.own_columns();
+        multiplier.truncate(columns.end * distinct);
+        multiplier.drain(..columns.start * distinct);
+        multiplier.shrink_to_fit();
+        multiplier
+    }
+
+    /// This rank's rows of the grid (all of them when serial).
+    pub(crate) fn local_rows(&self) -> std::ops::Range<usize> {
+        self.slab.as_ref().map_or(0..self.grid.rows(), Slab::rows)
+    }
+
+    /// The split across ranks, if distributed.
+    pub(crate) fn slab(&self) -> Option<&Slab> {
+        self.slab.as_ref()
     }
 
     /// Whether the uniform pressure mode has a finite compliance: on an
@@ -385,7 +470,8 @@ impl ComplianceOperator {
     /// As [`ComplianceOperator::apply`].
     pub fn precondition(&mut self, residual: &[f64], result: &mut [f64]) -> Result<()> {
         if self.inverse_spectrum.is_empty() {
-            self.inverse_spectrum = self.stiffness_spectrum()?;
+            let spectrum = self.stiffness_spectrum()?;
+            self.inverse_spectrum = self.own_part(spectrum);
         }
         let spectrum = std::mem::take(&mut self.inverse_spectrum);
         let outcome = self.convolve(residual, result, &spectrum);
@@ -412,7 +498,7 @@ impl ComplianceOperator {
         displacement: &mut [f64],
         spectrum: &[f64],
     ) -> Result<()> {
-        let cells = self.grid.len();
+        let cells = self.local_rows().len() * self.grid.columns();
         for (field, found) in [
             ("pressure", pressure.len()),
             ("displacement", displacement.len()),

@@ -30,6 +30,7 @@ impl ContactSolver {
         warm: Option<&WarmStart>,
         observer: &mut dyn Observer,
     ) -> Result<(Solution, WarmStart)> {
+        self.serial_only("solve depth adhesive")?;
         let work = crate::error::non_negative_finite("work_of_adhesion", work_of_adhesion)?;
         self.solve_depth_hysteretic(indenter, depth, work, work, warm, observer)
     }
@@ -75,6 +76,7 @@ impl ContactSolver {
         warm: Option<&WarmStart>,
         observer: &mut dyn Observer,
     ) -> Result<(Solution, WarmStart)> {
+        self.serial_only("solve depth hysteretic")?;
         check_finite("depth", depth)?;
         let (advancing, receding) = crate::error::works_of_adhesion(advancing, receding)?;
         self.check_warm_start(warm)?;

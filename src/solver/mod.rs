@@ -211,7 +211,7 @@ impl ContactSolver {
                 expected: "at least 1",
             });
         }
-        let n = operator.grid().len();
+        let n = operator.local_rows().len() * operator.grid().columns();
         Ok(ContactSolver {
             operator,
             params,
@@ -253,7 +253,38 @@ impl ContactSolver {
 
     /// [`Error::Interrupted`] if the interrupt check asks to stop.
     pub(crate) fn check_interrupt(&self, what: &'static str) -> Result<()> {
-        interrupted(&self.interrupt, what)
+        let result = interrupted(&self.interrupt, what);
+        match self.operator.slab() {
+            // Every rank stops together.
+            Some(slab) => slab.agree(result),
+            None => result,
+        }
+    }
+
+    /// Sums `values` over the ranks of a distributed solver (nothing when
+    /// serial).
+    fn sum_over_ranks(&self, values: &mut [f64]) {
+        if let Some(slab) = self.operator.slab() {
+            slab.sum(values);
+        }
+    }
+
+    /// [`Error::Unsupported`] for `what` on a distributed solver: only the
+    /// non-adhesive solves run on a grid split across ranks.
+    pub(crate) fn serial_only(&self, what: &'static str) -> Result<()> {
+        match self.operator.slab() {
+            Some(_) => Err(Error::Unsupported {
+                feature: what,
+                reason: "a solver split across MPI ranks runs only the non-adhesive \
+                         solves (solve_depth and solve_force)",
+            }),
+            None => Ok(()),
+        }
+    }
+
+    /// The number of cells of this rank's rows (the grid's when serial).
+    fn local_cells(&self) -> usize {
+        self.operator.local_rows().len() * self.grid().columns()
     }
 
     /// Frees the per-cell scratch vectors and the preconditioner (a coarse
@@ -267,6 +298,13 @@ impl ContactSolver {
     /// The grid.
     pub fn grid(&self) -> &Grid {
         self.operator.grid()
+    }
+
+    /// The grid rows this solver holds: all of them, or on a solver split
+    /// across MPI ranks (the `mpi` feature) this rank's band, which its
+    /// warm starts and solution fields cover.
+    pub fn local_rows(&self) -> std::ops::Range<usize> {
+        self.operator.local_rows()
     }
 
     /// The compliance operator (kernel and FFT plans).
@@ -299,26 +337,42 @@ impl ContactSolver {
     /// Returns the smallest height.
     fn sample_profile<I: Indenter + ?Sized>(&mut self, indenter: &I) -> Result<f64> {
         let grid = *self.operator.grid();
-        if self.workspace.profile.len() != grid.len() {
-            self.workspace = Workspace::new(grid.len())?;
+        let local = self.operator.local_rows();
+        let n = self.local_cells();
+        if self.workspace.profile.len() != n {
+            self.workspace = Workspace::new(n)?;
         }
-        let (lx, ly) = grid.extent();
         let columns = grid.columns();
         let mut lowest = f64::INFINITY;
+        let mut bad = None;
         for (c, f) in self.workspace.profile.iter_mut().enumerate() {
-            let (x, y) = grid.cell_centre(c / columns, c % columns);
+            let (x, y) = grid.cell_centre(local.start + c / columns, c % columns);
             let h = indenter.height(x, y);
             if h.is_nan() || h == f64::NEG_INFINITY {
-                return Err(Error::InvalidParameter {
-                    name: "indenter height",
-                    value: h,
-                    expected: "finite or +inf at every cell centre",
-                });
+                bad = Some(h);
+                break;
             }
             *f = h;
             lowest = lowest.min(h);
         }
+        let checked = match bad {
+            Some(h) => Err(Error::InvalidParameter {
+                name: "indenter height",
+                value: h,
+                expected: "finite or +inf at every cell centre",
+            }),
+            None => Ok(()),
+        };
+        if let Some(slab) = self.operator.slab() {
+            slab.agree(checked)?;
+            let mut values = [lowest];
+            slab.exchange.min(&mut values);
+            lowest = values[0];
+        } else {
+            checked?;
+        }
         if lowest == f64::INFINITY {
+            let (lx, ly) = grid.extent();
             return Err(Error::IndenterOutsideGrid {
                 bounding_radius: indenter.bounding_radius(),
                 grid_extent: lx.min(ly),
@@ -353,6 +407,9 @@ impl ContactSolver {
         let mut edge_contact = false;
         let isolated = self.operator.boundary() == Boundary::Isolated;
         let rows = grid.rows();
+        let local = self.operator.local_rows();
+        // The cell index on the whole grid of this rank's cell `c`.
+        let first = local.start * columns;
         for (c, &p) in pressure.iter().enumerate() {
             let in_contact = match attached {
                 Some(a) => a[c],
@@ -360,14 +417,28 @@ impl ContactSolver {
             };
             if in_contact {
                 cells += 1;
-                edge_contact |= isolated && on_outer_ring(c, rows, columns);
+                edge_contact |= isolated && on_outer_ring(first + c, rows, columns);
             }
-            let (x, y) = grid.cell_centre(c / columns, c % columns);
+            let (x, y) = grid.cell_centre((first + c) / columns, c % columns);
             force += p * area;
             mx += p * x * area;
             my += p * y * area;
         }
-        let shape = (grid.rows(), grid.columns());
+        if self.operator.slab().is_some() {
+            let mut totals = [
+                force,
+                mx,
+                my,
+                cells as f64,
+                f64::from(u8::from(edge_contact)),
+            ];
+            self.sum_over_ranks(&mut totals);
+            (force, mx, my) = (totals[0], totals[1], totals[2]);
+            cells = totals[3] as usize;
+            edge_contact = totals[4] > 0.0;
+        }
+        // Distributed, the fields are this rank's rows.
+        let shape = (local.len(), grid.columns());
         let field = |keep: bool, values: &dyn Fn() -> Vec<f64>| {
             keep.then(|| {
                 Array2::from_shape_vec(shape, values()).expect("field has the grid's shape")
@@ -402,7 +473,7 @@ impl ContactSolver {
     /// The solution with no contact at `depth` (the indenter does not reach
     /// the surface, or it has been pulled off).
     fn no_contact(&mut self, depth: f64) -> (Solution, WarmStart) {
-        let n = self.grid().len();
+        let n = self.local_cells();
         self.workspace.displacement.fill(0.0);
         let pressure = vec![0.0; n];
         let solution = self.solution(&pressure, depth, 0, 0.0, None);
@@ -417,9 +488,9 @@ impl ContactSolver {
 
     fn check_warm_start(&self, warm: Option<&WarmStart>) -> Result<()> {
         match warm {
-            Some(w) if w.pressure.len() != self.grid().len() => Err(Error::ShapeMismatch {
+            Some(w) if w.pressure.len() != self.local_cells() => Err(Error::ShapeMismatch {
                 field: "warm start",
-                expected: self.grid().len(),
+                expected: self.local_cells(),
                 found: w.pressure.len(),
             }),
             _ => Ok(()),

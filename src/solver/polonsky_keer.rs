@@ -8,7 +8,7 @@ use std::ops::Range;
 use crate::error::{Error, Result};
 use crate::grid::{fft_friendly_even, Boundary, Grid};
 use crate::indenter::Indenter;
-use crate::kernel::BoxInverse;
+use crate::kernel::{BoxInverse, ComplianceOperator};
 
 use super::passes::Bounds;
 use super::{
@@ -186,19 +186,31 @@ impl ContactSolver {
         let (coarse_rows, half) = (rows.div_ceil(2), columns.div_ceil(2));
         if self.coarse.is_none() {
             let params = coarse_params(&self.params);
-            let coarse = Grid::new(coarse_rows, half, 2.0 * grid.spacing())
-                .and_then(|g| {
-                    ContactSolver::new(&self.substrate, &g, self.operator.boundary(), params)
-                })
-                .ok()
-                .map(Box::new);
-            self.coarse = Some(coarse);
+            let boundary = self.operator.boundary();
+            let built = Grid::new(coarse_rows, half, 2.0 * grid.spacing()).and_then(|g| match self
+                .operator
+                .slab()
+            {
+                None => ContactSolver::new(&self.substrate, &g, boundary, params),
+                Some(slab) => {
+                    let slab = slab.halved(rows);
+                    let operator =
+                        ComplianceOperator::distributed(&self.substrate, &g, boundary, &slab)?;
+                    ContactSolver::with_operator(operator, &self.substrate, params)
+                }
+            });
+            // Distributed, every rank has the coarse solver or none has.
+            let built = match self.operator.slab() {
+                Some(slab) => slab.agree(built),
+                None => built,
+            };
+            self.coarse = Some(built.ok().map(Box::new));
         }
         let coarse = self.coarse.as_mut()?.as_mut()?;
         // The coarse cell of fine cell `c`.
         let block = |c: usize| (c / columns / 2) * half + (c % columns) / 2;
         let restricted = warm.map(|w| {
-            let mut pressure = vec![0.0; coarse_rows * half];
+            let mut pressure = vec![0.0; coarse.local_cells()];
             for (c, p) in w.pressure.iter().enumerate() {
                 pressure[block(c)] += 0.25 * p;
             }
@@ -222,16 +234,19 @@ impl ContactSolver {
         // The coarse solver keeps its kernel and plans, not its scratch,
         // while the finer solve runs.
         coarse.release_scratch();
+        let solved = match self.operator.slab() {
+            Some(slab) => slab.agree(solved),
+            None => solved,
+        };
         let (solution, solved) = solved.ok()?;
+        let fine = self.local_cells();
         let pressure: Vec<f64> = match (warm, start) {
-            (Some(w), Some(r)) => (0..rows * columns)
+            (Some(w), Some(r)) => (0..fine)
                 .map(|c| {
                     (w.pressure[c] + solved.pressure[block(c)] - r.pressure[block(c)]).max(0.0)
                 })
                 .collect(),
-            _ => (0..rows * columns)
-                .map(|c| solved.pressure[block(c)])
-                .collect(),
+            _ => (0..fine).map(|c| solved.pressure[block(c)]).collect(),
         };
         let attached = pressure.iter().map(|p| *p > 0.0).collect();
         Some((
@@ -246,14 +261,17 @@ impl ContactSolver {
         warm: Option<&WarmStart>,
         observer: &mut dyn Observer,
     ) -> Result<(Solution, WarmStart)> {
-        let n = self.grid().len();
+        let n = self.local_cells();
         let columns = self.grid().columns();
         let area = self.grid().cell_area();
+        // This rank's rows (all of them when serial).
+        let local = self.operator.local_rows();
         let reachable = self.reachable();
         let mut pressure = self.initial_pressure(control, warm, &reachable);
         if let Control::Force(w) = control {
-            let total = area * pressure.iter().sum::<f64>();
-            passes::scale(&mut pressure, w / total);
+            let mut total = [area * pressure.iter().sum::<f64>()];
+            self.sum_over_ranks(&mut total);
+            passes::scale(&mut pressure, w / total[0]);
         }
         let force_control = matches!(control, Control::Force(_));
         let tolerance = self.params.tolerance;
@@ -281,18 +299,21 @@ impl ContactSolver {
                 self.operator
                     .apply(&pressure, &mut self.workspace.displacement)?;
             }
-            let ws = &mut self.workspace;
             // The depth under force control: the mean of profile + u over
             // the contact.
             let reference = match control {
                 Control::Depth(d) => d,
                 Control::Force(_) => {
+                    let ws = &self.workspace;
                     let cells = pressure_cells.clone();
                     let (sum, contact) = passes::contact_sum(
                         &ws.profile[cells.clone()],
                         &ws.displacement[cells.clone()],
                         &pressure[cells],
                     );
+                    let mut totals = [sum, contact as f64];
+                    self.sum_over_ranks(&mut totals);
+                    let (sum, contact) = (totals[0], totals[1] as usize);
                     if contact == 0 {
                         return Err(Error::Internal {
                             what: "constrained conjugate gradients",
@@ -307,6 +328,7 @@ impl ContactSolver {
             // cells the indenter overlaps (the free variables of the
             // bound-constrained minimum); new overlap restarts the
             // conjugation.
+            let ws = &mut self.workspace;
             let set = passes::gaps_and_working_set(
                 &ws.profile,
                 &ws.displacement,
@@ -317,6 +339,8 @@ impl ContactSolver {
                 &mut ws.gap,
                 &mut ws.working,
             );
+            let set = self.whole_working_set(set);
+            let ws = &mut self.workspace;
             if set.members == 0 {
                 // No pressure and no overlap (depth control only: under
                 // force control some cell always carries pressure): zero
@@ -324,9 +348,11 @@ impl ContactSolver {
                 // depth a hair's breadth past first contact.
                 return self.converged(control, pressure, depth, iteration, 0.0);
             }
-            // The working set's rows (it has members, so bounds).
+            // The working set's rows on this rank (it has members, so
+            // bounds).
             let working_cells = set.bounds.map_or(0..n, |((first, last), _)| {
-                first * columns..(last + 1) * columns
+                let row = |r: usize| r.clamp(local.start, local.end) - local.start;
+                row(first) * columns..row(last + 1) * columns
             });
             if force_control {
                 // The gradient projected on loads of zero net force.
@@ -338,6 +364,9 @@ impl ContactSolver {
             // too (its mean taken out of the direction; the product r.z is
             // unchanged as r has zero sum).
             let (z_sum, rz) = self.precondition_working_set(set.bounds)?;
+            let mut sums = [z_sum, rz];
+            self.sum_over_ranks(&mut sums);
+            let [z_sum, rz] = sums;
             let ws = &mut self.workspace;
             let z_shift = if force_control {
                 z_sum / set.members as f64
@@ -379,6 +408,10 @@ impl ContactSolver {
                 &ws.response[cells.clone()],
                 &ws.direction[cells],
             );
+            let mut dots = [numerator, denominator];
+            self.sum_over_ranks(&mut dots);
+            let [numerator, denominator] = dots;
+            let ws = &mut self.workspace;
             let step = if denominator > 0.0 {
                 numerator / denominator
             } else if numerator == 0.0 {
@@ -404,6 +437,8 @@ impl ContactSolver {
                 &mut ws.gap,
                 &mut ws.previous,
             );
+            stats = self.whole_step(stats);
+            let ws = &mut self.workspace;
             // Pressures are now zero off the working set.
             pressure_cells = working_cells.clone();
             if stats.corrected > 0 {
@@ -424,13 +459,16 @@ impl ContactSolver {
             if let Control::Force(w) = control {
                 let total = area * stats.size;
                 if total > 0.0 {
-                    (stats.change, stats.size) = passes::rescale(
+                    let mut sums: [f64; 2] = passes::rescale(
                         working_cells.clone(),
                         &mut pressure,
                         &mut ws.displacement,
                         &ws.previous,
                         w / total,
-                    );
+                    )
+                    .into();
+                    self.sum_over_ranks(&mut sums);
+                    [stats.change, stats.size] = sums;
                 } else {
                     // Every pressure clamped: restart uniform on the
                     // working set.
@@ -440,7 +478,9 @@ impl ContactSolver {
                     passes::scale(&mut pressure, w / (area * set.members as f64));
                     rz_old = 0.0;
                     self.operator.apply(&pressure, &mut ws.displacement)?;
-                    stats.size = pressure.iter().sum();
+                    let mut size = [pressure.iter().sum()];
+                    self.sum_over_ranks(&mut size);
+                    stats.size = size[0];
                 }
             }
             residual = if stats.size > 0.0 {
@@ -479,12 +519,14 @@ impl ContactSolver {
         // control follows from it.
         if let Control::Force(_) = control {
             let ws = &self.workspace;
-            let (sum, count) = (0..n)
+            let (sum, count) = (0..pressure.len())
                 .filter(|&c| pressure[c] > 0.0)
                 .fold((0.0, 0usize), |(s, k), c| {
                     (s + ws.profile[c] + ws.displacement[c], k + 1)
                 });
-            depth = sum / count.max(1) as f64;
+            let mut totals = [sum, count as f64];
+            self.sum_over_ranks(&mut totals);
+            depth = totals[0] / totals[1].max(1.0);
         }
         let solution = self.solution(&pressure, depth, iteration, residual, None);
         super::check_solution(&solution)?;
@@ -557,12 +599,18 @@ impl ContactSolver {
         if !reuse {
             // Free the old box before building the new one.
             self.preconditioner = None;
-            self.preconditioner = Some(BoxInverse::new(
+            let built = BoxInverse::new(
                 &self.compliance,
                 self.surface_contact_modulus,
                 grid.spacing(),
                 needed,
-            )?);
+                self.operator.slab(),
+            );
+            let built = match self.operator.slab() {
+                Some(slab) => slab.agree(built),
+                None => built,
+            };
+            self.preconditioner = Some(built?);
         }
         let Some(inverse) = self.preconditioner.as_mut() else {
             return Ok((0.0, 0.0));
@@ -578,6 +626,59 @@ impl ContactSolver {
         };
         let origin = (start(bounds.0, m0), start(bounds.1, m1));
         inverse.apply(columns, origin, &ws.working, &ws.gap, &mut ws.response)
+    }
+
+    /// The working set over every rank, its bounds in rows of the whole
+    /// grid (a serial solver's set as it is).
+    fn whole_working_set(&self, mut set: passes::WorkingSet) -> passes::WorkingSet {
+        let Some(slab) = self.operator.slab() else {
+            return set;
+        };
+        let first = slab.rows().start;
+        let mut sums = [
+            set.members as f64,
+            set.gap_sum,
+            f64::from(u8::from(set.overlap)),
+        ];
+        slab.sum(&mut sums);
+        // Bounds as minima: first row and column, and minus the last ones.
+        let mut bounds = match set.bounds {
+            Some(((r0, r1), (c0, c1))) => [
+                (first + r0) as f64,
+                -((first + r1) as f64),
+                c0 as f64,
+                -(c1 as f64),
+            ],
+            None => [f64::INFINITY; 4],
+        };
+        slab.exchange.min(&mut bounds);
+        set.members = sums[0] as usize;
+        set.gap_sum = sums[1];
+        set.overlap = sums[2] > 0.0;
+        set.bounds = bounds[0].is_finite().then(|| {
+            (
+                (bounds[0] as usize, -bounds[1] as usize),
+                (bounds[2] as usize, -bounds[3] as usize),
+            )
+        });
+        set
+    }
+
+    /// A step's statistics over every rank.
+    fn whole_step(&self, mut stats: passes::Step) -> passes::Step {
+        if self.operator.slab().is_some() {
+            let mut sums = [
+                stats.corrected as f64,
+                stats.change,
+                stats.size,
+                stats.contact as f64,
+            ];
+            self.sum_over_ranks(&mut sums);
+            stats.corrected = sums[0] as usize;
+            (stats.change, stats.size) = (sums[1], sums[2]);
+            stats.contact = sums[3] as usize;
+        }
+        stats
     }
 
     /// The operator's response at a cell to unit pressure on it.

@@ -122,6 +122,7 @@ impl ContactSolver {
         receding: f64,
         observer: &mut dyn Observer,
     ) -> Result<AdhesiveBranches> {
+        self.serial_only("adhesive branches")?;
         let target = match reach {
             Reach::Depth(d) => check_finite("depth", d)?,
             Reach::Force(f) => check_finite("force", f)?,
@@ -238,6 +239,7 @@ impl ContactSolver {
     /// # Errors
     /// As [`ContactSolver::solve_depth`] for the indenter's heights.
     pub fn lowest_height<I: Indenter + ?Sized>(&mut self, indenter: &I) -> Result<f64> {
+        self.serial_only("lowest height")?;
         self.sample_profile(indenter)
     }
 
@@ -255,6 +257,7 @@ impl ContactSolver {
         branches: &AdhesiveBranches,
         point: &BranchPoint,
     ) -> Result<super::Solution> {
+        self.serial_only("branch solution")?;
         check_finite("depth", point.depth)?;
         self.sample_profile(indenter)?;
         let n = self.grid().len();

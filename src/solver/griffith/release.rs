@@ -102,6 +102,7 @@ impl ContactSolver {
         contact: &Array2<bool>,
         window: f64,
     ) -> Result<EdgeRelease> {
+        self.serial_only("edge release")?;
         check_finite("depth", depth)?;
         if !(1.0..=MAX_WINDOW).contains(&window) {
             return Err(Error::InvalidParameter {
