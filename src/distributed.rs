@@ -52,7 +52,7 @@ use crate::error::{Error, Result};
 use crate::grid::{Boundary, Grid};
 use crate::kernel::ComplianceOperator;
 use crate::slab::{Exchange, Slab};
-use crate::solver::{ContactSolver, SolverParams, MULTIRESOLUTION_CELLS};
+use crate::solver::{ContactSolver, SolverParams};
 use crate::substrate::Substrate;
 
 /// The processes of an MPI communicator that share one grid.
@@ -117,21 +117,6 @@ impl Ranks {
     pub fn sum(&self, values: &mut [f64]) {
         self.exchange.sum(values);
     }
-
-    /// The split of `grid`'s rows that a solver of these ranks uses: each
-    /// rank's first row is a multiple of `2^L`, `L` the number of
-    /// multi-resolution levels, so that the bands line up on every coarser
-    /// grid.
-    fn slab(&self, grid: &Grid) -> Result<Slab> {
-        let mut levels = 0u32;
-        let (mut rows, mut columns) = (grid.rows(), grid.columns());
-        while rows.min(columns) >= MULTIRESOLUTION_CELLS {
-            (rows, columns) = (rows.div_ceil(2), columns.div_ceil(2));
-            levels += 1;
-        }
-        let exchange: Arc<dyn Exchange> = self.exchange.clone();
-        Slab::new(exchange, grid.rows(), 1 << levels)
-    }
 }
 
 impl ContactSolver {
@@ -151,7 +136,8 @@ impl ContactSolver {
         params: SolverParams,
         ranks: &Ranks,
     ) -> Result<Self> {
-        let slab = ranks.slab(grid)?;
+        let exchange: Arc<dyn Exchange> = ranks.exchange.clone();
+        let slab = Slab::for_grid(exchange, grid)?;
         let operator = ComplianceOperator::distributed(substrate, grid, boundary, &slab)?;
         let solver = ContactSolver::with_operator(operator, substrate, params);
         slab.agree(solver)

@@ -61,7 +61,6 @@ impl Slab {
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] if a rank would hold no row.
-    #[cfg_attr(not(feature = "mpi"), allow(dead_code))]
     pub(crate) fn new(exchange: Arc<dyn Exchange>, rows: usize, align: usize) -> Result<Self> {
         let ranks = exchange.ranks().max(1);
         let align = align.max(1);
@@ -78,6 +77,19 @@ impl Slab {
             .map(|k| ((k * units / ranks) * align).min(rows))
             .collect();
         Ok(Slab { exchange, starts })
+    }
+
+    /// The split of `grid`'s rows for a solver: each rank's first row a
+    /// multiple of `2^L`, `L` the number of multi-resolution levels below
+    /// it, so that the bands line up on every coarser grid.
+    pub(crate) fn for_grid(exchange: Arc<dyn Exchange>, grid: &crate::grid::Grid) -> Result<Self> {
+        let mut levels = 0u32;
+        let (mut rows, mut columns) = (grid.rows(), grid.columns());
+        while rows.min(columns) >= crate::solver::MULTIRESOLUTION_CELLS {
+            (rows, columns) = (rows.div_ceil(2), columns.div_ceil(2));
+            levels += 1;
+        }
+        Self::new(exchange, grid.rows(), 1 << levels)
     }
 
     /// The same split on the grid of half the rows (rounded up).

@@ -7,13 +7,22 @@ use super::*;
 impl Scene {
     /// A solver for this scene's substrate on `grid`.
     fn solver_on(&self, grid: &Grid) -> Result<ContactSolver> {
-        let params = SolverParams {
+        ContactSolver::new(
+            &self.substrate.build()?,
+            grid,
+            self.boundary,
+            self.solver_params(),
+        )
+    }
+
+    /// The solver parameters of this scene.
+    fn solver_params(&self) -> SolverParams {
+        SolverParams {
             tolerance: self.solver.tolerance,
             max_iterations: self.solver.max_iterations,
             fields: Fields::default(),
             ..SolverParams::default()
-        };
-        ContactSolver::new(&self.substrate.build()?, grid, self.boundary, params)
+        }
     }
 
     /// Builds the kernel and FFT plans for this scene (the expensive part),
@@ -23,6 +32,26 @@ impl Scene {
     /// As [`Scene::validate`].
     pub fn solver(&self) -> Result<ContactSolver> {
         self.solver_on(&self.grid()?)
+    }
+
+    /// Builds this scene's solver split across the ranks of an MPI run
+    /// (the `mpi` feature; see [`crate::distributed`]), to pass to
+    /// [`Scene::run_on`] on every rank. Scenes without adhesion run split;
+    /// their steps are the whole grid's on every rank. Fields and stresses
+    /// are refused there ([`Error::Unsupported`]): each rank holds only its
+    /// own rows of them.
+    ///
+    /// # Errors
+    /// As [`Scene::solver`] and [`ContactSolver::distributed`].
+    #[cfg(feature = "mpi")]
+    pub fn distributed_solver(&self, ranks: &crate::distributed::Ranks) -> Result<ContactSolver> {
+        ContactSolver::distributed(
+            &self.substrate.build()?,
+            &self.grid()?,
+            self.boundary,
+            self.solver_params(),
+            ranks,
+        )
     }
 
     /// Runs the scene, reporting each step to `progress`.
@@ -98,6 +127,15 @@ impl Scene {
         observer: &mut dyn Observer,
     ) -> Result<Curve> {
         self.validate_settings()?;
+        if solver.is_split()
+            && (self.outputs.fields != Fields::default() || self.outputs.stresses.any())
+        {
+            return Err(Error::Unsupported {
+                feature: "fields and stresses of a scene split across MPI ranks",
+                reason: "each rank holds only its own rows of them: run the scene on one \
+                         process for its fields and stresses",
+            });
+        }
         let indenter = self.indenter.build(self.tilt)?;
         let mut grown: Option<ContactSolver> = None;
         for _ in 0..=MAX_GRID_GROWTH {
@@ -177,7 +215,13 @@ impl Scene {
     /// A solver on a `cells`-square grid of `solver`'s spacing, with its
     /// interrupt check (a grid grown or re-centred during a run).
     fn solver_like(&self, solver: &ContactSolver, cells: usize) -> Result<ContactSolver> {
-        let mut next = self.solver_on(&Grid::new(cells, cells, solver.grid().spacing())?)?;
+        let grid = Grid::new(cells, cells, solver.grid().spacing())?;
+        let mut next = solver.like_on(
+            &self.substrate.build()?,
+            &grid,
+            self.boundary,
+            self.solver_params(),
+        )?;
         next.set_interrupt(solver.interrupt().cloned());
         Ok(next)
     }

@@ -282,6 +282,33 @@ impl ContactSolver {
         }
     }
 
+    /// A solver like this one (split across the same ranks if it is) for
+    /// `substrate` on another grid.
+    pub(crate) fn like_on(
+        &self,
+        substrate: &Substrate,
+        grid: &Grid,
+        boundary: Boundary,
+        params: SolverParams,
+    ) -> Result<ContactSolver> {
+        match self.operator.slab() {
+            None => ContactSolver::new(substrate, grid, boundary, params),
+            Some(slab) => {
+                let slab = crate::slab::Slab::for_grid(slab.exchange.clone(), grid)?;
+                let operator = ComplianceOperator::distributed(substrate, grid, boundary, &slab)?;
+                slab.agree(ContactSolver::with_operator(operator, substrate, params))
+            }
+        }
+    }
+
+    /// Whether this solver is split across more than one rank (its fields
+    /// hold only this rank's rows).
+    pub(crate) fn is_split(&self) -> bool {
+        self.operator
+            .slab()
+            .is_some_and(|slab| slab.exchange.ranks() > 1)
+    }
+
     /// The number of cells of this rank's rows (the grid's when serial).
     fn local_cells(&self) -> usize {
         self.operator.local_rows().len() * self.grid().columns()

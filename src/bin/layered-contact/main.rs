@@ -3,6 +3,7 @@
 //! ```text
 //! layered-contact run scene.toml -o out/     # curve.csv, fields and stresses as .npy, curve.svg, section.svg
 //! layered-contact check scene.toml           # validate; grid and memory
+//! mpirun -np 4 layered-contact run scene.toml  # split across MPI ranks (feature mpi)
 //! layered-contact reference scene.toml       # exact values where they exist
 //! layered-contact paper [--out DIR] [--fine] # the reference experiment
 //! ```
@@ -51,6 +52,10 @@ enum Command {
     Check {
         /// The scene file.
         scene: PathBuf,
+        /// Also print the memory per rank of a run split across this many
+        /// MPI ranks.
+        #[arg(long)]
+        ranks: Option<usize>,
     },
     /// Print the exact values of the scene's results, where the library has
     /// them (axisymmetric flat punch, paraboloid, sphere).
@@ -97,7 +102,7 @@ fn main() -> ExitCode {
 fn dispatch(command: Command) -> Result<()> {
     match command {
         Command::Run { scene, out } => run(&Scene::read(&scene)?, &out),
-        Command::Check { scene } => check(&Scene::read(&scene)?),
+        Command::Check { scene, ranks } => check(&Scene::read(&scene)?, ranks),
         Command::Reference { scene } => reference(&Scene::read(&scene)?),
         Command::Paper { out, fine } => paper::run(&out, fine),
         Command::Fit(args) => fit::fit(&args),
@@ -113,9 +118,58 @@ fn dispatch(command: Command) -> Result<()> {
 }
 
 fn run(scene: &Scene, out: &std::path::Path) -> Result<()> {
+    // Under mpirun or srun (with the mpi feature), the scene is solved
+    // split across the ranks; rank 0 reports and writes.
+    #[cfg(feature = "mpi")]
+    if let Some((_universe, ranks)) = mpi_ranks()? {
+        if ranks.rank() != 0 {
+            let mut solver = scene.distributed_solver(&ranks)?;
+            scene.run_on(&mut solver, &mut |_| {})?;
+            return Ok(());
+        }
+        say!("split across {} MPI ranks", ranks.count());
+        let mut progress = progress::Progress::new(scene);
+        progress.stage("building the kernel");
+        let solver = scene.distributed_solver(&ranks)?;
+        return run_with(scene, solver, progress, out);
+    }
     let mut progress = progress::Progress::new(scene);
     progress.stage("building the kernel");
-    let mut solver = scene.solver()?;
+    let solver = scene.solver()?;
+    run_with(scene, solver, progress, out)
+}
+
+/// MPI and the ranks of its world when this process was started by an MPI
+/// launcher with more than one rank (Open MPI's `mpirun`, or a PMI
+/// launcher such as MPICH's Hydra or Slurm's `srun`); `None` otherwise.
+#[cfg(feature = "mpi")]
+fn mpi_ranks() -> Result<
+    Option<(
+        mpi::environment::Universe,
+        layered_contact::distributed::Ranks,
+    )>,
+> {
+    let launched = ["OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"]
+        .iter()
+        .any(|name| std::env::var_os(name).is_some());
+    if !launched {
+        return Ok(None);
+    }
+    let (universe, _) = mpi::initialize_with_threading(mpi::Threading::Serialized)
+        .ok_or("MPI was already initialised")?;
+    let ranks = layered_contact::distributed::Ranks::new(universe.world())?;
+    if ranks.count() < 2 {
+        return Ok(None);
+    }
+    Ok(Some((universe, ranks)))
+}
+
+fn run_with(
+    scene: &Scene,
+    mut solver: layered_contact::solver::ContactSolver,
+    mut progress: progress::Progress,
+    out: &std::path::Path,
+) -> Result<()> {
     progress.stage("solving");
     // The energy balance builds its family of contact sets before any step:
     // each set is reported as it is solved.
@@ -178,7 +232,7 @@ fn run(scene: &Scene, out: &std::path::Path) -> Result<()> {
     Ok(())
 }
 
-fn check(scene: &Scene) -> Result<()> {
+fn check(scene: &Scene, ranks: Option<usize>) -> Result<()> {
     scene.validate()?;
     let grid = scene.grid()?;
     let (lx, ly) = grid.extent();
@@ -195,6 +249,14 @@ fn check(scene: &Scene) -> Result<()> {
         }
     );
     say!("memory: about {:.1} MB for the solve", bytes as f64 / 1e6);
+    if let Some(ranks) = ranks {
+        let per_rank =
+            layered_contact::kernel::distributed_memory_estimate(&grid, scene.boundary, ranks);
+        say!(
+            "memory split across {ranks} MPI ranks: about {:.1} MB per rank",
+            per_rank as f64 / 1e6
+        );
+    }
     if let layered_contact::Substrate::Stack(stack) = scene.substrate.build()? {
         // doc::multilayer: about 0.033 L^2 s on 2 cores for an isolated grid.
         let layers = stack.layers().len() as f64;
