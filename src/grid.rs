@@ -4,9 +4,11 @@ use crate::error::{positive_finite, Error, Result};
 
 /// The largest number of cells along one axis.
 pub const MAX_CELLS_PER_AXIS: usize = 1 << 15;
-/// The largest number of cells in a grid (the isolated operator works on four
-/// times as many).
-pub const MAX_CELLS: usize = 1 << 26;
+/// The largest number of cells in a grid, `2^30` (32768 x 32768: the
+/// isolated operator works on four times as many). One process has the
+/// memory for about `2^26` on 24 GiB ([`crate::kernel::memory_estimate`]);
+/// larger grids run split across MPI ranks (the `mpi` feature).
+pub const MAX_CELLS: usize = 1 << 30;
 
 /// A rectangular grid of `rows x columns` square cells of side `spacing`
 /// (`Delta`, m), carrying a pressure uniform in each cell.
@@ -53,7 +55,7 @@ impl Grid {
             return Err(Error::InvalidGrid {
                 rows,
                 columns,
-                expected: "at most 2^15 cells per axis and 2^26 cells in all",
+                expected: "at most 2^15 cells per axis and 2^30 cells in all",
             });
         }
         Ok(Grid {

@@ -314,8 +314,11 @@ fn operator_rejects_wrong_lengths_and_grids_reject_bad_sizes() {
         Grid::new(1 << 16, 3, 1e-4),
         Err(Error::InvalidGrid { .. })
     ));
+    // 2^15 x 2^15 is the largest grid (2^30 cells, for runs split across
+    // MPI ranks); one more row is refused.
+    assert!(Grid::new(1 << 15, 1 << 15, 1e-4).is_ok());
     assert!(matches!(
-        Grid::new(1 << 14, 1 << 14, 1e-4),
+        Grid::new((1 << 15) + 1, 1 << 15, 1e-4),
         Err(Error::InvalidGrid { .. })
     ));
     assert!(matches!(

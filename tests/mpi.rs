@@ -6,7 +6,9 @@
 //! serially (the whole grid) and split across the ranks, and compares its
 //! own rows. Both solve to a relative tolerance of 1e-14, so they agree to
 //! far below the asserted 1e-12: they take the same steps, and differ only
-//! in the order in which sums over the grid are added.
+//! in the order in which sums over the grid are added. Last, the tool runs
+//! a scene file on one process and under `mpirun -np 2`, with the same
+//! curve.
 
 use std::process::{Command, ExitCode};
 
@@ -32,15 +34,7 @@ fn main() -> ExitCode {
     }
     let exe = std::env::current_exe().expect("the test's own path");
     for np in ["2", "4"] {
-        let status = Command::new("mpirun")
-            .args(["-np", np])
-            .arg(&exe)
-            .env("LAYERED_CONTACT_MPI_RANK", "1")
-            // Open MPI: allow root (CI containers) and more ranks than cores.
-            .env("OMPI_ALLOW_RUN_AS_ROOT", "1")
-            .env("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
-            .env("OMPI_MCA_rmaps_base_oversubscribe", "1")
-            .status();
+        let status = mpirun(np).arg(&exe).status();
         match status {
             Ok(s) if s.success() => println!("mpirun -np {np}: ok"),
             other => {
@@ -49,7 +43,101 @@ fn main() -> ExitCode {
             }
         }
     }
-    ExitCode::SUCCESS
+    match the_tool_runs_a_scene_split() {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("{e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// `mpirun -np <np>`, allowed to run as root (CI containers) and to start
+/// more ranks than there are cores (Open MPI).
+fn mpirun(np: &str) -> Command {
+    let mut command = Command::new("mpirun");
+    command
+        .args(["-np", np])
+        .env("LAYERED_CONTACT_MPI_RANK", "1")
+        .env("OMPI_ALLOW_RUN_AS_ROOT", "1")
+        .env("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+        .env("OMPI_MCA_rmaps_base_oversubscribe", "1");
+    command
+}
+
+/// The tool (`layered-contact run`) on a rough force cycle, on one process
+/// and under `mpirun -np 2`: the curves agree to 1e-12 (depth and force)
+/// and exactly (contact area).
+fn the_tool_runs_a_scene_split() -> Result<(), String> {
+    let tool = env!("CARGO_BIN_EXE_layered-contact");
+    let folder = std::env::temp_dir().join(format!("layered-contact-mpi-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).map_err(|e| e.to_string())?;
+    let scene = folder.join("rough.toml");
+    std::fs::write(
+        &scene,
+        "boundary = \"periodic\"\n\
+         [substrate]\nkind = \"layer_on_rigid_base\"\nyoungs_modulus = 1e6\n\
+         poisson_ratio = 0.49\nthickness = 1e-4\n\
+         [indenter]\nkind = \"rough_surface\"\nhurst = 0.8\n\
+         amplitude = { rms_slope = 0.1 }\nlong_cutoff = 2.5e-4\nshort_cutoff = 3.125e-5\n\
+         seed = 1\ncells = 128\nspacing = 7.8125e-6\n\
+         [protocol]\nkind = \"force_cycle\"\nmax_force = 2e-2\nsteps = 3\n\
+         [solver]\ntolerance = 1e-13\n",
+    )
+    .map_err(|e| e.to_string())?;
+    let curve = |out: &str| -> Result<Vec<Vec<f64>>, String> {
+        let text = std::fs::read_to_string(folder.join(out).join("curve.csv"))
+            .map_err(|e| e.to_string())?;
+        Ok(text
+            .lines()
+            .skip(1)
+            .map(|line| {
+                line.split(',')
+                    .skip(1)
+                    .filter_map(|v| v.parse().ok())
+                    .collect()
+            })
+            .collect())
+    };
+    let serial = Command::new(tool)
+        .args(["run", scene.to_str().unwrap_or_default(), "-o"])
+        .arg(folder.join("serial"))
+        .output()
+        .map_err(|e| e.to_string())?;
+    let split = mpirun("2")
+        .args([tool, "run", scene.to_str().unwrap_or_default(), "-o"])
+        .arg(folder.join("split"))
+        .output()
+        .map_err(|e| e.to_string())?;
+    if !serial.status.success() || !split.status.success() {
+        return Err(format!(
+            "the tool failed: {}\n{}",
+            String::from_utf8_lossy(&serial.stderr),
+            String::from_utf8_lossy(&split.stderr)
+        ));
+    }
+    if !String::from_utf8_lossy(&split.stdout).contains("split across 2 MPI ranks") {
+        return Err("the tool under mpirun did not split the scene".into());
+    }
+    let (a, b) = (curve("serial")?, curve("split")?);
+    if a.len() != 7 || a.len() != b.len() {
+        return Err(format!("{} and {} steps (7 expected)", a.len(), b.len()));
+    }
+    for (x, y) in a.iter().zip(&b) {
+        // depth, force, contact area, contact radius, iterations
+        for (k, (u, v)) in x.iter().zip(y).take(4).enumerate() {
+            let scale = u.abs().max(1e-300);
+            let limit = if k == 2 { 0.0 } else { AGREEMENT };
+            if (u - v).abs() / scale > limit {
+                return Err(format!("column {k}: serial {u:e}, split {v:e}"));
+            }
+        }
+    }
+    println!(
+        "the tool under mpirun -np 2: {} steps, as on one process",
+        a.len()
+    );
+    std::fs::remove_dir_all(&folder).map_err(|e| e.to_string())
 }
 
 /// One case: a body, a grid, an indenter and loads.

@@ -358,7 +358,9 @@ fn extreme_values_read_in_scientific_notation() {
 
 /// Also: `rough_surface.cells` was documented as up to 16384, but anything
 /// above 8192 failed the grid's limit of 2^26 cells with an unrelated
-/// message. The range is now 2 to 8192, checked by validation.
+/// message. The range is now 2 to 32768 (the grid's limit per axis, with
+/// grids of up to 2^30 cells for runs split across MPI ranks), checked by
+/// validation.
 #[cfg(feature = "serde")]
 #[test]
 fn rough_surfaces_stop_at_the_grid_limit() {
@@ -373,12 +375,12 @@ fn rough_surfaces_stop_at_the_grid_limit() {
         ))
         .unwrap()
     };
-    match scene(16384).validate() {
+    match scene(32769).validate() {
         Err(Error::InvalidParameter {
             value, expected, ..
         }) => {
-            assert_eq!(value, 16384.0);
-            assert!(expected.contains("8192"));
+            assert_eq!(value, 32769.0);
+            assert!(expected.contains("32768"));
         }
         other => panic!("{other:?}"),
     }

@@ -19,10 +19,10 @@
 //! | isolated influence coefficients | tail error estimate at most `1e-6` (a coating `1e3` or more times stiffer than its base: grid diagonal at most 8192 coating thicknesses) | [`ComplianceOperator::new`](crate::kernel::ComplianceOperator::new) | `InvalidParameter` |
 //! | load | penetration `0` or at least `1e-100 Delta`; force `0` or at least `1e-100 E* Delta^2` | [`solve_depth`](crate::solver::ContactSolver::solve_depth), [`solve_force`](crate::solver::ContactSolver::solve_force) | `InvalidParameter` |
 //! | files read (scene, `.npy` and text height maps) | regular files of at most 16 MiB, 513 MiB and 2 GiB; a `.npy` header's shape within the bytes that follow it | [`Scene::read`](crate::scene::Scene::read), [`HeightMap::from_npy`](crate::indenter::HeightMap::from_npy), [`HeightMap::from_text`](crate::indenter::HeightMap::from_text) | `SceneFile`, `HeightMapFile` |
-//! | rough surfaces | 2 to 8192 cells a side | [`Scene::validate`](crate::scene::Scene::validate) | `InvalidParameter` |
+//! | rough surfaces | 2 to 32768 cells a side | [`Scene::validate`](crate::scene::Scene::validate) | `InvalidParameter` |
 //! | Python arrays | at most `2^27` values per call, shapes checked before any copy | the bindings | `InvalidInputError` |
 //! | cell compliance `Delta / E*` | `[1e-280, 1e280]` m/Pa | [`ComplianceOperator::new`](crate::kernel::ComplianceOperator::new) | `InvalidParameter` |
-//! | grid | at most `2^15` cells per axis, `2^26` in all, and memory that can be had | [`Grid::new`](crate::Grid::new), [`ComplianceOperator::new`](crate::kernel::ComplianceOperator::new) ([`memory_estimate`](crate::kernel::memory_estimate)) | `InvalidGrid`, `OutOfMemory` |
+//! | grid | at most `2^15` cells per axis, `2^30` in all, and memory that can be had | [`Grid::new`](crate::Grid::new), [`ComplianceOperator::new`](crate::kernel::ComplianceOperator::new) ([`memory_estimate`](crate::kernel::memory_estimate)) | `InvalidGrid`, `OutOfMemory` |
 //! | scene `cells_across`, `margin`, `steps`, `pull_off_bisections` | `8..=8192`, `[0, 10]`, `1..=100000`, `0..=60` | [`Scene::validate`](crate::scene::Scene::validate) | `InvalidParameter` |
 //! | works of adhesion | finite, `>= 0`, advancing `<=` receding | solvers and scenes | `InvalidParameter` |
 //!

@@ -563,21 +563,23 @@ pub(crate) fn wavenumber(index: usize, n: usize, delta: f64) -> f64 {
 
 /// The multiplier `f(q_x, q_y)`, even in `q_x`, at the wavevectors of an FFT
 /// grid of `size` with cells of side `delta`, divided by the FFT
-/// normalisation and laid out for [`Convolution::apply`] (`q_x >= 0` only).
+/// normalisation and laid out for [`Convolution::apply`] (`q_x >= 0` only),
+/// on the spectrum columns `columns` (of `size.1 / 2 + 1`: those a
+/// convolution filters, [`Convolution::own_columns`]).
 ///
 /// # Errors
 /// [`Error::OutOfMemory`].
 pub(super) fn multiplier(
     size: (usize, usize),
     delta: f64,
+    columns: std::ops::Range<usize>,
     f: impl Fn(f64, f64) -> f64,
 ) -> Result<Vec<f64>> {
     let (n0, n1) = size;
-    let half = n1 / 2 + 1;
     let normalisation = 1.0 / (n0 * n1) as f64;
     let distinct = n0 / 2 + 1;
-    let mut values = zeroed(half * distinct)?;
-    for (ky, column) in values.chunks_exact_mut(distinct).enumerate() {
+    let mut values = zeroed(columns.len() * distinct)?;
+    for (ky, column) in columns.zip(values.chunks_exact_mut(distinct)) {
         let qy = wavenumber(ky, n1, delta);
         for (kx, value) in column.iter_mut().enumerate() {
             *value = f(wavenumber(kx, n0, delta), qy) * normalisation;

@@ -64,21 +64,16 @@ impl BoxInverse {
                 0.5 * surface_modulus * q
             }
         };
-        let mut multiplier = multiplier(size, delta, stiffness)?;
         let (convolution, local) = match slab {
             None => (Convolution::new(m0, m1, size)?, m0),
             Some(slab) => {
                 // Until the box is placed, rank 0 holds all its rows.
                 let mut counts = vec![0; slab.exchange.ranks()];
                 counts[0] = m0;
-                let convolution = Convolution::distributed(m0, m1, size, slab, counts)?;
-                let columns = convolution.own_columns();
-                let distinct = m0 / 2 + 1;
-                multiplier.truncate(columns.end * distinct);
-                multiplier.drain(..columns.start * distinct);
-                (convolution, 0)
+                (Convolution::distributed(m0, m1, size, slab, counts)?, 0)
             }
         };
+        let multiplier = multiplier(size, delta, convolution.own_columns(), stiffness)?;
         Ok(BoxInverse {
             size,
             multiplier,

@@ -98,22 +98,22 @@ pub fn memory_estimate(grid: &Grid, boundary: Boundary) -> usize {
 
 /// Bytes per rank of the compliance operator's buffers and a solver's
 /// per-cell vectors on `grid` split across `ranks` ranks: each rank's share
-/// of [`memory_estimate`], plus the whole kernel spectrum that every rank
-/// builds once (and the influence coefficients it is built from, on an
-/// isolated grid), and the two exchange buffers of its half-spectra.
+/// of [`memory_estimate`], the two exchange buffers of its half-spectra,
+/// and on an isolated grid the whole kernel spectrum that every rank
+/// builds once (and the influence coefficients it is built from).
 pub fn distributed_memory_estimate(grid: &Grid, boundary: Boundary, ranks: usize) -> usize {
     let size = fft_size(grid, boundary);
     let half = size.1 / 2 + 1;
     let ranks = ranks.max(1);
     let whole_spectrum = 8 * (size.0 / 2 + 1) * half;
-    // On an isolated grid the spectrum is built from the influence
-    // coefficients through the half-spectra of its rows.
+    // On an isolated grid every rank builds the whole spectrum from the
+    // influence coefficients, through the half-spectra of its rows; a
+    // periodic grid's multipliers are built column by column.
     let building = match boundary {
-        Boundary::Isolated => 8 * grid.len() + 2 * whole_spectrum,
+        Boundary::Isolated => 8 * grid.len() + 3 * whole_spectrum,
         Boundary::Periodic => 0,
     };
     memory_estimate(grid, boundary).div_ceil(ranks)
-        + whole_spectrum
         + building
         + 2 * 16 * grid.rows().div_ceil(ranks) * half
 }
@@ -328,34 +328,27 @@ impl ComplianceOperator {
             convolution,
             slab: slab.cloned(),
         };
-        let spectrum = match boundary {
+        operator.spectrum = match boundary {
             Boundary::Isolated => {
                 let influence = InfluenceCoefficients::isolated(substrate, grid);
                 check_tail(&influence, substrate)?;
-                let spectrum = operator.isolated_spectrum(&influence)?;
-                if slab.is_none() {
-                    operator.influence = Some(influence);
+                let mut spectrum = operator.isolated_spectrum(&influence)?;
+                match slab {
+                    None => operator.influence = Some(influence),
+                    // Keep this rank's spectrum columns.
+                    Some(_) => {
+                        let distinct = size.0 / 2 + 1;
+                        let columns = operator.convolution.own_columns();
+                        spectrum.truncate(columns.end * distinct);
+                        spectrum.drain(..columns.start * distinct);
+                        spectrum.shrink_to_fit();
+                    }
                 }
                 spectrum
             }
             Boundary::Periodic => operator.periodic_spectrum(&FourierCompliance::new(substrate))?,
         };
-        operator.spectrum = operator.own_part(spectrum);
         Ok(operator)
-    }
-
-    /// The columns of a whole multiplier that this rank's convolution
-    /// filters (all of them when serial).
-    fn own_part(&self, mut multiplier: Vec<f64>) -> Vec<f64> {
-        if self.slab.is_none() {
-            return multiplier;
-        }
-        let distinct = self.convolution.size().0 / 2 + 1;
-        let columns = self.convolution.own_columns();
-        multiplier.truncate(columns.end * distinct);
-        multiplier.drain(..columns.start * distinct);
-        multiplier.shrink_to_fit();
-        multiplier
     }
 
     /// This rank's rows of the grid (all of them when serial).
@@ -429,7 +422,8 @@ impl ComplianceOperator {
             0.0
         };
         let delta = self.grid.spacing();
-        multiplier(self.convolution.size(), delta, |qx, qy| {
+        let columns = self.convolution.own_columns();
+        multiplier(self.convolution.size(), delta, columns, |qx, qy| {
             if qx == 0.0 && qy == 0.0 {
                 zero_mode
             } else {
@@ -470,8 +464,7 @@ impl ComplianceOperator {
     /// As [`ComplianceOperator::apply`].
     pub fn precondition(&mut self, residual: &[f64], result: &mut [f64]) -> Result<()> {
         if self.inverse_spectrum.is_empty() {
-            let spectrum = self.stiffness_spectrum()?;
-            self.inverse_spectrum = self.own_part(spectrum);
+            self.inverse_spectrum = self.stiffness_spectrum()?;
         }
         let spectrum = std::mem::take(&mut self.inverse_spectrum);
         let outcome = self.convolve(residual, result, &spectrum);
@@ -486,7 +479,7 @@ impl ComplianceOperator {
         let delta = self.grid.spacing();
         let smallest = wavenumber(1, n0.max(n1).max(2), delta).abs();
         let modulus = self.surface_modulus;
-        multiplier((n0, n1), delta, |qx, qy| {
+        multiplier((n0, n1), delta, self.convolution.own_columns(), |qx, qy| {
             0.5 * modulus * qx.hypot(qy).max(smallest)
         })
     }

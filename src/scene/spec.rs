@@ -272,7 +272,8 @@ pub enum IndenterSpec {
         short_cutoff: f64,
         /// Seed of the random numbers.
         seed: u64,
-        /// Cells along each side, 2 to 8192 (the grid holds at most 2^26 cells).
+        /// Cells along each side, 2 to 32768 (beyond 8192 the solve needs more
+        /// memory than one 24 GiB machine has: split it across MPI ranks).
         cells: usize,
         /// Cell side, m.
         spacing: f64,
@@ -339,7 +340,7 @@ impl Indenter for CustomIndenter {
 
 /// The widest synthesised rough surface, in cells along a side (the widest
 /// grid a scene builds).
-const MAX_ROUGH_CELLS: usize = 8192;
+const MAX_ROUGH_CELLS: usize = crate::grid::MAX_CELLS_PER_AXIS;
 
 /// A small tilt of the indenter, radians (see [`Tilted`]).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -435,7 +436,7 @@ impl IndenterSpec {
             return Err(Error::InvalidParameter {
                 name: "cells",
                 value: cells as f64,
-                expected: "between 2 and 8192 cells along a side (at most 2^26 cells in all)",
+                expected: "between 2 and 32768 cells along a side",
             });
         }
         let grid = Grid::new(cells, cells, spacing)?;

@@ -250,8 +250,17 @@ fn check(scene: &Scene, ranks: Option<usize>) -> Result<()> {
     );
     say!("memory: about {:.1} MB for the solve", bytes as f64 / 1e6);
     if let Some(ranks) = ranks {
-        let per_rank =
+        let mut per_rank =
             layered_contact::kernel::distributed_memory_estimate(&grid, scene.boundary, ranks);
+        // Every rank holds the whole height map, and synthesises a rough
+        // surface through its half-spectrum: 8 + 16 bytes per cell.
+        if matches!(
+            scene.indenter,
+            layered_contact::scene::IndenterSpec::HeightMap { .. }
+                | layered_contact::scene::IndenterSpec::RoughSurface { .. }
+        ) {
+            per_rank += 24 * grid.len();
+        }
         say!(
             "memory split across {ranks} MPI ranks: about {:.1} MB per rank",
             per_rank as f64 / 1e6
