@@ -237,6 +237,17 @@ impl SelfAffine {
                 expected: "at least two cells and at most long_cutoff",
             });
         }
+        // The longest wavelength of the grid, 2 pi / (n Delta), must lie in
+        // the band for the surface to have a mode.
+        let longest = grid.rows().max(grid.columns()) as f64 * grid.spacing();
+        if self.short_cutoff > longest * (1.0 + 1e-12) {
+            return Err(Error::InvalidParameter {
+                name: "short_cutoff (m)",
+                value: self.short_cutoff,
+                expected:
+                    "a band with at least one wavevector of the grid below 2 pi / short_cutoff",
+            });
+        }
         Ok(())
     }
 }

@@ -207,6 +207,27 @@ fn invalid_surfaces_are_refused() {
             other => panic!("{bad:?}: {other:?}"),
         }
     }
+    // A band above the grid's longest wavelength (1 mm) holds no mode: the
+    // parameter check says so before any synthesis, as the synthesis did.
+    let beyond = SelfAffine {
+        short_cutoff: 1.5e-3,
+        long_cutoff: 2e-3,
+        ..surface(Amplitude::RmsHeight(1e-6), 1)
+    };
+    match beyond.heights(&grid) {
+        Err(Error::InvalidParameter { name, expected, .. }) => {
+            assert_eq!(name, "short_cutoff (m)");
+            assert!(expected.contains("at least one wavevector"));
+        }
+        other => panic!("{other:?}"),
+    }
+    // At the grid's side the longest wavelength is in the band.
+    let at_side = SelfAffine {
+        short_cutoff: 1e-3,
+        long_cutoff: 2e-3,
+        ..surface(Amplitude::RmsHeight(1e-6), 1)
+    };
+    assert!(at_side.heights(&grid).is_ok());
 }
 
 /// Height maps read from `.npy` and from text equal what was written, on

@@ -25,7 +25,7 @@
 
 mod height_map;
 mod shapes;
-mod tilt;
+pub(crate) mod tilt;
 
 pub use height_map::HeightMap;
 pub use shapes::{Cone, FlatPunch, Paraboloid, Sphere};

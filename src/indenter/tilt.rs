@@ -19,6 +19,20 @@ pub struct Tilted<I> {
     slope_y: f64,
 }
 
+/// The tilt angles [`Tilted::new`] takes: finite and below 0.1 rad.
+pub(crate) fn check_angles(angle_y: f64, angle_x: f64) -> Result<()> {
+    for (name, angle) in [("angle_y", angle_y), ("angle_x", angle_x)] {
+        if angle.is_nan() || angle.abs() >= 0.1 {
+            return Err(Error::InvalidParameter {
+                name,
+                value: angle,
+                expected: "a small angle, |angle| < 0.1 rad",
+            });
+        }
+    }
+    Ok(())
+}
+
 impl<I: Indenter> Tilted<I> {
     /// `inner` tilted by `angle_y` about the `y` axis and `angle_x` about the
     /// `x` axis (radians, `|angle| < 0.1`, i.e. below about 6 degrees).
@@ -26,15 +40,7 @@ impl<I: Indenter> Tilted<I> {
     /// # Errors
     /// [`Error::InvalidParameter`] for an angle that is not finite or not small.
     pub fn new(inner: I, angle_y: f64, angle_x: f64) -> Result<Self> {
-        for (name, angle) in [("angle_y", angle_y), ("angle_x", angle_x)] {
-            if angle.is_nan() || angle.abs() >= 0.1 {
-                return Err(Error::InvalidParameter {
-                    name,
-                    value: angle,
-                    expected: "a small angle, |angle| < 0.1 rad",
-                });
-            }
-        }
+        check_angles(angle_y, angle_x)?;
         Ok(Tilted {
             inner,
             slope_x: angle_y.tan(),

@@ -13,7 +13,7 @@
 //! box, not on the padded grid.
 
 use crate::error::Result;
-use crate::slab::Slab;
+use crate::slab::{even_starts, Slab};
 
 use super::convolution::{multiplier, wavenumber, zeroed, Convolution};
 use super::fourier::FourierCompliance;
@@ -67,9 +67,12 @@ impl BoxInverse {
         let (convolution, local) = match slab {
             None => (Convolution::new(m0, m1, size)?, m0),
             Some(slab) => {
-                // Until the box is placed, rank 0 holds all its rows.
-                let mut counts = vec![0; slab.exchange.ranks()];
-                counts[0] = m0;
+                // Until the box is placed its rows are split evenly (its
+                // buffers then grow to what the placements need).
+                let counts = even_starts(m0, slab.exchange.ranks())
+                    .windows(2)
+                    .map(|w| w[1] - w[0])
+                    .collect();
                 (Convolution::distributed(m0, m1, size, slab, counts)?, 0)
             }
         };
@@ -110,7 +113,12 @@ impl BoxInverse {
         let (m0, m1) = self.size;
         // This rank's grid rows `grid.start..` and box rows `boxed`
         // (serial: all of either).
-        let (grid, boxed) = self.place(origin.0, residual.len() / columns.max(1))?;
+        let placed = self.place(origin.0, residual.len() / columns.max(1));
+        // Distributed, a rank whose buffers could not grow stops every rank.
+        let (grid, boxed) = match &self.slab {
+            Some(slab) => slab.agree(placed)?,
+            None => placed?,
+        };
         // The box columns on the grid, `first..last`, and the grid column
         // of the first.
         let first = usize::try_from(-origin.1).unwrap_or(0).min(m1);

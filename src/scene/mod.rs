@@ -317,7 +317,17 @@ impl Scene {
     /// # Errors
     /// The first invalid value, as a typed error.
     pub fn validate(&self) -> Result<()> {
-        self.indenter.build(self.tilt)?;
+        if matches!(self.indenter, IndenterSpec::RoughSurface { .. }) {
+            // Its parameters, without synthesising it: a surface of 32768
+            // cells a side takes minutes and 25 GB, and `check` runs on a
+            // cluster's login node.
+            self.indenter.map_grid()?;
+            if let Some(tilt) = self.tilt {
+                crate::indenter::tilt::check_angles(tilt.angle_y, tilt.angle_x)?;
+            }
+        } else {
+            self.indenter.build(self.tilt)?;
+        }
         self.validate_settings()
     }
 

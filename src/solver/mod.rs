@@ -253,12 +253,25 @@ impl ContactSolver {
 
     /// [`Error::Interrupted`] if the interrupt check asks to stop.
     pub(crate) fn check_interrupt(&self, what: &'static str) -> Result<()> {
-        let result = interrupted(&self.interrupt, what);
+        // Every rank stops together.
+        self.agreed(interrupted(&self.interrupt, what))
+    }
+
+    /// `result` on a serial solver; on a split one, an error on every rank
+    /// if any rank's `result` is one ([`Slab::agree`](crate::slab::Slab)),
+    /// so that no rank waits in a collective for one that has returned.
+    pub(crate) fn agreed<T>(&self, result: Result<T>) -> Result<T> {
         match self.operator.slab() {
-            // Every rank stops together.
             Some(slab) => slab.agree(result),
             None => result,
         }
+    }
+
+    /// Whether `flag` holds on any rank (on this one when serial).
+    pub(crate) fn on_any_rank(&self, flag: bool) -> bool {
+        let mut count = [f64::from(u8::from(flag))];
+        self.sum_over_ranks(&mut count);
+        count[0] > 0.0
     }
 
     /// Sums `values` over the ranks of a distributed solver (nothing when
@@ -367,7 +380,7 @@ impl ContactSolver {
         let local = self.operator.local_rows();
         let n = self.local_cells();
         if self.workspace.profile.len() != n {
-            self.workspace = Workspace::new(n)?;
+            self.workspace = self.agreed(Workspace::new(n))?;
         }
         let columns = grid.columns();
         let mut lowest = f64::INFINITY;
@@ -390,13 +403,11 @@ impl ContactSolver {
             }),
             None => Ok(()),
         };
+        self.agreed(checked)?;
         if let Some(slab) = self.operator.slab() {
-            slab.agree(checked)?;
             let mut values = [lowest];
             slab.exchange.min(&mut values);
             lowest = values[0];
-        } else {
-            checked?;
         }
         if lowest == f64::INFINITY {
             let (lx, ly) = grid.extent();

@@ -142,7 +142,9 @@ impl ContactSolver {
         warm: Option<&WarmStart>,
         observer: &mut dyn Observer,
     ) -> Result<(Solution, WarmStart)> {
-        let warm = warm.filter(|w| w.pressure.iter().any(|p| *p > 0.0));
+        // Whether the warm start has contact on any rank (a split solver's
+        // warm start holds its own rows).
+        let warm = warm.filter(|w| self.on_any_rank(w.pressure.iter().any(|p| *p > 0.0)));
         let coarse = self.coarse_start(indenter, control, warm);
         let start = coarse.as_ref().map(|(w, _)| w).or(warm);
         let (mut solution, end) = self.constrained_cg(control, start, observer)?;
@@ -200,11 +202,7 @@ impl ContactSolver {
                 }
             });
             // Distributed, every rank has the coarse solver or none has.
-            let built = match self.operator.slab() {
-                Some(slab) => slab.agree(built),
-                None => built,
-            };
-            self.coarse = Some(built.ok().map(Box::new));
+            self.coarse = Some(self.agreed(built).ok().map(Box::new));
         }
         let coarse = self.coarse.as_mut()?.as_mut()?;
         // The coarse cell of fine cell `c`.
@@ -234,11 +232,7 @@ impl ContactSolver {
         // The coarse solver keeps its kernel and plans, not its scratch,
         // while the finer solve runs.
         coarse.release_scratch();
-        let solved = match self.operator.slab() {
-            Some(slab) => slab.agree(solved),
-            None => solved,
-        };
-        let (solution, solved) = solved.ok()?;
+        let (solution, solved) = self.agreed(solved).ok()?;
         let fine = self.local_cells();
         let pressure: Vec<f64> = match (warm, start) {
             (Some(w), Some(r)) => (0..fine)
@@ -267,6 +261,14 @@ impl ContactSolver {
         // This rank's rows (all of them when serial).
         let local = self.operator.local_rows();
         let reachable = self.reachable();
+        let warm = warm.filter(|w| {
+            let contact = w
+                .pressure
+                .iter()
+                .zip(&reachable)
+                .any(|(p, r)| *r && *p > 0.0);
+            self.on_any_rank(contact)
+        });
         let mut pressure = self.initial_pressure(control, warm, &reachable);
         if let Control::Force(w) = control {
             let mut total = [area * pressure.iter().sum::<f64>()];
@@ -606,12 +608,9 @@ impl ContactSolver {
                 needed,
                 self.operator.slab(),
             );
-            let built = match self.operator.slab() {
-                Some(slab) => slab.agree(built),
-                None => built,
-            };
-            self.preconditioner = Some(built?);
+            self.preconditioner = Some(self.agreed(built)?);
         }
+        let ws = &mut self.workspace;
         let Some(inverse) = self.preconditioner.as_mut() else {
             return Ok((0.0, 0.0));
         };
@@ -693,8 +692,9 @@ impl ContactSolver {
         Ok(ws.response[0].max(f64::MIN_POSITIVE))
     }
 
-    /// A starting pressure: the warm start where it has contact, else zero
-    /// (or uniform on the reachable cells, for force control).
+    /// A starting pressure: the warm start (which the caller keeps only if
+    /// it has contact on a reachable cell), else zero (or uniform on the
+    /// reachable cells, for force control).
     fn initial_pressure(
         &self,
         control: Control,
@@ -702,15 +702,12 @@ impl ContactSolver {
         reachable: &[bool],
     ) -> Vec<f64> {
         if let Some(w) = warm {
-            let p: Vec<f64> = w
+            return w
                 .pressure
                 .iter()
                 .zip(reachable)
                 .map(|(p, r)| if *r { p.max(0.0) } else { 0.0 })
                 .collect();
-            if p.iter().any(|v| *v > 0.0) {
-                return p;
-            }
         }
         match control {
             // The first iteration steps from zero along the preconditioned
