@@ -59,6 +59,7 @@ mod griffith;
 mod params;
 mod passes;
 mod polonsky_keer;
+mod split;
 
 use ndarray::Array2;
 
@@ -255,76 +256,6 @@ impl ContactSolver {
     pub(crate) fn check_interrupt(&self, what: &'static str) -> Result<()> {
         // Every rank stops together.
         self.agreed(interrupted(&self.interrupt, what))
-    }
-
-    /// `result` on a serial solver; on a split one, an error on every rank
-    /// if any rank's `result` is one ([`Slab::agree`](crate::slab::Slab)),
-    /// so that no rank waits in a collective for one that has returned.
-    pub(crate) fn agreed<T>(&self, result: Result<T>) -> Result<T> {
-        match self.operator.slab() {
-            Some(slab) => slab.agree(result),
-            None => result,
-        }
-    }
-
-    /// Whether `flag` holds on any rank (on this one when serial).
-    pub(crate) fn on_any_rank(&self, flag: bool) -> bool {
-        let mut count = [f64::from(u8::from(flag))];
-        self.sum_over_ranks(&mut count);
-        count[0] > 0.0
-    }
-
-    /// Sums `values` over the ranks of a distributed solver (nothing when
-    /// serial).
-    fn sum_over_ranks(&self, values: &mut [f64]) {
-        if let Some(slab) = self.operator.slab() {
-            slab.sum(values);
-        }
-    }
-
-    /// [`Error::Unsupported`] for `what` on a distributed solver: only the
-    /// non-adhesive solves run on a grid split across ranks.
-    pub(crate) fn serial_only(&self, what: &'static str) -> Result<()> {
-        match self.operator.slab() {
-            Some(_) => Err(Error::Unsupported {
-                feature: what,
-                reason: "a solver split across MPI ranks runs only the non-adhesive \
-                         solves (solve_depth and solve_force)",
-            }),
-            None => Ok(()),
-        }
-    }
-
-    /// A solver like this one (split across the same ranks if it is) for
-    /// `substrate` on another grid.
-    pub(crate) fn like_on(
-        &self,
-        substrate: &Substrate,
-        grid: &Grid,
-        boundary: Boundary,
-        params: SolverParams,
-    ) -> Result<ContactSolver> {
-        match self.operator.slab() {
-            None => ContactSolver::new(substrate, grid, boundary, params),
-            Some(slab) => {
-                let slab = crate::slab::Slab::for_grid(slab.exchange.clone(), grid)?;
-                let operator = ComplianceOperator::distributed(substrate, grid, boundary, &slab)?;
-                slab.agree(ContactSolver::with_operator(operator, substrate, params))
-            }
-        }
-    }
-
-    /// Whether this solver is split across more than one rank (its fields
-    /// hold only this rank's rows).
-    pub(crate) fn is_split(&self) -> bool {
-        self.operator
-            .slab()
-            .is_some_and(|slab| slab.exchange.ranks() > 1)
-    }
-
-    /// The number of cells of this rank's rows (the grid's when serial).
-    fn local_cells(&self) -> usize {
-        self.operator.local_rows().len() * self.grid().columns()
     }
 
     /// Frees the per-cell scratch vectors and the preconditioner (a coarse

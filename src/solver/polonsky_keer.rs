@@ -627,59 +627,6 @@ impl ContactSolver {
         inverse.apply(columns, origin, &ws.working, &ws.gap, &mut ws.response)
     }
 
-    /// The working set over every rank, its bounds in rows of the whole
-    /// grid (a serial solver's set as it is).
-    fn whole_working_set(&self, mut set: passes::WorkingSet) -> passes::WorkingSet {
-        let Some(slab) = self.operator.slab() else {
-            return set;
-        };
-        let first = slab.rows().start;
-        let mut sums = [
-            set.members as f64,
-            set.gap_sum,
-            f64::from(u8::from(set.overlap)),
-        ];
-        slab.sum(&mut sums);
-        // Bounds as minima: first row and column, and minus the last ones.
-        let mut bounds = match set.bounds {
-            Some(((r0, r1), (c0, c1))) => [
-                (first + r0) as f64,
-                -((first + r1) as f64),
-                c0 as f64,
-                -(c1 as f64),
-            ],
-            None => [f64::INFINITY; 4],
-        };
-        slab.exchange.min(&mut bounds);
-        set.members = sums[0] as usize;
-        set.gap_sum = sums[1];
-        set.overlap = sums[2] > 0.0;
-        set.bounds = bounds[0].is_finite().then(|| {
-            (
-                (bounds[0] as usize, -bounds[1] as usize),
-                (bounds[2] as usize, -bounds[3] as usize),
-            )
-        });
-        set
-    }
-
-    /// A step's statistics over every rank.
-    fn whole_step(&self, mut stats: passes::Step) -> passes::Step {
-        if self.operator.slab().is_some() {
-            let mut sums = [
-                stats.corrected as f64,
-                stats.change,
-                stats.size,
-                stats.contact as f64,
-            ];
-            self.sum_over_ranks(&mut sums);
-            stats.corrected = sums[0] as usize;
-            (stats.change, stats.size) = (sums[1], sums[2]);
-            stats.contact = sums[3] as usize;
-        }
-        stats
-    }
-
     /// The operator's response at a cell to unit pressure on it.
     pub(super) fn self_compliance(&mut self) -> Result<f64> {
         if let Some(influence) = self.operator.influence() {

@@ -1,0 +1,136 @@
+//! What a solver split across MPI ranks (the `mpi` feature, module
+//! `distributed`) adds to the serial one: sums and agreements over
+//! the ranks, and the refusal of what does not run split. On a serial
+//! solver each of these is the identity.
+
+use crate::error::{Error, Result};
+use crate::grid::{Boundary, Grid};
+use crate::kernel::ComplianceOperator;
+use crate::substrate::Substrate;
+
+use super::{passes, ContactSolver, SolverParams};
+
+impl ContactSolver {
+    /// `result` on a serial solver; on a split one, an error on every rank
+    /// if any rank's `result` is one ([`Slab::agree`](crate::slab::Slab)),
+    /// so that no rank waits in a collective for one that has returned.
+    pub(crate) fn agreed<T>(&self, result: Result<T>) -> Result<T> {
+        match self.operator.slab() {
+            Some(slab) => slab.agree(result),
+            None => result,
+        }
+    }
+
+    /// Whether `flag` holds on any rank (on this one when serial).
+    pub(crate) fn on_any_rank(&self, flag: bool) -> bool {
+        let mut count = [f64::from(u8::from(flag))];
+        self.sum_over_ranks(&mut count);
+        count[0] > 0.0
+    }
+
+    /// Sums `values` over the ranks of a distributed solver (nothing when
+    /// serial).
+    pub(super) fn sum_over_ranks(&self, values: &mut [f64]) {
+        if let Some(slab) = self.operator.slab() {
+            slab.sum(values);
+        }
+    }
+
+    /// [`Error::Unsupported`] for `what` on a distributed solver: only the
+    /// non-adhesive solves run on a grid split across ranks.
+    pub(crate) fn serial_only(&self, what: &'static str) -> Result<()> {
+        match self.operator.slab() {
+            Some(_) => Err(Error::Unsupported {
+                feature: what,
+                reason: "a solver split across MPI ranks runs only the non-adhesive \
+                         solves (solve_depth and solve_force)",
+            }),
+            None => Ok(()),
+        }
+    }
+
+    /// A solver like this one (split across the same ranks if it is) for
+    /// `substrate` on another grid.
+    pub(crate) fn like_on(
+        &self,
+        substrate: &Substrate,
+        grid: &Grid,
+        boundary: Boundary,
+        params: SolverParams,
+    ) -> Result<ContactSolver> {
+        match self.operator.slab() {
+            None => ContactSolver::new(substrate, grid, boundary, params),
+            Some(slab) => {
+                let slab = crate::slab::Slab::for_grid(slab.exchange.clone(), grid)?;
+                let operator = ComplianceOperator::distributed(substrate, grid, boundary, &slab)?;
+                slab.agree(ContactSolver::with_operator(operator, substrate, params))
+            }
+        }
+    }
+
+    /// Whether this solver is split across more than one rank (its fields
+    /// hold only this rank's rows).
+    pub(crate) fn is_split(&self) -> bool {
+        self.operator
+            .slab()
+            .is_some_and(|slab| slab.exchange.ranks() > 1)
+    }
+
+    /// The number of cells of this rank's rows (the grid's when serial).
+    pub(super) fn local_cells(&self) -> usize {
+        self.operator.local_rows().len() * self.grid().columns()
+    }
+
+    /// The working set over every rank, its bounds in rows of the whole
+    /// grid (a serial solver's set as it is).
+    pub(super) fn whole_working_set(&self, mut set: passes::WorkingSet) -> passes::WorkingSet {
+        let Some(slab) = self.operator.slab() else {
+            return set;
+        };
+        let first = slab.rows().start;
+        let mut sums = [
+            set.members as f64,
+            set.gap_sum,
+            f64::from(u8::from(set.overlap)),
+        ];
+        slab.sum(&mut sums);
+        // Bounds as minima: first row and column, and minus the last ones.
+        let mut bounds = match set.bounds {
+            Some(((r0, r1), (c0, c1))) => [
+                (first + r0) as f64,
+                -((first + r1) as f64),
+                c0 as f64,
+                -(c1 as f64),
+            ],
+            None => [f64::INFINITY; 4],
+        };
+        slab.exchange.min(&mut bounds);
+        set.members = sums[0] as usize;
+        set.gap_sum = sums[1];
+        set.overlap = sums[2] > 0.0;
+        set.bounds = bounds[0].is_finite().then(|| {
+            (
+                (bounds[0] as usize, -bounds[1] as usize),
+                (bounds[2] as usize, -bounds[3] as usize),
+            )
+        });
+        set
+    }
+
+    /// A step's statistics over every rank.
+    pub(super) fn whole_step(&self, mut stats: passes::Step) -> passes::Step {
+        if self.operator.slab().is_some() {
+            let mut sums = [
+                stats.corrected as f64,
+                stats.change,
+                stats.size,
+                stats.contact as f64,
+            ];
+            self.sum_over_ranks(&mut sums);
+            stats.corrected = sums[0] as usize;
+            (stats.change, stats.size) = (sums[1], sums[2]);
+            stats.contact = sums[3] as usize;
+        }
+        stats
+    }
+}
