@@ -39,10 +39,11 @@
 //! Only the order in which sums are added differs from one process: the
 //! results agree to rounding. `tests/mpi.rs` solves a rough periodic film,
 //! a rough isolated half-space on a grid whose coarse grid has an odd
-//! number of rows, and a sphere on a film, warm-started through two loads
-//! each, on 2 and 4 ranks: the same iteration counts as the serial solver,
-//! forces within 2e-15 and pressures within 8e-15 of the largest (asserted
-//! below 1e-12). It also runs the tool on a scene file under
+//! number of rows, and a sphere on a film under depth and under force
+//! control (the outer ranks' rows then hold no contact), each warm-started
+//! through two loads, on 2 and 4 ranks: the same iteration counts as the
+//! serial solver, forces within 2e-15 and pressures within 8e-15 of the
+//! largest (asserted below 1e-12). It also runs the tool on a scene file under
 //! `mpirun -np 2` and compares the curve with the one-process run.
 //!
 //! What stays whole on every rank: the kernel's spectrum while it is built
