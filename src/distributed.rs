@@ -50,7 +50,6 @@ use num_complex::Complex;
 
 use crate::error::{Error, Result};
 use crate::grid::{Boundary, Grid};
-use crate::kernel::ComplianceOperator;
 use crate::slab::{Exchange, Slab};
 use crate::solver::{ContactSolver, SolverParams};
 use crate::substrate::Substrate;
@@ -138,9 +137,7 @@ impl ContactSolver {
     ) -> Result<Self> {
         let exchange: Arc<dyn Exchange> = ranks.exchange.clone();
         let slab = Slab::for_grid(exchange, grid)?;
-        let operator = ComplianceOperator::distributed(substrate, grid, boundary, &slab)?;
-        let solver = ContactSolver::with_operator(operator, substrate, params);
-        slab.agree(solver)
+        ContactSolver::on_slab(substrate, grid, boundary, params, &slab)
     }
 }
 

@@ -113,7 +113,7 @@ impl Slab {
 
     /// The rows of every rank, in rank order.
     pub(crate) fn counts(&self) -> Vec<usize> {
-        self.starts.windows(2).map(|w| w[1] - w[0]).collect()
+        lengths(&self.starts)
     }
 
     /// Sums `values` over the ranks.
@@ -143,6 +143,20 @@ impl Slab {
 pub(crate) fn even_starts(n: usize, parts: usize) -> Vec<usize> {
     let parts = parts.max(1);
     (0..=parts).map(|k| k * n / parts).collect()
+}
+
+/// The lengths of the consecutive ranges that `starts` (the starts and the
+/// end) delimit.
+pub(crate) fn lengths(starts: &[usize]) -> Vec<usize> {
+    starts.windows(2).map(|w| w[1] - w[0]).collect()
+}
+
+/// `result` when serial (`slab` is `None`); split, [`Slab::agree`].
+pub(crate) fn agree<T>(slab: Option<&Slab>, result: Result<T>) -> Result<T> {
+    match slab {
+        Some(slab) => slab.agree(result),
+        None => result,
+    }
 }
 
 #[cfg(test)]

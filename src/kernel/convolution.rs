@@ -326,8 +326,9 @@ impl Convolution {
                     Some(split) => {
                         let mut at = 0;
                         for k in 0..split.slab.exchange.ranks() {
-                            let (j0, w) = (split.columns[k], split.width(k));
-                            spectrum[j0..j0 + w]
+                            let columns = split.columns_of(k);
+                            let w = columns.len();
+                            spectrum[columns]
                                 .copy_from_slice(&split.receive[at + i * w..at + (i + 1) * w]);
                             at += local * w;
                         }

@@ -13,7 +13,7 @@
 //! box, not on the padded grid.
 
 use crate::error::Result;
-use crate::slab::{even_starts, Slab};
+use crate::slab::{agree, even_starts, lengths, Slab};
 
 use super::convolution::{multiplier, wavenumber, zeroed, Convolution};
 use super::fourier::FourierCompliance;
@@ -69,10 +69,7 @@ impl BoxInverse {
             Some(slab) => {
                 // Until the box is placed its rows are split evenly (its
                 // buffers then grow to what the placements need).
-                let counts = even_starts(m0, slab.exchange.ranks())
-                    .windows(2)
-                    .map(|w| w[1] - w[0])
-                    .collect();
+                let counts = lengths(&even_starts(m0, slab.exchange.ranks()));
                 (Convolution::distributed(m0, m1, size, slab, counts)?, 0)
             }
         };
@@ -115,10 +112,7 @@ impl BoxInverse {
         // (serial: all of either).
         let placed = self.place(origin.0, residual.len() / columns.max(1));
         // Distributed, a rank whose buffers could not grow stops every rank.
-        let (grid, boxed) = match &self.slab {
-            Some(slab) => slab.agree(placed)?,
-            None => placed?,
-        };
+        let (grid, boxed) = agree(self.slab.as_ref(), placed)?;
         // The box columns on the grid, `first..last`, and the grid column
         // of the first.
         let first = usize::try_from(-origin.1).unwrap_or(0).min(m1);

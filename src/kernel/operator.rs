@@ -356,6 +356,11 @@ impl ComplianceOperator {
         self.slab.as_ref().map_or(0..self.grid.rows(), Slab::rows)
     }
 
+    /// The number of cells in this rank's rows (the grid's when serial).
+    pub(crate) fn local_cells(&self) -> usize {
+        self.local_rows().len() * self.grid.columns()
+    }
+
     /// The split across ranks, if distributed.
     pub(crate) fn slab(&self) -> Option<&Slab> {
         self.slab.as_ref()
@@ -491,7 +496,7 @@ impl ComplianceOperator {
         displacement: &mut [f64],
         spectrum: &[f64],
     ) -> Result<()> {
-        let cells = self.local_rows().len() * self.grid.columns();
+        let cells = self.local_cells();
         for (field, found) in [
             ("pressure", pressure.len()),
             ("displacement", displacement.len()),

@@ -212,7 +212,7 @@ impl ContactSolver {
                 expected: "at least 1",
             });
         }
-        let n = operator.local_rows().len() * operator.grid().columns();
+        let n = operator.local_cells();
         Ok(ContactSolver {
             operator,
             params,

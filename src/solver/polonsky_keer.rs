@@ -8,7 +8,7 @@ use std::ops::Range;
 use crate::error::{Error, Result};
 use crate::grid::{fft_friendly_even, Boundary, Grid};
 use crate::indenter::Indenter;
-use crate::kernel::{BoxInverse, ComplianceOperator};
+use crate::kernel::BoxInverse;
 
 use super::passes::Bounds;
 use super::{
@@ -194,12 +194,13 @@ impl ContactSolver {
                 .slab()
             {
                 None => ContactSolver::new(&self.substrate, &g, boundary, params),
-                Some(slab) => {
-                    let slab = slab.halved(rows);
-                    let operator =
-                        ComplianceOperator::distributed(&self.substrate, &g, boundary, &slab)?;
-                    ContactSolver::with_operator(operator, &self.substrate, params)
-                }
+                Some(slab) => ContactSolver::on_slab(
+                    &self.substrate,
+                    &g,
+                    boundary,
+                    params,
+                    &slab.halved(rows),
+                ),
             });
             // Distributed, every rank has the coarse solver or none has.
             self.coarse = Some(self.agreed(built).ok().map(Box::new));

@@ -6,6 +6,7 @@
 use crate::error::{Error, Result};
 use crate::grid::{Boundary, Grid};
 use crate::kernel::ComplianceOperator;
+use crate::slab::Slab;
 use crate::substrate::Substrate;
 
 use super::{passes, ContactSolver, SolverParams};
@@ -15,10 +16,7 @@ impl ContactSolver {
     /// if any rank's `result` is one ([`Slab::agree`](crate::slab::Slab)),
     /// so that no rank waits in a collective for one that has returned.
     pub(crate) fn agreed<T>(&self, result: Result<T>) -> Result<T> {
-        match self.operator.slab() {
-            Some(slab) => slab.agree(result),
-            None => result,
-        }
+        crate::slab::agree(self.operator.slab(), result)
     }
 
     /// Whether `flag` holds on any rank (on this one when serial).
@@ -61,11 +59,23 @@ impl ContactSolver {
         match self.operator.slab() {
             None => ContactSolver::new(substrate, grid, boundary, params),
             Some(slab) => {
-                let slab = crate::slab::Slab::for_grid(slab.exchange.clone(), grid)?;
-                let operator = ComplianceOperator::distributed(substrate, grid, boundary, &slab)?;
-                slab.agree(ContactSolver::with_operator(operator, substrate, params))
+                let slab = Slab::for_grid(slab.exchange.clone(), grid)?;
+                ContactSolver::on_slab(substrate, grid, boundary, params, &slab)
             }
         }
+    }
+
+    /// A solver for `substrate` on `grid` split as `slab` says (an error on
+    /// every rank if on any).
+    pub(crate) fn on_slab(
+        substrate: &Substrate,
+        grid: &Grid,
+        boundary: Boundary,
+        params: SolverParams,
+        slab: &Slab,
+    ) -> Result<ContactSolver> {
+        let operator = ComplianceOperator::distributed(substrate, grid, boundary, slab)?;
+        slab.agree(ContactSolver::with_operator(operator, substrate, params))
     }
 
     /// Whether this solver is split across more than one rank (its fields
@@ -78,7 +88,7 @@ impl ContactSolver {
 
     /// The number of cells of this rank's rows (the grid's when serial).
     pub(super) fn local_cells(&self) -> usize {
-        self.operator.local_rows().len() * self.grid().columns()
+        self.operator.local_cells()
     }
 
     /// The working set over every rank, its bounds in rows of the whole

@@ -27,14 +27,19 @@ impl Split {
         self.slab.exchange.rank()
     }
 
-    /// This rank's spectrum columns.
-    pub(super) fn own_columns(&self) -> std::ops::Range<usize> {
-        let k = self.rank();
+    /// The spectrum columns rank `k` filters.
+    pub(super) fn columns_of(&self, k: usize) -> std::ops::Range<usize> {
         self.columns[k]..self.columns[k + 1]
     }
 
+    /// This rank's spectrum columns.
+    pub(super) fn own_columns(&self) -> std::ops::Range<usize> {
+        self.columns_of(self.rank())
+    }
+
+    /// How many spectrum columns rank `k` filters.
     pub(super) fn width(&self, k: usize) -> usize {
-        self.columns[k + 1] - self.columns[k]
+        self.columns_of(k).len()
     }
 }
 
@@ -116,7 +121,7 @@ impl Convolution {
         let local = split.row_counts[rank];
         let mut at = 0;
         for k in 0..ranks {
-            let columns = split.columns[k]..split.columns[k + 1];
+            let columns = split.columns_of(k);
             for row in self.row_spectra[..local * half].chunks_exact(half) {
                 let values = &row[columns.clone()];
                 split.send[at..at + values.len()].copy_from_slice(values);
@@ -148,12 +153,8 @@ impl Convolution {
         let width = split.width(rank);
         let mut at = 0;
         for i in 0..rows {
-            for (j0, tile) in (0..width)
-                .step_by(block)
-                .zip(self.filtered[..rows * width].chunks(block * rows))
-            {
+            for tile in self.filtered[..rows * width].chunks(block * rows) {
                 let w = tile.len() / rows;
-                debug_assert_eq!(j0 % block, 0);
                 split.send[at..at + w].copy_from_slice(&tile[i * w..(i + 1) * w]);
                 at += w;
             }
