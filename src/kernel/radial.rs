@@ -230,6 +230,77 @@ impl RadialRemainder {
     }
 }
 
+/// `g(rho)` itself, for integrating the remainder over cells by a product
+/// Gauss rule where it is smooth on the cell's scale: a Chebyshev head on
+/// `[0, 1/4]` and octave pieces out to where [`RadialRemainder`]'s table
+/// ends (or the largest radius needed), then the derivative of the same
+/// asymptotic expansion, `g = Gc'(R)/R = -(a1/R^3 + 3 a3/R^5 + 5 a5/R^7)`.
+#[derive(Debug, Clone)]
+pub(crate) struct RadialDensity {
+    table: OctaveTable,
+    asymptotic: [f64; 4],
+    /// `|table - asymptotics|` where the asymptotics take over (0 if they
+    /// are never used).
+    tail_mismatch: f64,
+}
+
+impl RadialDensity {
+    /// `g` of `functions` (whose disc integral is `remainder`) for radii up
+    /// to `r_max` (units of `h`).
+    pub(crate) fn new(functions: &Spectral, remainder: &RadialRemainder, r_max: f64) -> Self {
+        let lambda0 = functions.lambda(0.0);
+        let rule = gauss(HANKEL_ORDER);
+        let end = match &remainder.table {
+            Some(table) => table.end().min(r_max),
+            None => r_max.min(MAX_TABLE_RADIUS),
+        };
+        let table = OctaveTable::build(
+            -2,
+            true,
+            |r| density(functions, lambda0, r, &rule),
+            |top| top >= end,
+        );
+        let mut density_table = RadialDensity {
+            table,
+            asymptotic: remainder.asymptotic,
+            tail_mismatch: 0.0,
+        };
+        if density_table.table.end() < r_max {
+            let top = density_table.table.end();
+            density_table.tail_mismatch =
+                (density(functions, lambda0, top, &rule) - density_table.asymptotic_at(top)).abs();
+        }
+        density_table
+    }
+
+    fn asymptotic_at(&self, r: f64) -> f64 {
+        let [_, a1, a3, a5] = self.asymptotic;
+        let inv2 = 1.0 / (r * r);
+        -inv2 / r * (a1 + inv2 * (3.0 * a3 + inv2 * 5.0 * a5))
+    }
+
+    /// `g(rho)`, `rho >= 0` in units of `h`.
+    pub(crate) fn at(&self, rho: f64) -> f64 {
+        if rho < self.table.end() {
+            self.table.eval(rho)
+        } else {
+            self.asymptotic_at(rho)
+        }
+    }
+
+    /// `|table - asymptotics|` of `g` where the asymptotics take over.
+    pub(crate) fn tail_mismatch(&self) -> f64 {
+        self.tail_mismatch
+    }
+}
+
+/// `g(rho) = Integral_0^inf f(u) J0(u rho) du`.
+fn density(functions: &Spectral, lambda0: f64, rho: f64, rule: &GaussLegendre) -> f64 {
+    let integrand = |u: f64| (functions.lambda(u) - lambda0 * (-u).exp()) * libm::j0(u * rho);
+    let u_max = 50.0 + (1.0 + lambda0.abs()).ln();
+    oscillatory_integral(integrand, rho.max(1e-300), u_max, rule)
+}
+
 /// `Gc(R) = R Integral_0^inf (f(u)/u) J1(u R) du`.
 fn disc_integral(functions: &Spectral, lambda0: f64, r: f64, rule: &GaussLegendre) -> f64 {
     let integrand = |u: f64| {

@@ -511,12 +511,6 @@ impl AdhesiveBranches {
         let top = history.clamp(nodes[0].area, self.max_contact_area());
         let mut areas: Vec<f64> = nodes.iter().map(|n| n.area).filter(|&a| a < top).collect();
         areas.push(top);
-        if std::env::var_os("LC_DBG").is_some() {
-            for a in &areas {
-                eprint!(" {:.3e}:{:.4e}", a, key(*a));
-            }
-            eprintln!();
-        }
         let mut i = areas.len() - 1;
         while i > 0 && key(areas[i - 1]) <= key(areas[i]) {
             i -= 1;
