@@ -87,6 +87,54 @@ fn cell_rule_order(spacing: f64) -> usize {
     }
 }
 
+/// The cell rule of one remainder term: `Integral_cell g(|p|/h)/h dp` over
+/// the cell at an offset of `(di, dj)` cells, by a product Gauss rule.
+struct CellRule<'a> {
+    length: f64,
+    /// The cell size over `length`.
+    spacing: f64,
+    density: &'a RadialDensity,
+    /// Nodes (about the cell's centre) and weights, in units of `length`.
+    points: Vec<(f64, f64)>,
+}
+
+impl<'a> CellRule<'a> {
+    /// `None` where the term is integrated by corner functions.
+    fn new(term: &'a CornerTerm, delta: f64) -> Option<Self> {
+        let density = term.density.as_ref()?;
+        let spacing = delta / term.length;
+        let rule = crate::numerics::gauss(cell_rule_order(spacing));
+        let points = rule
+            .as_node_weight_pairs()
+            .iter()
+            .map(|&(x, w)| (0.5 * spacing * x, 0.5 * spacing * w))
+            .collect();
+        Some(CellRule {
+            length: term.length,
+            spacing,
+            density,
+            points,
+        })
+    }
+
+    fn integral(&self, di: usize, dj: usize) -> f64 {
+        let (x0, y0) = (di as f64 * self.spacing, dj as f64 * self.spacing);
+        let sum: f64 = self
+            .points
+            .iter()
+            .map(|&(x, wx)| {
+                let x = x0 + x;
+                wx * self
+                    .points
+                    .iter()
+                    .map(|&(y, wy)| wy * self.density.at(x.hypot(y0 + y)))
+                    .sum::<f64>()
+            })
+            .sum();
+        self.length * sum
+    }
+}
+
 /// `f(k, l)` for every `(k, l)` of a `rows x columns` table, row-major,
 /// with `f` symmetric where both lie below `min(rows, columns)`: those
 /// entries are computed once (rows in parallel) and mirrored.
@@ -209,42 +257,14 @@ impl InfluenceCoefficients {
             let sign = if (k < 0) != (l < 0) { -1.0 } else { 1.0 };
             sign * corners[k.max(-k - 1) as usize * columns + l.max(-l - 1) as usize]
         };
-        // Remainders by the cell rule, `Integral_cell g(|p|/h)/h dp`.
-        let cell_rules: Vec<(f64, &RadialDensity, Vec<(f64, f64)>)> = corner_function
+        // Remainders by the cell rule.
+        let cell_rules: Vec<CellRule> = corner_function
             .terms
             .iter()
-            .filter_map(|term| {
-                let density = term.density.as_ref()?;
-                let spacing = delta / term.length;
-                let rule = crate::numerics::gauss(cell_rule_order(spacing));
-                // Nodes and weights on a cell of `spacing`, about its centre.
-                let points = rule
-                    .as_node_weight_pairs()
-                    .iter()
-                    .map(|&(x, w)| (0.5 * spacing * x, 0.5 * spacing * w))
-                    .collect();
-                Some((term.length, density, points))
-            })
+            .filter_map(|term| CellRule::new(term, delta))
             .collect();
         let cell_remainder = |di: usize, dj: usize| -> f64 {
-            cell_rules
-                .iter()
-                .map(|(h, density, points)| {
-                    let spacing = delta / h;
-                    let (x0, y0) = (di as f64 * spacing, dj as f64 * spacing);
-                    let sum: f64 = points
-                        .iter()
-                        .map(|&(x, wx)| {
-                            let x = x0 + x;
-                            wx * points
-                                .iter()
-                                .map(|&(y, wy)| wy * density.at(x.hypot(y0 + y)))
-                                .sum::<f64>()
-                        })
-                        .sum();
-                    h * sum
-                })
-                .sum()
+            cell_rules.iter().map(|rule| rule.integral(di, dj)).sum()
         };
         let scale = 1.0 / (PI * modulus);
         let values = symmetric_table(rows, columns, |di, dj| {
