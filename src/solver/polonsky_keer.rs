@@ -383,12 +383,31 @@ impl ContactSolver {
             )?;
             // Conjugation; a zero previous product (every gap closed
             // exactly) restarts from steepest descent instead of making
-            // 0/0 = NaN.
-            let beta = if set.overlap || rz_old <= 0.0 {
-                0.0
-            } else {
-                rz / rz_old
-            };
+            // 0/0 = NaN. New overlap changes the working set; Polonsky and
+            // Keer restart there, which on rough contacts (cells join the
+            // set in most of the early iterations) keeps the iteration
+            // near steepest descent. The conjugation is kept instead (a
+            // projected Fletcher-Reeves step), unless the new direction
+            // would not descend: `gap . t = rz + beta gap . t_old` on the
+            // new set (the old direction is zero off the old one). On the
+            // rough film of BENCHMARKS.md at 2048 x 2048 cells this takes
+            // 38 iterations instead of 69 at 28 % contact.
+            let mut beta = if rz_old <= 0.0 { 0.0 } else { rz / rz_old };
+            if set.overlap && beta > 0.0 {
+                let cells = working_cells.clone();
+                let (along, _) = passes::two_dots(
+                    &ws.working[cells.clone()],
+                    &ws.gap[cells.clone()],
+                    &ws.gap[cells.clone()],
+                    &ws.direction[cells],
+                );
+                let mut along = [along];
+                self.sum_over_ranks(&mut along);
+                if rz + beta * along[0] <= 0.0 {
+                    beta = 0.0;
+                }
+            }
+            let ws = &mut self.workspace;
             rz_old = rz;
             // The direction is zero off the working set: only the rows of
             // the old and the new one are written.
