@@ -178,12 +178,15 @@
 //! gives the estimate a solver reserves before allocating.
 //!
 //! Rough contacts (a self-affine surface of Hurst exponent 0.8 down to four
-//! cells, on a film on a rigid base, force control, two threads) take more
-//! iterations, growing with the grid as the surface gains roughness: 44 at
-//! `N = 1024` (6.1 s), 60 at 2048 (34 s), 102 at 4096 (213 s, 2.8 GB, 177
-//! bytes per cell including the height map); a periodic `8192 x 8192` cell
-//! converges in 229 iterations (23 min, 10.8 GB). Tables in
-//! `BENCHMARKS.md`.
+//! cells) take more iterations, growing with the grid (about 1.3 times per
+//! doubling) as the surface gains roughness; the constrained conjugate
+//! gradients keep their conjugation when the working set grows (a
+//! projected Fletcher-Reeves step), where Polonsky and Keer restart (121
+//! iterations before, 46 after, on the periodic half-space of the tamaas
+//! comparison at 1024 x 1024). Tables (iterations, times
+//! and memory from 256 x 256 to 8192 x 8192, and beside tamaas) in
+//! `BENCHMARKS.md`, "Speed: rough contacts on large grids" and "Rough
+//! contacts beside tamaas".
 //!
 //! ### Rough contacts: the contact area and the kernel
 //!

@@ -46,8 +46,8 @@ pub struct SolverParams {
     pub fields: Fields,
     /// Precondition the constrained conjugate gradients with the
     /// compliance's inverse on a box around the contact (Vollebregt 2014);
-    /// `false` gives Polonsky and Keer's plain iteration (about ten times
-    /// the iterations on large grids; for comparison).
+    /// `false` iterates without a preconditioner, as Polonsky and Keer did
+    /// (about ten times the iterations on large grids; for comparison).
     pub precondition: bool,
     /// Start cold non-adhesive solves on grids of at least
     /// [`MULTIRESOLUTION_CELLS`](super::MULTIRESOLUTION_CELLS) cells each

@@ -1,7 +1,12 @@
 //! Non-adhesive contact by constrained conjugate gradients (Polonsky & Keer
 //! 1999, Wear 231, 206-219), preconditioned with the compliance's inverse on
 //! a box around the contact (Vollebregt 2014, J. Comput. Phys. 257,
-//! 333-351), with a multi-resolution start.
+//! 333-351), with a multi-resolution start. Unlike Polonsky and Keer, the
+//! conjugation survives new overlap joining the working set (a projected
+//! Fletcher-Reeves step, Fletcher & Reeves 1964, Comput. J. 7, 149-154),
+//! restarted only where the new direction would not descend: rough
+//! contacts, whose working set grows in most early iterations, otherwise
+//! iterate near steepest descent.
 
 use std::ops::Range;
 
@@ -389,9 +394,8 @@ impl ContactSolver {
             // near steepest descent. The conjugation is kept instead (a
             // projected Fletcher-Reeves step), unless the new direction
             // would not descend: `gap . t = rz + beta gap . t_old` on the
-            // new set (the old direction is zero off the old one). On the
-            // rough film of BENCHMARKS.md at 2048 x 2048 cells this takes
-            // 38 iterations instead of 69 at 28 % contact.
+            // new set (the old direction is zero off the old one). Measured
+            // in BENCHMARKS.md ("Rough contacts beside tamaas").
             let mut beta = if rz_old <= 0.0 { 0.0 } else { rz / rz_old };
             if set.overlap && beta > 0.0 {
                 let cells = working_cells.clone();
