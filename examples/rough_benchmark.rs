@@ -6,8 +6,12 @@
 //! contact).
 //!
 //! ```text
-//! cargo run --release --example rough_benchmark -- [isolated|periodic] N [N ...]
+//! cargo run --release --example rough_benchmark -- [isolated|periodic] [--refine] N [N ...]
 //! ```
+//!
+//! With `--refine` the cut-off stays at 31.25 um (16 cells of a 512 grid)
+//! whatever N: the same roughness on finer and finer grids, which shows
+//! whether the solver's iterations depend on the grid or on the surface.
 //!
 //! Prints one CSV line per grid: N, boundary, seconds to build the solver,
 //! to synthesise the surface and to solve, iterations (and those of the
@@ -36,6 +40,10 @@ fn main() -> Result<(), layered_contact::Error> {
         }
         _ => Boundary::Isolated,
     };
+    let refine = args.peek().map(String::as_str) == Some("--refine");
+    if refine {
+        args.next();
+    }
     let sizes: Vec<usize> = args.filter_map(|a| a.parse().ok()).collect();
     let side = 1e-3;
     let film = Substrate::layer_on_rigid_base(Material::new(1e6, 0.49)?, 1e-4)?;
@@ -48,7 +56,11 @@ fn main() -> Result<(), layered_contact::Error> {
             hurst: 0.8,
             amplitude: Amplitude::RmsSlope(0.1),
             long_cutoff: 0.25 * side,
-            short_cutoff: 4.0 * grid.spacing(),
+            short_cutoff: if refine {
+                16.0 * side / 512.0
+            } else {
+                4.0 * grid.spacing()
+            },
             seed: 1,
         }
         .indenter(&grid)?;
