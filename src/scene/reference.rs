@@ -1,5 +1,5 @@
 //! The exact values a scene can be checked against, where they exist: the
-//! axisymmetric solutions of [`analytic::Axisymmetric`] for an untilted flat
+//! axisymmetric solutions of [`analytic::Axisymmetric`](crate::analytic::Axisymmetric) for an untilted flat
 //! punch, paraboloid or sphere on an isolated half-space or coated body.
 
 use crate::analytic::{Axisymmetric, JkrSphere};

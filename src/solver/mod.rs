@@ -56,9 +56,11 @@
 
 mod adhesive;
 mod griffith;
+mod multiresolution;
 mod params;
 mod passes;
 mod polonsky_keer;
+mod preconditioning;
 mod split;
 
 use ndarray::Array2;
@@ -72,8 +74,8 @@ use crate::substrate::Substrate;
 pub use griffith::{
     AdhesiveBranches, BranchPoint, EdgePoint, EdgeRelease, Reach, EDGE_SHIFT, EDGE_WINDOW,
 };
+pub use multiresolution::MULTIRESOLUTION_CELLS;
 pub use params::{Fields, IterationInfo, Observer, Solution, SolverParams, WarmStart};
-pub use polonsky_keer::MULTIRESOLUTION_CELLS;
 
 /// The constant of the mesh-dependent critical stress (Pohrt & Popov 2015).
 pub const MESH_CRITERION_CONSTANT: f64 = 0.473201;
@@ -292,7 +294,7 @@ impl ContactSolver {
     pub fn set_params(&mut self, params: SolverParams) {
         self.params = params;
         if let Some(Some(coarse)) = self.coarse.as_mut() {
-            coarse.set_params(polonsky_keer::coarse_params(&params));
+            coarse.set_params(multiresolution::coarse_params(&params));
         }
     }
 

@@ -6,20 +6,16 @@
 //! Fletcher-Reeves step, Fletcher & Reeves 1964, Comput. J. 7, 149-154),
 //! restarted only where the new direction would not descend: rough
 //! contacts, whose working set grows in most early iterations, otherwise
-//! iterate near steepest descent.
+//! iterate near steepest descent. The multi-resolution start is in
+//! [`multiresolution`](super::multiresolution), the preconditioner's box in
+//! [`preconditioning`](super::preconditioning).
 
 use std::ops::Range;
 
 use crate::error::{Error, Result};
-use crate::grid::{fft_friendly_even, Boundary, Grid};
 use crate::indenter::Indenter;
-use crate::kernel::BoxInverse;
 
-use super::passes::Bounds;
-use super::{
-    check_finite, passes, ContactSolver, Fields, IterationInfo, Observer, Solution, SolverParams,
-    WarmStart,
-};
+use super::{check_finite, passes, ContactSolver, IterationInfo, Observer, Solution, WarmStart};
 
 /// The smallest load the solver takes, as a penetration over the cell size
 /// or a force over `E* Delta^2`: the constrained conjugate gradients square
@@ -31,27 +27,9 @@ const MIN_LOAD_SCALE: f64 = 1e-100;
 /// Iterations between full recomputations of `u = K p`.
 const REFRESH: usize = 50;
 
-/// Grids at least this many cells each way start from the solution on the
-/// grid of half the cells each way (rounded up).
-pub const MULTIRESOLUTION_CELLS: usize = 64;
-
-/// The tolerance of the coarse solves of a multi-resolution start (or the
-/// solve's own, if looser): a start needs the contact set, not the last
-/// digits of the pressure.
-const COARSE_TOLERANCE: f64 = 1e-5;
-
-/// The parameters of a coarse solver under a solver with `params`.
-pub(super) fn coarse_params(params: &SolverParams) -> SolverParams {
-    SolverParams {
-        tolerance: params.tolerance.max(COARSE_TOLERANCE),
-        fields: Fields::default(),
-        ..*params
-    }
-}
-
 /// Which quantity a non-adhesive solve prescribes.
 #[derive(Clone, Copy)]
-enum Control {
+pub(super) enum Control {
     Depth(f64),
     Force(f64),
 }
@@ -63,7 +41,7 @@ impl ContactSolver {
     /// A depth at which the indenter does not yet touch gives a solution
     /// without contact (force 0). `warm` starts the iteration from a previous
     /// solution (any depth) on the same grid. On a grid of at least
-    /// [`MULTIRESOLUTION_CELLS`] cells each way the start is corrected on
+    /// [`MULTIRESOLUTION_CELLS`](super::MULTIRESOLUTION_CELLS) cells each way the start is corrected on
     /// the grid of half the cells first (the coarse solve starts from the
     /// warm pressures averaged over its cells, the fine one from the warm
     /// pressures plus the coarse solve's change: Brandt 1977, Math. Comp.
@@ -155,104 +133,6 @@ impl ContactSolver {
         let (mut solution, end) = self.constrained_cg(control, start, observer)?;
         solution.coarse_iterations = coarse.map_or(0, |(_, iterations)| iterations);
         Ok((solution, end))
-    }
-
-    /// The multi-resolution start: the same problem solved on the grid of
-    /// half the cells each way (twice their size; an odd count rounded up,
-    /// the last coarse row or column then half off the grid), itself
-    /// started from the next coarser grid, its pressures spread over the
-    /// four cells each coarse cell covers. The coarse grid sees the
-    /// indenter shifted so that its cell centres fall on the centres of the
-    /// fine cells they cover (half a fine cell along an odd side). `None`
-    /// for grids smaller than [`MULTIRESOLUTION_CELLS`], or if the coarse
-    /// grid cannot resolve the substrate (a film too thin
-    /// for its cells) or its solve fails: the fine solve then starts from
-    /// `warm` or cold, and reports its own errors. Also the iterations
-    /// spent.
-    ///
-    /// With a `warm` start the coarse solve starts from its pressures
-    /// averaged over each coarse cell, and the fine start is `warm` plus
-    /// the change the coarse solve made, clamped at zero: the coarse-grid
-    /// correction of Brandt's full approximation scheme (1977, Math. Comp.
-    /// 31, 333-390). The fine start keeps the detail of `warm` and gets the
-    /// contact's new extent from the coarse grid, where the iterations that
-    /// move the contact edge are cheap; started from `warm` itself, the
-    /// fine solve spends its first iterations clamping the overlap ring of
-    /// the new load (thousands of cells, a convolution each).
-    fn coarse_start<I: Indenter + ?Sized>(
-        &mut self,
-        indenter: &I,
-        control: Control,
-        warm: Option<&WarmStart>,
-    ) -> Option<(WarmStart, usize)> {
-        let grid = *self.grid();
-        let (rows, columns) = (grid.rows(), grid.columns());
-        if !self.params.multiresolution || rows.min(columns) < MULTIRESOLUTION_CELLS {
-            return None;
-        }
-        let (coarse_rows, half) = (rows.div_ceil(2), columns.div_ceil(2));
-        if self.coarse.is_none() {
-            let params = coarse_params(&self.params);
-            let boundary = self.operator.boundary();
-            let built = Grid::new(coarse_rows, half, 2.0 * grid.spacing()).and_then(|g| match self
-                .operator
-                .slab()
-            {
-                None => ContactSolver::new(&self.substrate, &g, boundary, params),
-                Some(slab) => ContactSolver::on_slab(
-                    &self.substrate,
-                    &g,
-                    boundary,
-                    params,
-                    &slab.halved(rows),
-                ),
-            });
-            // Distributed, every rank has the coarse solver or none has.
-            self.coarse = Some(self.agreed(built).ok().map(Box::new));
-        }
-        let coarse = self.coarse.as_mut()?.as_mut()?;
-        // The coarse cell of fine cell `c`.
-        let block = |c: usize| (c / columns / 2) * half + (c % columns) / 2;
-        let restricted = warm.map(|w| {
-            let mut pressure = vec![0.0; coarse.local_cells()];
-            for (c, p) in w.pressure.iter().enumerate() {
-                pressure[block(c)] += 0.25 * p;
-            }
-            let attached = pressure.iter().map(|p| *p > 0.0).collect();
-            WarmStart { pressure, attached }
-        });
-        let start = restricted.as_ref();
-        // A coarse cell centre lies (rounded-up half count - half count)
-        // fine cells before the centre of the fine cells it covers.
-        let shift = |cells: usize| (cells.div_ceil(2) as f64 - 0.5 * cells as f64) * grid.spacing();
-        let shifted = Shifted {
-            inner: indenter,
-            by: (shift(rows), shift(columns)),
-        };
-        // As a trait object: every coarser level solves with the same type.
-        let indenter: &dyn Indenter = &shifted;
-        let solved = match control {
-            Control::Depth(d) => coarse.solve_depth(indenter, d, start, &mut ()),
-            Control::Force(w) => coarse.solve_force(indenter, w, start, &mut ()),
-        };
-        // The coarse solver keeps its kernel and plans, not its scratch,
-        // while the finer solve runs.
-        coarse.release_scratch();
-        let (solution, solved) = self.agreed(solved).ok()?;
-        let fine = self.local_cells();
-        let pressure: Vec<f64> = match (warm, start) {
-            (Some(w), Some(r)) => (0..fine)
-                .map(|c| {
-                    (w.pressure[c] + solved.pressure[block(c)] - r.pressure[block(c)]).max(0.0)
-                })
-                .collect(),
-            _ => (0..fine).map(|c| solved.pressure[block(c)]).collect(),
-        };
-        let attached = pressure.iter().map(|p| *p > 0.0).collect();
-        Some((
-            WarmStart { pressure, attached },
-            solution.iterations + solution.coarse_iterations,
-        ))
     }
 
     fn constrained_cg(
@@ -585,72 +465,6 @@ impl ContactSolver {
         }
     }
 
-    /// `response = P M^-1 P gap` on the working set (`gap` itself without
-    /// preconditioning), `M^-1` the compliance's inverse on a periodic box
-    /// around the working set ([`BoxInverse`]; the whole grid when
-    /// periodic), of even sides whose halves have no prime factor above 7.
-    /// The box is rebuilt only when the set outgrows it or needs less than
-    /// 2/3 of its area (a rebuild costs about three applications; a box
-    /// left 2.25 times too large, as before, doubled the preconditioner's
-    /// share of an iteration). Returns `(sum z, sum z gap)` over the working set; `bounds`
-    /// is the working set's bounding box (from the gap pass).
-    fn precondition_working_set(&mut self, bounds: Option<Bounds>) -> Result<(f64, f64)> {
-        let grid = *self.grid();
-        let (rows, columns) = (grid.rows(), grid.columns());
-        let periodic = self.operator.boundary() == Boundary::Periodic;
-        let ws = &mut self.workspace;
-        if !self.params.precondition {
-            ws.response.copy_from_slice(&ws.gap);
-            return Ok(passes::sum_and_dot(&ws.working, &ws.response, &ws.gap));
-        }
-        let Some(bounds) = bounds else {
-            ws.response.fill(0.0);
-            return Ok((0.0, 0.0));
-        };
-        // A margin of a sixteenth of the extent (at least 4 cells) keeps
-        // the box's periodic images apart; the stiffness decays like 1/r^3.
-        let side = |(lo, hi): (usize, usize), cells: usize| {
-            let extent = hi - lo + 1;
-            if periodic {
-                cells
-            } else {
-                fft_friendly_even(extent + 2 * (extent / 16).max(4)).min(cells)
-            }
-        };
-        let needed = (side(bounds.0, rows), side(bounds.1, columns));
-        let reuse = self.preconditioner.as_ref().is_some_and(|p| {
-            let (m0, m1) = p.size();
-            m0 >= needed.0 && m1 >= needed.1 && 2 * m0 * m1 <= 3 * needed.0 * needed.1
-        });
-        if !reuse {
-            // Free the old box before building the new one.
-            self.preconditioner = None;
-            let built = BoxInverse::new(
-                &self.compliance,
-                self.surface_contact_modulus,
-                grid.spacing(),
-                needed,
-                self.operator.slab(),
-            );
-            self.preconditioner = Some(self.agreed(built)?);
-        }
-        let ws = &mut self.workspace;
-        let Some(inverse) = self.preconditioner.as_mut() else {
-            return Ok((0.0, 0.0));
-        };
-        // The box centred on the working set (at the origin when periodic).
-        let (m0, m1) = inverse.size();
-        let start = |(lo, hi): (usize, usize), m: usize| {
-            if periodic {
-                0
-            } else {
-                lo as isize - (m.saturating_sub(hi - lo + 1) / 2) as isize
-            }
-        };
-        let origin = (start(bounds.0, m0), start(bounds.1, m1));
-        inverse.apply(columns, origin, &ws.working, &ws.gap, &mut ws.response)
-    }
-
     /// The operator's response at a cell to unit pressure on it.
     pub(super) fn self_compliance(&mut self) -> Result<f64> {
         if let Some(influence) = self.operator.influence() {
@@ -689,22 +503,5 @@ impl ContactSolver {
                 .map(|r| if *r { 1.0 } else { 0.0 })
                 .collect(),
         }
-    }
-}
-
-/// An indenter moved by `-by` (heights at `(x, y)` are the inner
-/// indenter's at `(x, y) + by`).
-struct Shifted<'a, I: ?Sized> {
-    inner: &'a I,
-    by: (f64, f64),
-}
-
-impl<I: Indenter + ?Sized> Indenter for Shifted<'_, I> {
-    fn height(&self, x: f64, y: f64) -> f64 {
-        self.inner.height(x + self.by.0, y + self.by.1)
-    }
-
-    fn bounding_radius(&self) -> f64 {
-        self.inner.bounding_radius() + self.by.0.hypot(self.by.1)
     }
 }

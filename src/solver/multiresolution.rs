@@ -1,0 +1,145 @@
+//! The multi-resolution start of the non-adhesive solver: the same problem
+//! solved on the grid of half the cells each way, recursively, and
+//! prolonged to start (or, from a warm start, correct) the fine solve
+//! (Brandt 1977, Math. Comp. 31, 333-390).
+
+use crate::grid::Grid;
+use crate::indenter::Indenter;
+
+use super::polonsky_keer::Control;
+use super::{ContactSolver, Fields, SolverParams, WarmStart};
+
+/// Grids at least this many cells each way start from the solution on the
+/// grid of half the cells each way (rounded up).
+pub const MULTIRESOLUTION_CELLS: usize = 64;
+
+/// The tolerance of the coarse solves of a multi-resolution start (or the
+/// solve's own, if looser): a start needs the contact set, not the last
+/// digits of the pressure.
+const COARSE_TOLERANCE: f64 = 1e-5;
+
+/// The parameters of a coarse solver under a solver with `params`.
+pub(super) fn coarse_params(params: &SolverParams) -> SolverParams {
+    SolverParams {
+        tolerance: params.tolerance.max(COARSE_TOLERANCE),
+        fields: Fields::default(),
+        ..*params
+    }
+}
+
+impl ContactSolver {
+    /// The multi-resolution start: the same problem solved on the grid of
+    /// half the cells each way (twice their size; an odd count rounded up,
+    /// the last coarse row or column then half off the grid), itself
+    /// started from the next coarser grid, its pressures spread over the
+    /// four cells each coarse cell covers. The coarse grid sees the
+    /// indenter shifted so that its cell centres fall on the centres of the
+    /// fine cells they cover (half a fine cell along an odd side). `None`
+    /// for grids smaller than [`MULTIRESOLUTION_CELLS`], or if the coarse
+    /// grid cannot resolve the substrate (a film too thin
+    /// for its cells) or its solve fails: the fine solve then starts from
+    /// `warm` or cold, and reports its own errors. Also the iterations
+    /// spent.
+    ///
+    /// With a `warm` start the coarse solve starts from its pressures
+    /// averaged over each coarse cell, and the fine start is `warm` plus
+    /// the change the coarse solve made, clamped at zero: the coarse-grid
+    /// correction of Brandt's full approximation scheme (1977, Math. Comp.
+    /// 31, 333-390). The fine start keeps the detail of `warm` and gets the
+    /// contact's new extent from the coarse grid, where the iterations that
+    /// move the contact edge are cheap; started from `warm` itself, the
+    /// fine solve spends its first iterations clamping the overlap ring of
+    /// the new load (thousands of cells, a convolution each).
+    pub(super) fn coarse_start<I: Indenter + ?Sized>(
+        &mut self,
+        indenter: &I,
+        control: Control,
+        warm: Option<&WarmStart>,
+    ) -> Option<(WarmStart, usize)> {
+        let grid = *self.grid();
+        let (rows, columns) = (grid.rows(), grid.columns());
+        if !self.params.multiresolution || rows.min(columns) < MULTIRESOLUTION_CELLS {
+            return None;
+        }
+        let (coarse_rows, half) = (rows.div_ceil(2), columns.div_ceil(2));
+        if self.coarse.is_none() {
+            let params = coarse_params(&self.params);
+            let boundary = self.operator.boundary();
+            let built = Grid::new(coarse_rows, half, 2.0 * grid.spacing()).and_then(|g| match self
+                .operator
+                .slab()
+            {
+                None => ContactSolver::new(&self.substrate, &g, boundary, params),
+                Some(slab) => ContactSolver::on_slab(
+                    &self.substrate,
+                    &g,
+                    boundary,
+                    params,
+                    &slab.halved(rows),
+                ),
+            });
+            // Distributed, every rank has the coarse solver or none has.
+            self.coarse = Some(self.agreed(built).ok().map(Box::new));
+        }
+        let coarse = self.coarse.as_mut()?.as_mut()?;
+        // The coarse cell of fine cell `c`.
+        let block = |c: usize| (c / columns / 2) * half + (c % columns) / 2;
+        let restricted = warm.map(|w| {
+            let mut pressure = vec![0.0; coarse.local_cells()];
+            for (c, p) in w.pressure.iter().enumerate() {
+                pressure[block(c)] += 0.25 * p;
+            }
+            let attached = pressure.iter().map(|p| *p > 0.0).collect();
+            WarmStart { pressure, attached }
+        });
+        let start = restricted.as_ref();
+        // A coarse cell centre lies (rounded-up half count - half count)
+        // fine cells before the centre of the fine cells it covers.
+        let shift = |cells: usize| (cells.div_ceil(2) as f64 - 0.5 * cells as f64) * grid.spacing();
+        let shifted = Shifted {
+            inner: indenter,
+            by: (shift(rows), shift(columns)),
+        };
+        // As a trait object: every coarser level solves with the same type.
+        let indenter: &dyn Indenter = &shifted;
+        let solved = match control {
+            Control::Depth(d) => coarse.solve_depth(indenter, d, start, &mut ()),
+            Control::Force(w) => coarse.solve_force(indenter, w, start, &mut ()),
+        };
+        // The coarse solver keeps its kernel and plans, not its scratch,
+        // while the finer solve runs.
+        coarse.release_scratch();
+        let (solution, solved) = self.agreed(solved).ok()?;
+        let fine = self.local_cells();
+        let pressure: Vec<f64> = match (warm, start) {
+            (Some(w), Some(r)) => (0..fine)
+                .map(|c| {
+                    (w.pressure[c] + solved.pressure[block(c)] - r.pressure[block(c)]).max(0.0)
+                })
+                .collect(),
+            _ => (0..fine).map(|c| solved.pressure[block(c)]).collect(),
+        };
+        let attached = pressure.iter().map(|p| *p > 0.0).collect();
+        Some((
+            WarmStart { pressure, attached },
+            solution.iterations + solution.coarse_iterations,
+        ))
+    }
+}
+
+/// An indenter moved by `-by` (heights at `(x, y)` are the inner
+/// indenter's at `(x, y) + by`).
+struct Shifted<'a, I: ?Sized> {
+    inner: &'a I,
+    by: (f64, f64),
+}
+
+impl<I: Indenter + ?Sized> Indenter for Shifted<'_, I> {
+    fn height(&self, x: f64, y: f64) -> f64 {
+        self.inner.height(x + self.by.0, y + self.by.1)
+    }
+
+    fn bounding_radius(&self) -> f64 {
+        self.inner.bounding_radius() + self.by.0.hypot(self.by.1)
+    }
+}

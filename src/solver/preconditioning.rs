@@ -1,0 +1,81 @@
+//! The preconditioner of the constrained conjugate gradients: the
+//! compliance's inverse on a periodic box around the working set
+//! (Vollebregt 2014, J. Comput. Phys. 257, 333-351).
+
+use crate::error::Result;
+use crate::grid::{fft_friendly_even, Boundary};
+use crate::kernel::BoxInverse;
+
+use super::passes::{self, Bounds};
+use super::ContactSolver;
+
+impl ContactSolver {
+    /// `response = P M^-1 P gap` on the working set (`gap` itself without
+    /// preconditioning), `M^-1` the compliance's inverse on a periodic box
+    /// around the working set ([`BoxInverse`]; the whole grid when
+    /// periodic), of even sides whose halves have no prime factor above 7.
+    /// The box is rebuilt only when the set outgrows it or needs less than
+    /// 2/3 of its area (a rebuild costs about three applications; a box
+    /// left 2.25 times too large, as before, doubled the preconditioner's
+    /// share of an iteration). Returns `(sum z, sum z gap)` over the working set; `bounds`
+    /// is the working set's bounding box (from the gap pass).
+    pub(super) fn precondition_working_set(
+        &mut self,
+        bounds: Option<Bounds>,
+    ) -> Result<(f64, f64)> {
+        let grid = *self.grid();
+        let (rows, columns) = (grid.rows(), grid.columns());
+        let periodic = self.operator.boundary() == Boundary::Periodic;
+        let ws = &mut self.workspace;
+        if !self.params.precondition {
+            ws.response.copy_from_slice(&ws.gap);
+            return Ok(passes::sum_and_dot(&ws.working, &ws.response, &ws.gap));
+        }
+        let Some(bounds) = bounds else {
+            ws.response.fill(0.0);
+            return Ok((0.0, 0.0));
+        };
+        // A margin of a sixteenth of the extent (at least 4 cells) keeps
+        // the box's periodic images apart; the stiffness decays like 1/r^3.
+        let side = |(lo, hi): (usize, usize), cells: usize| {
+            let extent = hi - lo + 1;
+            if periodic {
+                cells
+            } else {
+                fft_friendly_even(extent + 2 * (extent / 16).max(4)).min(cells)
+            }
+        };
+        let needed = (side(bounds.0, rows), side(bounds.1, columns));
+        let reuse = self.preconditioner.as_ref().is_some_and(|p| {
+            let (m0, m1) = p.size();
+            m0 >= needed.0 && m1 >= needed.1 && 2 * m0 * m1 <= 3 * needed.0 * needed.1
+        });
+        if !reuse {
+            // Free the old box before building the new one.
+            self.preconditioner = None;
+            let built = BoxInverse::new(
+                &self.compliance,
+                self.surface_contact_modulus,
+                grid.spacing(),
+                needed,
+                self.operator.slab(),
+            );
+            self.preconditioner = Some(self.agreed(built)?);
+        }
+        let ws = &mut self.workspace;
+        let Some(inverse) = self.preconditioner.as_mut() else {
+            return Ok((0.0, 0.0));
+        };
+        // The box centred on the working set (at the origin when periodic).
+        let (m0, m1) = inverse.size();
+        let start = |(lo, hi): (usize, usize), m: usize| {
+            if periodic {
+                0
+            } else {
+                lo as isize - (m.saturating_sub(hi - lo + 1) / 2) as isize
+            }
+        };
+        let origin = (start(bounds.0, m0), start(bounds.1, m1));
+        inverse.apply(columns, origin, &ws.working, &ws.gap, &mut ws.response)
+    }
+}
