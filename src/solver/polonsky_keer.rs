@@ -279,11 +279,10 @@ impl ContactSolver {
             let mut beta = if rz_old <= 0.0 { 0.0 } else { rz / rz_old };
             if set.overlap && beta > 0.0 {
                 let cells = working_cells.clone();
-                let (along, _) = passes::two_dots(
+                let (_, along) = passes::sum_and_dot(
                     &ws.working[cells.clone()],
-                    &ws.gap[cells.clone()],
-                    &ws.gap[cells.clone()],
-                    &ws.direction[cells],
+                    &ws.direction[cells.clone()],
+                    &ws.gap[cells],
                 );
                 let mut along = [along];
                 self.sum_over_ranks(&mut along);
