@@ -5,8 +5,9 @@
 //! comparison; finer curves are timed by the `accuracy` example); the
 //! adhesive branches of an elliptic paraboloid (radii 10 and 20 mm, a
 //! non-axisymmetric family of contact sets) at 64 and 128 cells across its
-//! pull-off contact; the cost of one CG iteration against a padded FFT round
-//! trip.
+//! pull-off contact; a rough periodic contact (the surface of
+//! `benches/peers/rough.py`, N = 256 and 512); the cost of one CG iteration
+//! against a padded FFT round trip.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::hint::black_box;
@@ -23,7 +24,45 @@ use layered_contact::scene::{
     SubstrateSpec,
 };
 use layered_contact::solver::{ContactSolver, IterationInfo, Reach, SolverParams};
+use layered_contact::topography::{Amplitude, SelfAffine};
 use layered_contact::{Boundary, Grid, Material, Substrate};
+
+/// The rough periodic contact of `benches/peers/rough.py`: a seeded
+/// self-affine surface (Hurst 0.8, rms slope 0.1, roll-off at L/4, cut-off
+/// at four cells) on a periodic half-space (`E* = 1`, `L = 1`) at a mean
+/// pressure of `0.01 E*` (about 20 % contact), tolerance 1e-8.
+fn bench_rough(c: &mut Criterion) {
+    let half = Substrate::half_space(Material::new(0.75, 0.5).unwrap());
+    let mut group = c.benchmark_group("rough periodic solve (half-space, 0.01 E*)");
+    group.sample_size(10);
+    for n in [256usize, 512] {
+        let grid = Grid::new(n, n, 1.0 / n as f64).unwrap();
+        let surface = SelfAffine {
+            hurst: 0.8,
+            amplitude: Amplitude::RmsSlope(0.1),
+            long_cutoff: 0.25,
+            short_cutoff: 4.0 / n as f64,
+            seed: 1,
+        }
+        .indenter(&grid)
+        .unwrap();
+        let params = SolverParams {
+            tolerance: 1e-8,
+            ..SolverParams::default()
+        };
+        let mut solver = ContactSolver::new(&half, &grid, Boundary::Periodic, params).unwrap();
+        group.bench_function(BenchmarkId::from_parameter(n), |b| {
+            b.iter(|| {
+                solver
+                    .solve_force(&surface, black_box(0.01), None, &mut ())
+                    .unwrap()
+                    .0
+                    .iterations
+            })
+        });
+    }
+    group.finish();
+}
 
 fn bench_solver(c: &mut Criterion) {
     let film = Substrate::layer_on_rigid_base(Material::new(0.324e6, 0.48).unwrap(), 5e-3).unwrap();
@@ -266,5 +305,5 @@ fn bench_iteration(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_solver, bench_iteration);
+criterion_group!(benches, bench_solver, bench_rough, bench_iteration);
 criterion_main!(benches);
