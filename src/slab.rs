@@ -129,9 +129,8 @@ impl Slab {
         self.exchange.sum(&mut failed);
         match result {
             Err(e) => Err(e),
-            Ok(_) if failed[0] > 0.0 => Err(Error::Internal {
-                what: "distributed run",
-                detail: "another rank failed (see its error)".into(),
+            Ok(_) if failed[0] > 0.0 => Err(Error::OtherRankFailed {
+                failed: failed[0] as usize,
             }),
             ok => ok,
         }
@@ -180,6 +179,44 @@ mod tests {
         fn min(&self, _: &mut [f64]) {}
         fn all_to_all(&self, _: &[Complex<f64>], _: &[usize], _: &mut [Complex<f64>], _: &[usize]) {
         }
+    }
+
+    /// Rank 0 of 4, whose sums add the failures of the other ranks.
+    struct Others {
+        failed: f64,
+    }
+
+    impl Exchange for Others {
+        fn rank(&self) -> usize {
+            0
+        }
+        fn ranks(&self) -> usize {
+            4
+        }
+        fn sum(&self, values: &mut [f64]) {
+            values[0] += self.failed;
+        }
+        fn min(&self, _: &mut [f64]) {}
+        fn all_to_all(&self, _: &[Complex<f64>], _: &[usize], _: &mut [Complex<f64>], _: &[usize]) {
+        }
+    }
+
+    #[test]
+    fn a_failure_on_any_rank_stops_every_rank() {
+        let slab = |failed: f64| Slab::new(Arc::new(Others { failed }), 64, 1).unwrap();
+        let own = || Error::Interrupted { what: "a test" };
+        // Two other ranks failed: this one stops too, and says how many.
+        match slab(2.0).agree(Ok(1)) {
+            Err(Error::OtherRankFailed { failed }) => assert_eq!(failed, 2),
+            other => panic!("expected OtherRankFailed, got {other:?}"),
+        }
+        // Its own error wins over the others'.
+        assert!(matches!(
+            slab(2.0).agree::<()>(Err(own())),
+            Err(Error::Interrupted { .. })
+        ));
+        // Nobody failed.
+        assert_eq!(slab(0.0).agree(Ok(1)).unwrap(), 1);
     }
 
     #[test]

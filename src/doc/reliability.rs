@@ -25,7 +25,7 @@
 //! | grid | at most `2^15` cells per axis, `2^30` in all, and memory that can be had | [`Grid::new`](crate::Grid::new), [`ComplianceOperator::new`](crate::kernel::ComplianceOperator::new) ([`memory_estimate`](crate::kernel::memory_estimate)) | `InvalidGrid`, `OutOfMemory` |
 //! | scene `cells_across`, `margin`, `steps`, `pull_off_bisections` | `8..=8192`, `[0, 10]`, `1..=100000`, `0..=60` | [`Scene::validate`](crate::scene::Scene::validate) | `InvalidParameter` |
 //! | works of adhesion | finite, `>= 0`, advancing `<=` receding | solvers and scenes | `InvalidParameter` |
-//! | a solver split across MPI ranks (feature `mpi`) | non-adhesive solves only; scenes without fields or stresses; at most one rank per band of `2^L` rows (`L` multi-resolution levels); at most `2^31` values exchanged per rank; every rank stops with an error when one does (no rank waits in a collective for one that has returned) | [`ContactSolver::distributed`](crate::solver::ContactSolver), the adhesive methods, [`Scene::run_on`](crate::scene::Scene::run_on) | `Unsupported`, `InvalidParameter`, `Internal` ("another rank failed") |
+//! | a solver split across MPI ranks (feature `mpi`) | non-adhesive solves only; scenes without fields or stresses; at most one rank per band of `2^L` rows (`L` multi-resolution levels); at most `2^31` values exchanged per rank; every rank stops with an error when one does (no rank waits in a collective for one that has returned) | [`ContactSolver::distributed`](crate::solver::ContactSolver), the adhesive methods, [`Scene::run_on`](crate::scene::Scene::run_on) | `Unsupported`, `InvalidParameter`, `OtherRankFailed` (on the ranks that did not fail themselves) |
 //!
 //! ## Mechanisms
 //!
