@@ -116,14 +116,6 @@ pub enum Error {
         /// Its message.
         detail: String,
     },
-    /// Another rank of a run split across MPI ranks (feature `mpi`) failed,
-    /// and its own error says why; this rank stopped too, so that no rank
-    /// waits in a collective for one that has returned.
-    #[error("{failed} other MPI rank(s) failed (see their errors); this rank stopped with them")]
-    OtherRankFailed {
-        /// How many other ranks failed.
-        failed: usize,
-    },
     /// The contact reaches the edge of an isolated grid (or the grid leaves
     /// too little room around it), so the result would be truncated: use a
     /// wider grid.
@@ -191,6 +183,16 @@ pub enum Error {
         iterations: usize,
         /// The last residual or error estimate reached.
         residual: f64,
+    },
+    // New variants go last: the semver check treats a variant's position as
+    // its discriminant.
+    /// Another rank of a run split across MPI ranks (feature `mpi`) failed,
+    /// and its own error says why; this rank stopped too, so that no rank
+    /// waits in a collective for one that has returned.
+    #[error("{failed} other MPI rank(s) failed (see their errors); this rank stopped with them")]
+    OtherRankFailed {
+        /// How many other ranks failed.
+        failed: usize,
     },
 }
 
