@@ -294,19 +294,23 @@ impl RadialDensity {
     }
 }
 
+/// `f(u) = Lambda_g(u) - Lambda0 e^(-u)`, and the `u` beyond which it is
+/// negligible.
+fn remainder_spectrum(functions: &Spectral, lambda0: f64) -> (impl Fn(f64) -> f64 + '_, f64) {
+    let f = move |u: f64| functions.lambda(u) - lambda0 * (-u).exp();
+    (f, 50.0 + (1.0 + lambda0.abs()).ln())
+}
+
 /// `g(rho) = Integral_0^inf f(u) J0(u rho) du`.
 fn density(functions: &Spectral, lambda0: f64, rho: f64, rule: &GaussLegendre) -> f64 {
-    let integrand = |u: f64| (functions.lambda(u) - lambda0 * (-u).exp()) * libm::j0(u * rho);
-    let u_max = 50.0 + (1.0 + lambda0.abs()).ln();
+    let (f, u_max) = remainder_spectrum(functions, lambda0);
+    let integrand = |u: f64| f(u) * libm::j0(u * rho);
     oscillatory_integral(integrand, rho.max(1e-300), u_max, rule)
 }
 
 /// `Gc(R) = R Integral_0^inf (f(u)/u) J1(u R) du`.
 fn disc_integral(functions: &Spectral, lambda0: f64, r: f64, rule: &GaussLegendre) -> f64 {
-    let integrand = |u: f64| {
-        let f = functions.lambda(u) - lambda0 * (-u).exp();
-        f / u * libm::j1(u * r)
-    };
-    let u_max = 50.0 + (1.0 + lambda0.abs()).ln();
+    let (f, u_max) = remainder_spectrum(functions, lambda0);
+    let integrand = |u: f64| f(u) / u * libm::j1(u * r);
     r * oscillatory_integral(integrand, r, u_max, rule)
 }
