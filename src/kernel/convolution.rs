@@ -3,20 +3,23 @@
 //! run on all threads.
 //!
 //! 1. Rows: each data row, zero-padded to the FFT width, goes through a
-//!    real-to-complex FFT into `row_spectra` (row-major).
-//! 2. Columns: blocks of a few adjacent spectrum columns are gathered from
-//!    `row_spectra` into contiguous lines (a blocked transpose), padded with
-//!    zeros to the FFT height, transformed, multiplied, transformed back; the
-//!    data rows of a block are stored as a row-major tile in `filtered`.
-//! 3. Rows again: each row is gathered from the tiles of pass 2 (the
-//!    blocked transpose back), goes through the complex-to-real FFT, and its
-//!    data columns are the output.
+//!    real-to-complex FFT, and its half-spectrum is cut into the tiles of
+//!    `tiles`: per block of a few adjacent spectrum columns, a row-major
+//!    tile of `rows x block` values.
+//! 2. Columns: the columns of each tile are gathered into contiguous lines
+//!    (a blocked transpose), padded with zeros to the FFT height,
+//!    transformed, multiplied, transformed back, and their data rows
+//!    written back into the tile, in place.
+//! 3. Rows again: each row is gathered from the tiles (the blocked
+//!    transpose back), goes through the complex-to-real FFT, and its data
+//!    columns are the output.
 //!
 //! Nothing of the padded grid is ever stored whole: the buffers hold the
-//! `rows x (width/2 + 1)` half-spectra of the data rows twice (32 bytes per
-//! cell of an unpadded grid with an even number of columns) and a few lines per
-//! thread. Each row and column is transformed by the same code whatever the
-//! number of threads, so results do not depend on it.
+//! `rows x (width/2 + 1)` half-spectra of the data rows once (16 bytes per
+//! cell of an unpadded grid with an even number of columns, twice that
+//! split across ranks, whose exchanges need their own) and a few lines per
+//! thread. Each row and column is transformed by the same code whatever
+//! the number of threads, so results do not depend on it.
 
 use std::sync::Arc;
 
@@ -45,11 +48,13 @@ pub(super) struct Convolution {
     row_inverse: Arc<dyn ComplexToReal<f64>>,
     column_forward: Arc<dyn Fft<f64>>,
     column_inverse: Arc<dyn Fft<f64>>,
-    /// Half-spectra of the data rows, `rows x half`, row-major.
+    /// Distributed only: half-spectra of this rank's data rows, `local x
+    /// half`, row-major (serial runs cut them into `tiles` directly).
     row_spectra: Vec<Complex<f64>>,
-    /// Filtered columns, data rows only: per block of `block` columns a
+    /// The half-spectra of the data rows (serial) or this rank's filtered
+    /// columns of every row (distributed): per block of `block` columns a
     /// row-major tile of `rows x block`.
-    filtered: Vec<Complex<f64>>,
+    tiles: Vec<Complex<f64>>,
     tasks: Vec<Scratch>,
     rows_per_task: usize,
     /// Spectrum columns per block and blocks per task.
@@ -107,12 +112,12 @@ fn fft_error(error: realfft::FftError) -> Error {
 }
 
 impl Convolution {
-    /// Bytes of the buffers for data of `rows` rows on an FFT grid of
-    /// `size`, besides the multipliers.
+    /// Bytes of the buffers of a serial convolution of data of `rows` rows
+    /// on an FFT grid of `size`, besides the multipliers.
     pub(super) fn memory(rows: usize, size: (usize, usize)) -> usize {
         let half = size.1 / 2 + 1;
         let tasks = task_count(size.0 * size.1);
-        2 * 16 * rows * half + tasks * (8 * size.1 + 16 * (BLOCK_BYTES / 16 + size.0))
+        16 * rows * half + tasks * (8 * size.1 + 16 * (BLOCK_BYTES / 16 + size.0))
     }
 
     /// Plans and buffers for `rows x columns` data on an FFT grid of `size`
@@ -168,8 +173,8 @@ impl Convolution {
             row_inverse,
             column_forward,
             column_inverse,
-            row_spectra: zeroed(local_rows * half)?,
-            filtered: zeroed(rows * width)?,
+            row_spectra: Vec::new(),
+            tiles: zeroed(rows * width)?,
             tasks: scratch,
             rows_per_task: local_rows.div_ceil(tasks),
             block,
@@ -218,26 +223,58 @@ impl Convolution {
         self.inverse_rows(output)
     }
 
-    /// Pass 1: real-to-complex transforms of the zero-padded data rows.
+    /// Pass 1: real-to-complex transforms of the zero-padded data rows,
+    /// into the tiles (serial) or `row_spectra` (distributed).
     fn forward_rows(&mut self, input: &[f64]) -> Result<()> {
-        let (columns, half) = (self.columns, self.size.1 / 2 + 1);
+        let (rows, columns, half) = (self.rows, self.columns, self.size.1 / 2 + 1);
         let per_task = self.rows_per_task;
         let fft = &self.row_forward;
-        let local = self.local_rows();
+        if self.split.is_some() {
+            let local = self.local_rows();
+            let tasks: Vec<_> = input
+                .chunks(per_task * columns)
+                .zip(self.row_spectra[..local * half].chunks_mut(per_task * half))
+                .zip(self.tasks.iter_mut())
+                .collect();
+            return run_tasks(tasks, |((input, spectra), scratch)| {
+                for (row, spectrum) in input
+                    .chunks_exact(columns)
+                    .zip(spectra.chunks_exact_mut(half))
+                {
+                    scratch.real[..columns].copy_from_slice(row);
+                    scratch.real[columns..].fill(0.0);
+                    fft.process_with_scratch(&mut scratch.real, spectrum, &mut scratch.fft)
+                        .map_err(fft_error)?;
+                }
+                Ok(())
+            });
+        }
+        // Each task's rows of every tile.
+        let mut pieces: Vec<Vec<&mut [Complex<f64>]>> =
+            (0..self.tasks.len()).map(|_| Vec::new()).collect();
+        for tile in self.tiles[..rows * half].chunks_mut(self.block * rows) {
+            let width = tile.len() / rows;
+            for (piece, task) in tile.chunks_mut(per_task * width).zip(pieces.iter_mut()) {
+                task.push(piece);
+            }
+        }
+        let block = self.block;
         let tasks: Vec<_> = input
             .chunks(per_task * columns)
-            .zip(self.row_spectra[..local * half].chunks_mut(per_task * half))
+            .zip(pieces)
             .zip(self.tasks.iter_mut())
             .collect();
-        run_tasks(tasks, |((input, spectra), scratch)| {
-            for (row, spectrum) in input
-                .chunks_exact(columns)
-                .zip(spectra.chunks_exact_mut(half))
-            {
+        run_tasks(tasks, |((input, mut pieces), scratch)| {
+            let spectrum = &mut scratch.lines[..half];
+            for (r, row) in input.chunks_exact(columns).enumerate() {
                 scratch.real[..columns].copy_from_slice(row);
                 scratch.real[columns..].fill(0.0);
                 fft.process_with_scratch(&mut scratch.real, spectrum, &mut scratch.fft)
                     .map_err(fft_error)?;
+                for (values, piece) in spectrum.chunks(block).zip(pieces.iter_mut()) {
+                    let width = values.len();
+                    piece[r * width..(r + 1) * width].copy_from_slice(values);
+                }
             }
             Ok(())
         })
@@ -248,13 +285,14 @@ impl Convolution {
         let (rows, n0) = (self.rows, self.size.0);
         let (block, per_task) = (self.block, self.blocks_per_task * self.block);
         let (forward, inverse) = (&self.column_forward, &self.column_inverse);
-        // The rows' spectra of the columns filtered here: row-major, of
-        // `stride` values per row.
-        let (source, stride): (&[Complex<f64>], usize) = match &self.split {
-            Some(split) => (&split.receive, split.width(split.rank())),
-            None => (&self.row_spectra, self.size.1 / 2 + 1),
+        // Distributed, the rows' spectra of the columns filtered here arrive
+        // row-major, of `stride` values per row; serial, they are in the
+        // tiles, filtered in place.
+        let (received, stride): (Option<&[Complex<f64>]>, usize) = match &self.split {
+            Some(split) => (Some(&split.receive), split.width(split.rank())),
+            None => (None, self.size.1 / 2 + 1),
         };
-        let tasks: Vec<_> = self.filtered[..rows * stride]
+        let tasks: Vec<_> = self.tiles[..rows * stride]
             .chunks_mut(per_task * rows)
             .zip(self.tasks.iter_mut())
             .enumerate()
@@ -267,7 +305,10 @@ impl Convolution {
                 let lines = &mut scratch.lines[..width * n0];
                 // Gather the block's columns (a blocked transpose).
                 for (w, line) in lines.chunks_exact_mut(n0).enumerate() {
-                    let column = source[j0 + w..].iter().step_by(stride);
+                    let column = match received {
+                        Some(source) => source[j0 + w..].iter().step_by(stride),
+                        None => tile[w..].iter().step_by(width),
+                    };
                     for (value, spectrum) in line[..rows].iter_mut().zip(column) {
                         *value = *spectrum;
                     }
@@ -309,7 +350,7 @@ impl Convolution {
         let per_task = self.rows_per_task;
         let block = self.block;
         let fft = &self.row_inverse;
-        let filtered = &self.filtered;
+        let filtered = &self.tiles;
         let split = self.split.as_ref();
         let local = self.local_rows();
         let tasks: Vec<_> = output[..local * columns]

@@ -82,7 +82,7 @@ impl std::fmt::Debug for ComplianceOperator {
 }
 
 /// Bytes of the compliance operator's buffers and a solver's per-cell
-/// vectors on `grid`: two complex half-spectra of the grid's rows, the
+/// vectors on `grid`: the complex half-spectra of the grid's rows, the
 /// kernel's spectrum (and the preconditioner's, built on first use), the
 /// influence coefficients, a few FFT lines per thread, and ten per-cell
 /// solver vectors.
@@ -98,7 +98,8 @@ pub fn memory_estimate(grid: &Grid, boundary: Boundary) -> usize {
 
 /// Bytes per rank of the compliance operator's buffers and a solver's
 /// per-cell vectors on `grid` split across `ranks` ranks: each rank's share
-/// of [`memory_estimate`], the two exchange buffers of its half-spectra,
+/// of [`memory_estimate`], its rows' half-spectra and the two exchange
+/// buffers,
 /// and on an isolated grid the whole kernel spectrum that every rank
 /// builds once (and the influence coefficients it is built from).
 pub fn distributed_memory_estimate(grid: &Grid, boundary: Boundary, ranks: usize) -> usize {
@@ -115,7 +116,7 @@ pub fn distributed_memory_estimate(grid: &Grid, boundary: Boundary, ranks: usize
     };
     memory_estimate(grid, boundary).div_ceil(ranks)
         + building
-        + 2 * 16 * grid.rows().div_ceil(ranks) * half
+        + 3 * 16 * grid.rows().div_ceil(ranks) * half
 }
 
 /// The FFT grid: twice the grid each way when isolated (zero padding), the
