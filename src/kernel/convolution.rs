@@ -37,6 +37,40 @@ use exchange::Split;
 /// the second-level cache).
 const BLOCK_BYTES: usize = 1 << 18;
 
+/// Complex values of padding after each tile (a cache line): tiles of a
+/// power-of-two size would otherwise put the pieces of one row, a tile
+/// apart, in the same cache sets, and the row passes would evict their own
+/// lines (measured: a quarter of a periodic 1024^2 round trip).
+const TILE_PAD: usize = 4;
+
+/// The tiles of `buffer`: per block of `block` of the `width` spectrum
+/// columns, a row-major `rows x block` tile (the last one narrower), each
+/// followed by [`TILE_PAD`] values of padding.
+fn tiles_mut(
+    buffer: &mut [Complex<f64>],
+    rows: usize,
+    block: usize,
+    width: usize,
+) -> impl Iterator<Item = &mut [Complex<f64>]> {
+    buffer
+        .chunks_mut(block * rows + TILE_PAD)
+        .zip((0..width).step_by(block.max(1)))
+        .map(move |(tile, j0)| &mut tile[..block.min(width - j0) * rows])
+}
+
+/// As [`tiles_mut`], read-only.
+fn tiles(
+    buffer: &[Complex<f64>],
+    rows: usize,
+    block: usize,
+    width: usize,
+) -> impl Iterator<Item = &[Complex<f64>]> {
+    buffer
+        .chunks(block * rows + TILE_PAD)
+        .zip((0..width).step_by(block.max(1)))
+        .map(move |(tile, j0)| &tile[..block.min(width - j0) * rows])
+}
+
 /// Plans and scratch of one convolution geometry.
 pub(super) struct Convolution {
     /// Data rows and columns (the grid).
@@ -174,7 +208,7 @@ impl Convolution {
             column_forward,
             column_inverse,
             row_spectra: Vec::new(),
-            tiles: zeroed(rows * width)?,
+            tiles: zeroed(rows * width + blocks * TILE_PAD)?,
             tasks: scratch,
             rows_per_task: local_rows.div_ceil(tasks),
             block,
@@ -216,7 +250,24 @@ impl Convolution {
         output: &mut [f64],
         multiplier: &[f64],
     ) -> Result<()> {
-        self.forward_rows(input)?;
+        let columns = self.columns;
+        self.apply_loaded(
+            |i, line| line.copy_from_slice(&input[i * columns..(i + 1) * columns]),
+            output,
+            multiplier,
+        )
+    }
+
+    /// As [`Convolution::apply`], the input's data row `i` (of this rank)
+    /// written into `line` by `load(i, line)` instead of read from a grid:
+    /// a gather from elsewhere needs no buffer of its own.
+    pub(super) fn apply_loaded(
+        &mut self,
+        load: impl Fn(usize, &mut [f64]) + Sync,
+        output: &mut [f64],
+        multiplier: &[f64],
+    ) -> Result<()> {
+        self.forward_rows(load)?;
         self.exchange_to_columns()?;
         self.filter_columns(multiplier)?;
         self.exchange_to_rows()?;
@@ -225,23 +276,23 @@ impl Convolution {
 
     /// Pass 1: real-to-complex transforms of the zero-padded data rows,
     /// into the tiles (serial) or `row_spectra` (distributed).
-    fn forward_rows(&mut self, input: &[f64]) -> Result<()> {
+    fn forward_rows(&mut self, load: impl Fn(usize, &mut [f64]) + Sync) -> Result<()> {
         let (rows, columns, half) = (self.rows, self.columns, self.size.1 / 2 + 1);
         let per_task = self.rows_per_task;
         let fft = &self.row_forward;
+        let local = self.local_rows();
+        // The data rows of each task.
+        let bands = (0..local)
+            .step_by(per_task.max(1))
+            .map(|i| i..(i + per_task).min(local));
         if self.split.is_some() {
-            let local = self.local_rows();
-            let tasks: Vec<_> = input
-                .chunks(per_task * columns)
+            let tasks: Vec<_> = bands
                 .zip(self.row_spectra[..local * half].chunks_mut(per_task * half))
                 .zip(self.tasks.iter_mut())
                 .collect();
-            return run_tasks(tasks, |((input, spectra), scratch)| {
-                for (row, spectrum) in input
-                    .chunks_exact(columns)
-                    .zip(spectra.chunks_exact_mut(half))
-                {
-                    scratch.real[..columns].copy_from_slice(row);
+            return run_tasks(tasks, |((band, spectra), scratch)| {
+                for (i, spectrum) in band.zip(spectra.chunks_exact_mut(half)) {
+                    load(i, &mut scratch.real[..columns]);
                     scratch.real[columns..].fill(0.0);
                     fft.process_with_scratch(&mut scratch.real, spectrum, &mut scratch.fft)
                         .map_err(fft_error)?;
@@ -252,22 +303,18 @@ impl Convolution {
         // Each task's rows of every tile.
         let mut pieces: Vec<Vec<&mut [Complex<f64>]>> =
             (0..self.tasks.len()).map(|_| Vec::new()).collect();
-        for tile in self.tiles[..rows * half].chunks_mut(self.block * rows) {
+        for tile in tiles_mut(&mut self.tiles, rows, self.block, half) {
             let width = tile.len() / rows;
             for (piece, task) in tile.chunks_mut(per_task * width).zip(pieces.iter_mut()) {
                 task.push(piece);
             }
         }
         let block = self.block;
-        let tasks: Vec<_> = input
-            .chunks(per_task * columns)
-            .zip(pieces)
-            .zip(self.tasks.iter_mut())
-            .collect();
-        run_tasks(tasks, |((input, mut pieces), scratch)| {
+        let tasks: Vec<_> = bands.zip(pieces).zip(self.tasks.iter_mut()).collect();
+        run_tasks(tasks, |((band, mut pieces), scratch)| {
             let spectrum = &mut scratch.lines[..half];
-            for (r, row) in input.chunks_exact(columns).enumerate() {
-                scratch.real[..columns].copy_from_slice(row);
+            for (r, i) in band.enumerate() {
+                load(i, &mut scratch.real[..columns]);
                 scratch.real[columns..].fill(0.0);
                 fft.process_with_scratch(&mut scratch.real, spectrum, &mut scratch.fft)
                     .map_err(fft_error)?;
@@ -292,14 +339,21 @@ impl Convolution {
             Some(split) => (Some(&split.receive), split.width(split.rank())),
             None => (None, self.size.1 / 2 + 1),
         };
-        let tasks: Vec<_> = self.tiles[..rows * stride]
-            .chunks_mut(per_task * rows)
+        // Each task's tiles.
+        let mut groups = Vec::with_capacity(self.tasks.len());
+        let mut rest: Vec<_> = tiles_mut(&mut self.tiles, rows, block, stride).collect();
+        while !rest.is_empty() {
+            let tail = rest.split_off(self.blocks_per_task.min(rest.len()));
+            groups.push(std::mem::replace(&mut rest, tail));
+        }
+        let tasks: Vec<_> = groups
+            .into_iter()
             .zip(self.tasks.iter_mut())
             .enumerate()
             .collect();
-        run_tasks(tasks, |(task, (filtered, scratch))| {
+        run_tasks(tasks, |(task, (group, scratch))| {
             let first = task * per_task;
-            for (b, tile) in filtered.chunks_mut(block * rows).enumerate() {
+            for (b, tile) in group.into_iter().enumerate() {
                 let j0 = first + b * block;
                 let width = tile.len() / rows;
                 let lines = &mut scratch.lines[..width * n0];
@@ -376,8 +430,9 @@ impl Convolution {
                     }
                     // Gather the row from the tiles of pass 2.
                     None => {
-                        for (j0, tile) in
-                            (0..half).step_by(block).zip(filtered.chunks(block * rows))
+                        for (j0, tile) in (0..half)
+                            .step_by(block)
+                            .zip(tiles(filtered, rows, block, half))
                         {
                             let width = tile.len() / rows;
                             spectrum[j0..j0 + width]

@@ -18,7 +18,7 @@ use crate::slab::{agree, even_starts, lengths, Slab};
 use super::convolution::{multiplier, wavenumber, zeroed, Convolution};
 use super::fourier::FourierCompliance;
 use super::operator::cell_filter;
-use crate::parallel::{for_each_row, map_rows};
+use crate::parallel::map_rows;
 
 /// The approximate inverse on a box of a fixed size (plans, multiplier and
 /// box buffers), placed anywhere on a grid at each application.
@@ -26,7 +26,6 @@ pub(crate) struct BoxInverse {
     size: (usize, usize),
     multiplier: Vec<f64>,
     convolution: Convolution,
-    input: Vec<f64>,
     output: Vec<f64>,
     /// Distributed: the split of the grid's rows across the ranks.
     slab: Option<Slab>,
@@ -78,7 +77,6 @@ impl BoxInverse {
             size,
             multiplier,
             convolution,
-            input: zeroed(local * m1)?,
             output: zeroed(local * m1)?,
             slab: slab.cloned(),
         })
@@ -89,13 +87,14 @@ impl BoxInverse {
         self.size
     }
 
-    /// `result = P M^-1 P residual` on a row-major grid of `columns` columns
-    /// and `residual.len() / columns` rows, `P` the restriction to the cells
-    /// where `member` holds, with the box's first cell at grid cell
-    /// `origin` (rows and columns, possibly negative: box cells off the grid
-    /// are zero). Only members in the box are written: the box must hold
-    /// every member. Returns `(sum result, sum result * residual)` over the
-    /// members, added row by row in order (the same whatever the threads).
+    /// `result = P M^-1 P (residual - shift)` on a row-major grid of
+    /// `columns` columns and `residual.len() / columns` rows, `P` the
+    /// restriction to the cells where `member` holds, with the box's first
+    /// cell at grid cell `origin` (rows and columns, possibly negative: box
+    /// cells off the grid are zero). Only members in the box are written:
+    /// the box must hold every member. Returns `(sum result, sum result *
+    /// (residual - shift))` over the members, added row by row in order
+    /// (the same whatever the threads).
     ///
     /// # Errors
     /// As the FFT ([`Error::Internal`](crate::Error::Internal), a bug).
@@ -105,6 +104,7 @@ impl BoxInverse {
         origin: (isize, isize),
         member: &[bool],
         residual: &[f64],
+        shift: f64,
         result: &mut [f64],
     ) -> Result<(f64, f64)> {
         let (m0, m1) = self.size;
@@ -127,7 +127,8 @@ impl BoxInverse {
                 .filter(|i| grid.contains(i))
                 .map(|i| i - grid.start)
         };
-        for_each_row(&mut self.input[..boxed.len() * m1], m1, |b, line| {
+        // The box rows are gathered as the convolution reads them.
+        let load = |b: usize, line: &mut [f64]| {
             line.fill(0.0);
             if let Some(i) = grid_row(b) {
                 let cells = i * columns + column(first)..i * columns + column(last);
@@ -136,12 +137,14 @@ impl BoxInverse {
                     .zip(&member[cells.clone()])
                     .zip(&residual[cells])
                 {
-                    *value = if m { r } else { 0.0 };
+                    if m {
+                        *value = r - shift;
+                    }
                 }
             }
-        });
+        };
         self.convolution
-            .apply(&self.input, &mut self.output, &self.multiplier)?;
+            .apply_loaded(load, &mut self.output, &self.multiplier)?;
         // Local grid rows under the box.
         let local = grid.len();
         let top = usize::try_from(origin.0 - grid.start as isize)
@@ -168,7 +171,7 @@ impl BoxInverse {
                     if m {
                         *out = z;
                         sums.0 += z;
-                        sums.1 += z * r;
+                        sums.1 += z * (r - shift);
                     }
                 }
                 sums
@@ -213,8 +216,7 @@ impl BoxInverse {
         let grid = slab.rows();
         self.convolution.set_row_counts(counts)?;
         let needed = boxed.len() * self.size.1;
-        if self.input.len() < needed {
-            self.input = zeroed(needed)?;
+        if self.output.len() < needed {
             self.output = zeroed(needed)?;
         }
         Ok((grid, boxed))

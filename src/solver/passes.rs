@@ -140,18 +140,6 @@ pub(super) fn gaps_and_working_set(
         })
 }
 
-/// `values -= shift` on the working set.
-pub(super) fn shift_on(working: &[bool], values: &mut [f64], shift: f64) {
-    let pass = |(k, values): (usize, &mut [f64])| {
-        for (i, v) in values.iter_mut().enumerate() {
-            if working[k * CHUNK + i] {
-                *v -= shift;
-            }
-        }
-    };
-    chunks_mut!(values).enumerate().for_each(pass);
-}
-
 /// `(sum a, sum a b)` over the working set.
 pub(super) fn sum_and_dot(working: &[bool], a: &[f64], b: &[f64]) -> (f64, f64) {
     map_chunks(a.len(), |r| {
@@ -162,14 +150,15 @@ pub(super) fn sum_and_dot(working: &[bool], a: &[f64], b: &[f64]) -> (f64, f64) 
     .fold((0.0, 0.0), |(s, d), (x, y)| (s + x, d + y))
 }
 
-/// `(sum a t, sum b t)` over the working set.
-pub(super) fn two_dots(working: &[bool], a: &[f64], b: &[f64], t: &[f64]) -> (f64, f64) {
+/// `[sum a t, sum b t, sum t]` over the working set.
+pub(super) fn two_dots(working: &[bool], a: &[f64], b: &[f64], t: &[f64]) -> [f64; 3] {
     map_chunks(t.len(), |r| {
-        r.filter(|&c| working[c])
-            .fold((0.0, 0.0), |(x, y), c| (x + a[c] * t[c], y + b[c] * t[c]))
+        r.filter(|&c| working[c]).fold([0.0; 3], |[x, y, z], c| {
+            [x + a[c] * t[c], y + b[c] * t[c], z + t[c]]
+        })
     })
     .into_iter()
-    .fold((0.0, 0.0), |(x, y), (a, b)| (x + a, y + b))
+    .fold([0.0; 3], |[x, y, z], [a, b, c]| [x + a, y + b, z + c])
 }
 
 /// `direction = z - shift + beta direction` on the working set, 0 elsewhere.
@@ -309,39 +298,70 @@ pub(super) fn scale(values: &mut [f64], factor: f64) {
     chunks_mut!(values).for_each(|chunk| chunk.iter_mut().for_each(|v| *v *= factor));
 }
 
-/// Scales `pressure` and `displacement` by `factor`; returns `(sum |p -
-/// previous|, sum p)` of the scaled pressure. The pressures only on
-/// `cells`, which must hold every pressure.
+/// What [`rescale`] found: the pressure's change and size, and the sum of
+/// `profile + u` over the cells with pressure (the depth under force
+/// control is its mean), with their count; as `f64` to be summed over the
+/// ranks in one exchange.
+pub(super) type Rescaled = [f64; 4];
+
+/// `u = factor (u + add)` (`add` 0 if `None`: the response to a clamping
+/// correction not yet added) and `p *= factor`; returns `[sum |p -
+/// previous|, sum p, sum over p > 0 of profile + u, count of p > 0]` of the
+/// result. The pressures only on `cells`, which must hold every pressure.
+/// One pass instead of three (the correction's `axpy`, the scaling, and the
+/// next iteration's contact sum).
 pub(super) fn rescale(
     cells: Range<usize>,
     pressure: &mut [f64],
     displacement: &mut [f64],
+    add: Option<&[f64]>,
     previous: &[f64],
+    profile: &[f64],
     factor: f64,
-) -> (f64, f64) {
+) -> Rescaled {
     let (lo, hi) = (cells.start, cells.end);
     for outside in [0..lo, hi..displacement.len()] {
-        scale(&mut displacement[outside], factor);
+        match add {
+            Some(add) => {
+                let add = &add[outside.clone()];
+                let pass = |(k, values): (usize, &mut [f64])| {
+                    for (i, v) in values.iter_mut().enumerate() {
+                        *v = factor * (*v + add[k * CHUNK + i]);
+                    }
+                };
+                chunks_mut!(displacement[outside])
+                    .enumerate()
+                    .for_each(pass);
+            }
+            None => scale(&mut displacement[outside], factor),
+        }
     }
     // From here on, indices count from the first cell of `cells`.
     let (pressure, previous) = (&mut pressure[cells.clone()], &previous[cells.clone()]);
+    let (profile, add) = (&profile[cells.clone()], add.map(|a| &a[cells.clone()]));
     let displacement = &mut displacement[cells];
     let pass = |(k, (p, u)): (usize, (&mut [f64], &mut [f64]))| {
-        let (mut change, mut size) = (0.0, 0.0);
+        let mut sums = [0.0; 4];
         for i in 0..p.len() {
+            let c = k * CHUNK + i;
             p[i] *= factor;
-            u[i] *= factor;
-            change += (p[i] - previous[k * CHUNK + i]).abs();
-            size += p[i];
+            u[i] = factor * (u[i] + add.map_or(0.0, |a| a[c]));
+            sums[0] += (p[i] - previous[c]).abs();
+            sums[1] += p[i];
+            if p[i] > 0.0 {
+                // In the order of `contact_sum`.
+                sums[2] = sums[2] + profile[c] + u[i];
+                sums[3] += 1.0;
+            }
         }
-        (change, size)
+        sums
     };
-    let parts: Vec<(f64, f64)> = chunks_mut!(pressure)
+    let parts: Vec<Rescaled> = chunks_mut!(pressure)
         .zip(chunks_mut!(displacement))
         .enumerate()
         .map(pass)
         .collect();
-    parts
-        .into_iter()
-        .fold((0.0, 0.0), |(a, b), (c, d)| (a + c, b + d))
+    parts.into_iter().fold([0.0; 4], |a, b| {
+        [a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]]
+    })
 }

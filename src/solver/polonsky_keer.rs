@@ -175,6 +175,10 @@ impl ContactSolver {
         // set run on its rows.
         let mut pressure_cells = 0..n;
         let mut direction_cells: Option<Range<usize>> = None;
+        // Under force control, the sum of profile + u over the contact and
+        // its cell count, summed over the ranks, as the last rescale found
+        // them (`None`: to be summed anew).
+        let mut contact_sums: Option<(f64, f64)> = None;
         // u = K p is kept up to date incrementally: one operator application
         // per iteration (K t), plus one only when clamping changed the
         // pressure off the search direction, and a full refresh every
@@ -186,22 +190,28 @@ impl ContactSolver {
             if iteration % REFRESH == 0 {
                 self.operator
                     .apply(&pressure, &mut self.workspace.displacement)?;
+                contact_sums = None;
             }
             // The depth under force control: the mean of profile + u over
             // the contact.
             let reference = match control {
                 Control::Depth(d) => d,
                 Control::Force(_) => {
-                    let ws = &self.workspace;
-                    let cells = pressure_cells.clone();
-                    let (sum, contact) = passes::contact_sum(
-                        &ws.profile[cells.clone()],
-                        &ws.displacement[cells.clone()],
-                        &pressure[cells],
-                    );
-                    let mut totals = [sum, contact as f64];
-                    self.sum_over_ranks(&mut totals);
-                    let (sum, contact) = (totals[0], totals[1] as usize);
+                    let (sum, contact) = match contact_sums.take() {
+                        Some((sum, contact)) => (sum, contact as usize),
+                        None => {
+                            let ws = &self.workspace;
+                            let cells = pressure_cells.clone();
+                            let (sum, contact) = passes::contact_sum(
+                                &ws.profile[cells.clone()],
+                                &ws.displacement[cells.clone()],
+                                &pressure[cells],
+                            );
+                            let mut totals = [sum, contact as f64];
+                            self.sum_over_ranks(&mut totals);
+                            (totals[0], totals[1] as usize)
+                        }
+                    };
                     if contact == 0 {
                         return Err(Error::Internal {
                             what: "constrained conjugate gradients",
@@ -228,7 +238,6 @@ impl ContactSolver {
                 &mut ws.working,
             );
             let set = self.whole_working_set(set);
-            let ws = &mut self.workspace;
             if set.members == 0 {
                 // No pressure and no overlap (depth control only: under
                 // force control some cell always carries pressure): zero
@@ -242,16 +251,18 @@ impl ContactSolver {
                 let row = |r: usize| r.clamp(local.start, local.end) - local.start;
                 row(first) * columns..row(last + 1) * columns
             });
-            if force_control {
-                // The gradient projected on loads of zero net force.
-                let cells = working_cells.clone();
-                let shift = set.gap_sum / set.members as f64;
-                passes::shift_on(&ws.working[cells.clone()], &mut ws.gap[cells], shift);
-            }
-            // z = P M^-1 P r in `response`; under force control projected
-            // too (its mean taken out of the direction; the product r.z is
-            // unchanged as r has zero sum).
-            let (z_sum, rz) = self.precondition_working_set(set.bounds)?;
+            // Under force control the gradient is projected on loads of
+            // zero net force: the gaps' mean over the set is taken out
+            // (where they are read, not in a pass of its own).
+            let shift = if force_control {
+                set.gap_sum / set.members as f64
+            } else {
+                0.0
+            };
+            // z = P M^-1 P r in `response`, r = gap - shift; under force
+            // control projected too (its mean taken out of the direction;
+            // the product r.z is unchanged as r has zero sum).
+            let (z_sum, rz) = self.precondition_working_set(set.bounds, shift)?;
             let mut sums = [z_sum, rz];
             self.sum_over_ranks(&mut sums);
             let [z_sum, rz] = sums;
@@ -279,14 +290,15 @@ impl ContactSolver {
             let mut beta = if rz_old <= 0.0 { 0.0 } else { rz / rz_old };
             if set.overlap && beta > 0.0 {
                 let cells = working_cells.clone();
-                let (_, along) = passes::sum_and_dot(
+                let (t_sum, along) = passes::sum_and_dot(
                     &ws.working[cells.clone()],
                     &ws.direction[cells.clone()],
                     &ws.gap[cells],
                 );
-                let mut along = [along];
-                self.sum_over_ranks(&mut along);
-                if rz + beta * along[0] <= 0.0 {
+                let mut sums = [t_sum, along];
+                self.sum_over_ranks(&mut sums);
+                let along = sums[1] - shift * sums[0];
+                if rz + beta * along <= 0.0 {
                     beta = 0.0;
                 }
             }
@@ -307,15 +319,15 @@ impl ContactSolver {
             direction_cells = Some(working_cells.clone());
             self.operator.apply(&ws.direction, &mut ws.response)?;
             let cells = working_cells.clone();
-            let (numerator, denominator) = passes::two_dots(
+            let mut dots = passes::two_dots(
                 &ws.working[cells.clone()],
                 &ws.gap[cells.clone()],
                 &ws.response[cells.clone()],
                 &ws.direction[cells],
             );
-            let mut dots = [numerator, denominator];
             self.sum_over_ranks(&mut dots);
-            let [numerator, denominator] = dots;
+            let [gap_dot, denominator, t_sum] = dots;
+            let numerator = gap_dot - shift * t_sum;
             let ws = &mut self.workspace;
             let step = if denominator > 0.0 {
                 numerator / denominator
@@ -346,6 +358,10 @@ impl ContactSolver {
             let ws = &mut self.workspace;
             // Pressures are now zero off the working set.
             pressure_cells = working_cells.clone();
+            // Under force control the pressure is rescaled to the load
+            // below, in the same pass as the correction's response is added.
+            let rescaled = force_control && area * stats.size > 0.0;
+            let mut correction_pending = false;
             if stats.corrected > 0 {
                 match self.operator.influence() {
                     // A few clamped cells: their displacements by direct
@@ -357,23 +373,29 @@ impl ContactSolver {
                     }
                     _ => {
                         self.operator.apply(&ws.gap, &mut ws.response)?;
-                        passes::axpy(&mut ws.displacement, 1.0, &ws.response);
+                        if rescaled {
+                            correction_pending = true;
+                        } else {
+                            passes::axpy(&mut ws.displacement, 1.0, &ws.response);
+                        }
                     }
                 }
             }
             if let Control::Force(w) = control {
                 let total = area * stats.size;
-                if total > 0.0 {
-                    let mut sums: [f64; 2] = passes::rescale(
+                if rescaled {
+                    let mut sums = passes::rescale(
                         working_cells.clone(),
                         &mut pressure,
                         &mut ws.displacement,
+                        correction_pending.then_some(&ws.response[..]),
                         &ws.previous,
+                        &ws.profile,
                         w / total,
-                    )
-                    .into();
+                    );
                     self.sum_over_ranks(&mut sums);
-                    [stats.change, stats.size] = sums;
+                    [stats.change, stats.size] = [sums[0], sums[1]];
+                    contact_sums = Some((sums[2], sums[3]));
                 } else {
                     // Every pressure clamped: restart uniform on the
                     // working set.

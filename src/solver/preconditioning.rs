@@ -10,26 +10,30 @@ use super::passes::{self, Bounds};
 use super::ContactSolver;
 
 impl ContactSolver {
-    /// `response = P M^-1 P gap` on the working set (`gap` itself without
-    /// preconditioning), `M^-1` the compliance's inverse on a periodic box
+    /// `response = P M^-1 P (gap - shift)` on the working set (`gap -
+    /// shift` itself without preconditioning), `M^-1` the compliance's inverse on a periodic box
     /// around the working set ([`BoxInverse`]; the whole grid when
     /// periodic), of even sides whose halves have no prime factor above 7.
     /// The box is rebuilt only when the set outgrows it or needs less than
     /// 2/3 of its area (a rebuild costs about three applications; a box
     /// left 2.25 times too large, as before, doubled the preconditioner's
-    /// share of an iteration). Returns `(sum z, sum z gap)` over the working set; `bounds`
-    /// is the working set's bounding box (from the gap pass).
+    /// share of an iteration). Returns `(sum z, sum z (gap - shift))` over
+    /// the working set; `bounds` is the working set's bounding box (from
+    /// the gap pass).
     pub(super) fn precondition_working_set(
         &mut self,
         bounds: Option<Bounds>,
+        shift: f64,
     ) -> Result<(f64, f64)> {
         let grid = *self.grid();
         let (rows, columns) = (grid.rows(), grid.columns());
         let periodic = self.operator.boundary() == Boundary::Periodic;
         let ws = &mut self.workspace;
         if !self.params.precondition {
-            ws.response.copy_from_slice(&ws.gap);
-            return Ok(passes::sum_and_dot(&ws.working, &ws.response, &ws.gap));
+            for (z, g) in ws.response.iter_mut().zip(&ws.gap) {
+                *z = g - shift;
+            }
+            return Ok(passes::sum_and_dot(&ws.working, &ws.response, &ws.response));
         }
         let Some(bounds) = bounds else {
             ws.response.fill(0.0);
@@ -76,6 +80,13 @@ impl ContactSolver {
             }
         };
         let origin = (start(bounds.0, m0), start(bounds.1, m1));
-        inverse.apply(columns, origin, &ws.working, &ws.gap, &mut ws.response)
+        inverse.apply(
+            columns,
+            origin,
+            &ws.working,
+            &ws.gap,
+            shift,
+            &mut ws.response,
+        )
     }
 }

@@ -153,7 +153,7 @@ impl Convolution {
         let width = split.width(rank);
         let mut at = 0;
         for i in 0..rows {
-            for tile in self.tiles[..rows * width].chunks(block * rows) {
+            for tile in super::tiles(&self.tiles, rows, block, width) {
                 let w = tile.len() / rows;
                 split.send[at..at + w].copy_from_slice(&tile[i * w..(i + 1) * w]);
                 at += w;
