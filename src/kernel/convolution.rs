@@ -89,6 +89,9 @@ pub(super) struct Convolution {
     /// columns of every row (distributed): per block of `block` columns a
     /// row-major tile of `rows x block`.
     tiles: Vec<Complex<f64>>,
+    /// The length `tiles` needs (it may be released or lent between
+    /// applications, and is allocated again when needed).
+    tiles_len: usize,
     tasks: Vec<Scratch>,
     rows_per_task: usize,
     /// Spectrum columns per block and blocks per task.
@@ -208,13 +211,30 @@ impl Convolution {
             column_forward,
             column_inverse,
             row_spectra: Vec::new(),
-            tiles: zeroed(rows * width + blocks * TILE_PAD)?,
+            // Allocated by the first application.
+            tiles: Vec::new(),
+            tiles_len: rows * width + blocks * TILE_PAD,
             tasks: scratch,
             rows_per_task: local_rows.div_ceil(tasks),
             block,
             blocks_per_task: blocks.div_ceil(tasks),
             split,
         })
+    }
+
+    /// Takes the largest buffer (the tiles of the half-spectra) out, to
+    /// free it or lend it to another convolution that is not applied at
+    /// the same time ([`Convolution::lend_tiles`]); the next application
+    /// without it allocates one.
+    pub(super) fn take_tiles(&mut self) -> Vec<Complex<f64>> {
+        std::mem::take(&mut self.tiles)
+    }
+
+    /// Gives this convolution `tiles` as its buffer (taken from another
+    /// with [`Convolution::take_tiles`]; used if large enough), and returns
+    /// its own.
+    pub(super) fn lend_tiles(&mut self, tiles: Vec<Complex<f64>>) -> Vec<Complex<f64>> {
+        std::mem::replace(&mut self.tiles, tiles)
     }
 
     /// This process's data rows.
@@ -267,6 +287,12 @@ impl Convolution {
         output: &mut [f64],
         multiplier: &[f64],
     ) -> Result<()> {
+        if self.tiles.len() < self.tiles_len {
+            // Released or lent away: every value is written before it is
+            // read, so the new buffer needs no particular content.
+            self.tiles = Vec::new();
+            self.tiles = zeroed(self.tiles_len)?;
+        }
         self.forward_rows(load)?;
         self.exchange_to_columns()?;
         self.filter_columns(multiplier)?;

@@ -17,7 +17,7 @@ use crate::slab::{agree, even_starts, lengths, Slab};
 
 use super::convolution::{multiplier, wavenumber, zeroed, Convolution};
 use super::fourier::FourierCompliance;
-use super::operator::cell_filter;
+use super::operator::{cell_filter, ShareBuffer};
 use crate::parallel::map_rows;
 
 /// The approximate inverse on a box of a fixed size (plans, multiplier and
@@ -63,13 +63,13 @@ impl BoxInverse {
                 0.5 * surface_modulus * q
             }
         };
-        let (convolution, local) = match slab {
-            None => (Convolution::new(m0, m1, size)?, m0),
+        let convolution = match slab {
+            None => Convolution::new(m0, m1, size)?,
             Some(slab) => {
                 // Until the box is placed its rows are split evenly (its
                 // buffers then grow to what the placements need).
                 let counts = lengths(&even_starts(m0, slab.exchange.ranks()));
-                (Convolution::distributed(m0, m1, size, slab, counts)?, 0)
+                Convolution::distributed(m0, m1, size, slab, counts)?
             }
         };
         let multiplier = multiplier(size, delta, convolution.own_columns(), stiffness)?;
@@ -77,9 +77,34 @@ impl BoxInverse {
             size,
             multiplier,
             convolution,
-            output: zeroed(local * m1)?,
+            output: Vec::new(),
             slab: slab.cloned(),
         })
+    }
+
+    /// As [`BoxInverse::apply_with`], the FFT working in `buffer` (the compliance
+    /// operator's, lent: one buffer of the grid's half-spectra serves both)
+    /// and the box's values in `spare` if long enough (a per-cell vector of
+    /// the solver's that is idle meanwhile): the box then holds no per-cell
+    /// buffer of its own.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn apply_in(
+        &mut self,
+        buffer: &mut ShareBuffer,
+        spare: &mut [f64],
+        columns: usize,
+        origin: (isize, isize),
+        member: &[bool],
+        residual: &[f64],
+        shift: f64,
+        result: &mut [f64],
+    ) -> Result<(f64, f64)> {
+        let own = self.convolution.lend_tiles(std::mem::take(&mut buffer.0));
+        let sums = self.apply_with(spare, columns, origin, member, residual, shift, result);
+        // Its own buffer (empty unless the lent one was too small) is dropped.
+        buffer.0 = self.convolution.lend_tiles(Vec::new());
+        drop(own);
+        sums
     }
 
     /// The box size (rows, columns).
@@ -96,10 +121,16 @@ impl BoxInverse {
     /// (residual - shift))` over the members, added row by row in order
     /// (the same whatever the threads).
     ///
+    /// The box's values are kept in `spare` if it is long enough (a
+    /// vector of the solver's that is idle meanwhile), else in a buffer of
+    /// the box's own.
+    ///
     /// # Errors
     /// As the FFT ([`Error::Internal`](crate::Error::Internal), a bug).
-    pub(crate) fn apply(
+    #[allow(clippy::too_many_arguments)]
+    fn apply_with(
         &mut self,
+        spare: &mut [f64],
         columns: usize,
         origin: (isize, isize),
         member: &[bool],
@@ -109,10 +140,26 @@ impl BoxInverse {
     ) -> Result<(f64, f64)> {
         let (m0, m1) = self.size;
         // This rank's grid rows `grid.start..` and box rows `boxed`
-        // (serial: all of either).
-        let placed = self.place(origin.0, residual.len() / columns.max(1));
+        // (serial: all of either), and whether `spare` holds the box's rows.
+        let placed = self
+            .place(origin.0, residual.len() / columns.max(1))
+            .and_then(|(grid, boxed)| {
+                let needed = boxed.len() * m1;
+                let lent = spare.len() >= needed;
+                if !lent && self.output.len() < needed {
+                    self.output = Vec::new();
+                    self.output = zeroed(needed)?;
+                }
+                Ok((grid, boxed, lent))
+            });
         // Distributed, a rank whose buffers could not grow stops every rank.
-        let (grid, boxed) = agree(self.slab.as_ref(), placed)?;
+        let (grid, boxed, lent) = agree(self.slab.as_ref(), placed)?;
+        let needed = boxed.len() * m1;
+        let output: &mut [f64] = if lent {
+            &mut spare[..needed]
+        } else {
+            &mut self.output[..needed]
+        };
         // The box columns on the grid, `first..last`, and the grid column
         // of the first.
         let first = usize::try_from(-origin.1).unwrap_or(0).min(m1);
@@ -144,7 +191,7 @@ impl BoxInverse {
             }
         };
         self.convolution
-            .apply_loaded(load, &mut self.output, &self.multiplier)?;
+            .apply_loaded(load, output, &self.multiplier)?;
         // Local grid rows under the box.
         let local = grid.len();
         let top = usize::try_from(origin.0 - grid.start as isize)
@@ -153,7 +200,7 @@ impl BoxInverse {
         let bottom = usize::try_from(origin.0 + m0 as isize - grid.start as isize)
             .unwrap_or(0)
             .clamp(top, local);
-        let output = &self.output;
+        let output = &*output;
         let sums = map_rows(
             &mut result[top * columns..bottom * columns],
             columns,
@@ -215,10 +262,6 @@ impl BoxInverse {
         let boxed = before(rank)..before(rank + 1);
         let grid = slab.rows();
         self.convolution.set_row_counts(counts)?;
-        let needed = boxed.len() * self.size.1;
-        if self.output.len() < needed {
-            self.output = zeroed(needed)?;
-        }
         Ok((grid, boxed))
     }
 }

@@ -81,6 +81,10 @@ impl std::fmt::Debug for ComplianceOperator {
     }
 }
 
+/// A compliance operator's FFT buffer, lent to another convolution
+/// ([`ComplianceOperator::lend_buffer`]).
+pub(crate) struct ShareBuffer(pub(super) Vec<num_complex::Complex<f64>>);
+
 /// Bytes of the compliance operator's buffers and a solver's per-cell
 /// vectors on `grid`: the complex half-spectra of the grid's rows, the
 /// kernel's spectrum (and the preconditioner's, built on first use), the
@@ -447,6 +451,23 @@ impl ComplianceOperator {
         let spectrum = std::mem::take(&mut self.spectrum);
         let result = self.convolve(pressure, displacement, &spectrum);
         self.spectrum = spectrum;
+        result
+    }
+
+    /// Frees the largest buffer (the half-spectra of the FFT) until the
+    /// next application, which allocates it again: for a solver kept idle,
+    /// such as the coarse levels of a multi-resolution start while the
+    /// finer solve runs.
+    pub(crate) fn release_buffer(&mut self) {
+        drop(self.convolution.take_tiles());
+    }
+
+    /// Lends the largest buffer to `f` (the preconditioner's FFT, which
+    /// is never applied at the same time), and takes it back.
+    pub(crate) fn lend_buffer<T>(&mut self, f: impl FnOnce(&mut ShareBuffer) -> T) -> T {
+        let mut shared = ShareBuffer(self.convolution.take_tiles());
+        let result = f(&mut shared);
+        self.convolution.lend_tiles(shared.0);
         result
     }
 

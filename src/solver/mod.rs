@@ -62,6 +62,7 @@ mod passes;
 mod polonsky_keer;
 mod preconditioning;
 mod split;
+mod workspace;
 
 use ndarray::Array2;
 
@@ -70,6 +71,8 @@ use crate::grid::{Boundary, Grid};
 use crate::indenter::Indenter;
 use crate::kernel::{BoxInverse, ComplianceOperator, FourierCompliance};
 use crate::substrate::Substrate;
+
+use workspace::Workspace;
 
 pub use griffith::{
     AdhesiveBranches, BranchPoint, EdgePoint, EdgeRelease, Reach, EDGE_SHIFT, EDGE_WINDOW,
@@ -142,37 +145,6 @@ impl std::fmt::Debug for ContactSolver {
             .field("operator", &self.operator)
             .field("params", &self.params)
             .finish_non_exhaustive()
-    }
-}
-
-/// Scratch vectors, one value per cell (empty when released).
-#[derive(Default)]
-struct Workspace {
-    profile: Vec<f64>,
-    displacement: Vec<f64>,
-    gap: Vec<f64>,
-    direction: Vec<f64>,
-    response: Vec<f64>,
-    previous: Vec<f64>,
-    /// Prescribed displacements of a clamped solve (allocated on first
-    /// use).
-    target: Vec<f64>,
-    /// Cells of the working set (in contact or overlapping).
-    working: Vec<bool>,
-}
-
-impl Workspace {
-    fn new(n: usize) -> Result<Self> {
-        Ok(Workspace {
-            profile: cell_vector(n)?,
-            displacement: cell_vector(n)?,
-            gap: cell_vector(n)?,
-            direction: cell_vector(n)?,
-            response: cell_vector(n)?,
-            previous: cell_vector(n)?,
-            target: Vec::new(),
-            working: vec![false; n],
-        })
     }
 }
 
@@ -260,12 +232,13 @@ impl ContactSolver {
         self.agreed(interrupted(&self.interrupt, what))
     }
 
-    /// Frees the per-cell scratch vectors and the preconditioner (a coarse
-    /// solver between multi-resolution starts); the next solve allocates
-    /// them again.
+    /// Frees the per-cell scratch vectors, the preconditioner and the
+    /// operator's FFT buffer (a coarse solver between multi-resolution
+    /// starts); the next solve allocates them again.
     fn release_scratch(&mut self) {
         self.workspace = Workspace::default();
         self.preconditioner = None;
+        self.operator.release_buffer();
     }
 
     /// The grid.
@@ -312,9 +285,8 @@ impl ContactSolver {
         let grid = *self.operator.grid();
         let local = self.operator.local_rows();
         let n = self.local_cells();
-        if self.workspace.profile.len() != n {
-            self.workspace = self.agreed(Workspace::new(n))?;
-        }
+        let fitted = self.workspace.fit(n);
+        self.agreed(fitted)?;
         let columns = grid.columns();
         let mut lowest = f64::INFINITY;
         let mut bad = None;

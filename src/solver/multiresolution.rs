@@ -105,10 +105,16 @@ impl ContactSolver {
         };
         // As a trait object: every coarser level solves with the same type.
         let indenter: &dyn Indenter = &shifted;
+        // The coarse solve works in this solver's scratch vectors (idle
+        // until it is done), given back after it with the values of the
+        // coarse grid: the caller sizes them again
+        // ([`Workspace::fit`](super::workspace::Workspace::fit)).
+        coarse.workspace.restore(&mut self.workspace.lend());
         let solved = match control {
             Control::Depth(d) => coarse.solve_depth(indenter, d, start, &mut ()),
             Control::Force(w) => coarse.solve_force(indenter, w, start, &mut ()),
         };
+        self.workspace.restore(&mut coarse.workspace);
         // The coarse solver keeps its kernel and plans, not its scratch,
         // while the finer solve runs.
         coarse.release_scratch();

@@ -10,6 +10,7 @@
 //! [`multiresolution`](super::multiresolution), the preconditioner's box in
 //! [`preconditioning`](super::preconditioning).
 
+use std::borrow::Cow;
 use std::ops::Range;
 
 use crate::error::{Error, Result};
@@ -128,17 +129,25 @@ impl ContactSolver {
         // Whether the warm start has contact on any rank (a split solver's
         // warm start holds its own rows).
         let warm = warm.filter(|w| self.on_any_rank(w.pressure.iter().any(|p| *p > 0.0)));
+        // The coarse start is handed over, not copied: its pressures become
+        // the iteration's (a vector per cell less while it runs).
         let coarse = self.coarse_start(indenter, control, warm);
-        let start = coarse.as_ref().map(|(w, _)| w).or(warm);
+        // The scratch vectors come back from the coarse solve sized for it.
+        let fitted = self.workspace.fit(self.local_cells());
+        self.agreed(fitted)?;
+        let (start, coarse_iterations) = match coarse {
+            Some((start, iterations)) => (Some(Cow::Owned(start)), iterations),
+            None => (warm.map(Cow::Borrowed), 0),
+        };
         let (mut solution, end) = self.constrained_cg(control, start, observer)?;
-        solution.coarse_iterations = coarse.map_or(0, |(_, iterations)| iterations);
+        solution.coarse_iterations = coarse_iterations;
         Ok((solution, end))
     }
 
     fn constrained_cg(
         &mut self,
         control: Control,
-        warm: Option<&WarmStart>,
+        warm: Option<Cow<'_, WarmStart>>,
         observer: &mut dyn Observer,
     ) -> Result<(Solution, WarmStart)> {
         let n = self.local_cells();
@@ -504,16 +513,27 @@ impl ContactSolver {
     fn initial_pressure(
         &self,
         control: Control,
-        warm: Option<&WarmStart>,
+        warm: Option<Cow<'_, WarmStart>>,
         reachable: &[bool],
     ) -> Vec<f64> {
-        if let Some(w) = warm {
-            return w
-                .pressure
-                .iter()
-                .zip(reachable)
-                .map(|(p, r)| if *r { p.max(0.0) } else { 0.0 })
-                .collect();
+        let clamp = |p: f64, r: bool| if r { p.max(0.0) } else { 0.0 };
+        match warm {
+            Some(Cow::Owned(w)) => {
+                let mut pressure = w.pressure;
+                for (p, r) in pressure.iter_mut().zip(reachable) {
+                    *p = clamp(*p, *r);
+                }
+                return pressure;
+            }
+            Some(Cow::Borrowed(w)) => {
+                return w
+                    .pressure
+                    .iter()
+                    .zip(reachable)
+                    .map(|(p, r)| clamp(*p, *r))
+                    .collect();
+            }
+            None => {}
         }
         match control {
             // The first iteration steps from zero along the preconditioned

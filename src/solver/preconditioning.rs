@@ -80,13 +80,19 @@ impl ContactSolver {
             }
         };
         let origin = (start(bounds.0, m0), start(bounds.1, m1));
-        inverse.apply(
-            columns,
-            origin,
-            &ws.working,
-            &ws.gap,
-            shift,
-            &mut ws.response,
-        )
+        // The box's FFT works in the compliance operator's buffer.
+        self.operator.lend_buffer(|buffer| {
+            inverse.apply_in(
+                buffer,
+                // Written by the step after this, read only there.
+                &mut ws.previous,
+                columns,
+                origin,
+                &ws.working,
+                &ws.gap,
+                shift,
+                &mut ws.response,
+            )
+        })
     }
 }
