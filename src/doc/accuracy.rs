@@ -158,23 +158,27 @@
 //! grids as well (see
 //! [`ContactSolver::solve_depth`](crate::solver::ContactSolver::solve_depth)).
 //! Whole solves on this 2-core machine (one thread / two threads, force
-//! control, coarse solvers built):
+//! control, coarse solvers built; 2026-11-25, `BENCHMARKS.md` "Speed: the
+//! peers' Hertz benchmark" gives the load and the earlier runs):
 //!
 //! | N | iterations | time, 1 thread | time, 2 threads | peak memory |
 //! |---|---|---|---|---|
-//! | 256 | 13 | 0.04 s | 0.03 s | 14 MB |
-//! | 512 | 12 | 0.17 s | 0.10 s | 43 MB |
-//! | 1024 | 12 | 0.78 s | 0.42 s | 157 MB |
-//! | 2048 | 12 | 4.0 s | 2.2 s | 595 MB |
-//! | 4096 | 12 | 21.5 s | 11.4 s | 2331 MB |
+//! | 256 | 13 | 0.03 s | 0.02 s | 12 MB |
+//! | 512 | 12 | 0.19 s | 0.07 s | 33 MB |
+//! | 1024 | 12 | 0.62 s | 0.34 s | 115 MB |
+//! | 2048 | 12 | 2.9 s | 1.6 s | 444 MB |
+//! | 4096 | 11 | 12.6 s | 7.4 s | 1613 MB |
 //!
-//! A solver needs about 150 bytes per cell of the unpadded grid from
-//! N = 1024 up: the operator's two half-spectra of the grid's rows (32
-//! bytes) and its kernel spectrum (8: it is even, and only its non-negative
-//! row wavenumbers are kept), the influence coefficients (8), the solver's
-//! per-cell vectors (about 75), and the preconditioner's box; the coarser
-//! solvers of the multi-resolution start keep only their kernels and plans
-//! between starts. [`kernel::memory_estimate`](crate::kernel::memory_estimate)
+//! A solver needs about 100 to 110 bytes per cell of the unpadded grid on
+//! an isolated grid from N = 2048 up: the
+//! operator's half-spectra of the grid's rows (16 bytes, one buffer, which
+//! the preconditioner's FFT borrows) and its kernel spectrum (8: it is
+//! even, and only its non-negative row wavenumbers are kept), the influence
+//! coefficients (8), the solver's per-cell vectors (about 70, one of which
+//! holds the preconditioner's box while it is idle), and the box's
+//! multiplier; the coarser solvers of the multi-resolution start keep only
+//! their kernels and plans between starts and work in the finer solver's
+//! vectors. [`kernel::memory_estimate`](crate::kernel::memory_estimate)
 //! gives the estimate a solver reserves before allocating.
 //!
 //! Rough contacts (a self-affine surface of Hurst exponent 0.8 down to four

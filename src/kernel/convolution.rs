@@ -37,6 +37,11 @@ use exchange::Split;
 /// the second-level cache).
 const BLOCK_BYTES: usize = 1 << 18;
 
+/// The fewest spectrum columns in a block (see [`BLOCK_BYTES`]): on a
+/// periodic 8192^2 grid, whose blocks would otherwise hold 2 columns, the
+/// rough film of `BENCHMARKS.md` took 182 s with 2 and 144 s with 16.
+const MIN_BLOCK: usize = 16;
+
 /// Complex values of padding after each tile (a cache line): tiles of a
 /// power-of-two size would otherwise put the pieces of one row, a tile
 /// apart, in the same cache sets, and the row passes would evict their own
@@ -189,7 +194,10 @@ impl Convolution {
         let tasks = task_count(n0 * n1);
         // The spectrum columns this process filters.
         let width = split.as_ref().map_or(half, |s| s.width(s.rank()));
-        let block = (BLOCK_BYTES / (16 * n0)).clamp(1, width.max(1));
+        // At least MIN_BLOCK columns: the row passes copy a block's piece
+        // of each row, and pieces of one or two values cost more in calls
+        // than a block that spills to the next cache level (tall grids).
+        let block = (BLOCK_BYTES / (16 * n0)).clamp(MIN_BLOCK.min(width.max(1)), width.max(1));
         let blocks = width.div_ceil(block);
         let lines = (block * n0).max(half);
         let scratch = (0..tasks)

@@ -16,7 +16,9 @@ use super::influence::InfluenceCoefficients;
 ///
 /// Built once per (substrate, grid, boundary) and applied any number of
 /// times: it owns its FFT plans, the kernel's spectrum and every scratch
-/// buffer, so an application allocates nothing.
+/// buffer, so no application allocates but the first (the FFT's buffer of
+/// half-spectra, allocated on first use, which a solver also lends to its
+/// preconditioner).
 ///
 /// * [`Boundary::Isolated`]: the influence coefficients
 ///   ([`InfluenceCoefficients`]) are convolved on a zero-padded
