@@ -30,8 +30,13 @@ use rustfft::{Fft, FftPlanner};
 use crate::error::{Error, Result};
 
 mod exchange;
+mod multiplier;
+mod tiling;
 
 use exchange::Split;
+pub(super) use multiplier::multiplier;
+pub(crate) use multiplier::wavenumber;
+use tiling::{tiles, tiles_mut, TILE_PAD};
 
 /// Bytes of the column lines a thread transforms at once (a block fits in
 /// the second-level cache).
@@ -41,40 +46,6 @@ const BLOCK_BYTES: usize = 1 << 18;
 /// periodic 8192^2 grid, whose blocks would otherwise hold 2 columns, the
 /// rough film of `BENCHMARKS.md` took 182 s with 2 and 144 s with 16.
 const MIN_BLOCK: usize = 16;
-
-/// Complex values of padding after each tile (a cache line): tiles of a
-/// power-of-two size would otherwise put the pieces of one row, a tile
-/// apart, in the same cache sets, and the row passes would evict their own
-/// lines (measured: a quarter of a periodic 1024^2 round trip).
-const TILE_PAD: usize = 4;
-
-/// The tiles of `buffer`: per block of `block` of the `width` spectrum
-/// columns, a row-major `rows x block` tile (the last one narrower), each
-/// followed by [`TILE_PAD`] values of padding.
-fn tiles_mut(
-    buffer: &mut [Complex<f64>],
-    rows: usize,
-    block: usize,
-    width: usize,
-) -> impl Iterator<Item = &mut [Complex<f64>]> {
-    buffer
-        .chunks_mut(block * rows + TILE_PAD)
-        .zip((0..width).step_by(block.max(1)))
-        .map(move |(tile, j0)| &mut tile[..block.min(width - j0) * rows])
-}
-
-/// As [`tiles_mut`], read-only.
-fn tiles(
-    buffer: &[Complex<f64>],
-    rows: usize,
-    block: usize,
-    width: usize,
-) -> impl Iterator<Item = &[Complex<f64>]> {
-    buffer
-        .chunks(block * rows + TILE_PAD)
-        .zip((0..width).step_by(block.max(1)))
-        .map(move |(tile, j0)| &tile[..block.min(width - j0) * rows])
-}
 
 /// Plans and scratch of one convolution geometry.
 pub(super) struct Convolution {
@@ -486,78 +457,4 @@ impl Convolution {
             Ok(())
         })
     }
-
-    /// The normalised real spectrum of a real kernel on the whole FFT grid
-    /// that is even in the row index (row `i` equals row `height - i`),
-    /// laid out as [`Convolution::apply`] takes it: `row(i, values)` fills
-    /// row `i` (`i <= height / 2`) of width `size.1`. The spectrum of an
-    /// even kernel is real and even; its imaginary rounding is dropped.
-    pub(super) fn even_kernel_spectrum(
-        &mut self,
-        row: impl Fn(usize, &mut [f64]),
-    ) -> Result<Vec<f64>> {
-        let (n0, n1) = self.size;
-        let half = n1 / 2 + 1;
-        let distinct = n0 / 2 + 1;
-        let mut row_spectra: Vec<Complex<f64>> = zeroed(distinct * half)?;
-        let scratch = &mut self.tasks[0];
-        for (i, spectrum) in row_spectra.chunks_exact_mut(half).enumerate() {
-            row(i, &mut scratch.real);
-            self.row_forward
-                .process_with_scratch(&mut scratch.real, spectrum, &mut scratch.fft)
-                .map_err(fft_error)?;
-        }
-        let normalisation = 1.0 / (n0 * n1) as f64;
-        let mut spectrum = zeroed(half * distinct)?;
-        let line = &mut scratch.lines[..n0];
-        for (j, column) in spectrum.chunks_exact_mut(distinct).enumerate() {
-            for (i, value) in line.iter_mut().enumerate() {
-                *value = row_spectra[i.min(n0 - i) * half + j];
-            }
-            self.column_forward
-                .process_with_scratch(line, &mut scratch.fft);
-            for (k, value) in column.iter_mut().zip(line.iter()) {
-                *k = value.re * normalisation;
-            }
-        }
-        Ok(spectrum)
-    }
-}
-
-/// The wavenumber (rad/m) of FFT index `index` on `n` cells of side `delta`,
-/// indices above `n/2` standing for negative frequencies.
-pub(crate) fn wavenumber(index: usize, n: usize, delta: f64) -> f64 {
-    let k = if index <= n / 2 {
-        index as f64
-    } else {
-        index as f64 - n as f64
-    };
-    2.0 * std::f64::consts::PI * k / (n as f64 * delta)
-}
-
-/// The multiplier `f(q_x, q_y)`, even in `q_x`, at the wavevectors of an FFT
-/// grid of `size` with cells of side `delta`, divided by the FFT
-/// normalisation and laid out for [`Convolution::apply`] (`q_x >= 0` only),
-/// on the spectrum columns `columns` (of `size.1 / 2 + 1`: those a
-/// convolution filters, [`Convolution::own_columns`]).
-///
-/// # Errors
-/// [`Error::OutOfMemory`].
-pub(super) fn multiplier(
-    size: (usize, usize),
-    delta: f64,
-    columns: std::ops::Range<usize>,
-    f: impl Fn(f64, f64) -> f64,
-) -> Result<Vec<f64>> {
-    let (n0, n1) = size;
-    let normalisation = 1.0 / (n0 * n1) as f64;
-    let distinct = n0 / 2 + 1;
-    let mut values = zeroed(columns.len() * distinct)?;
-    for (ky, column) in columns.zip(values.chunks_exact_mut(distinct)) {
-        let qy = wavenumber(ky, n1, delta);
-        for (kx, value) in column.iter_mut().enumerate() {
-            *value = f(wavenumber(kx, n0, delta), qy) * normalisation;
-        }
-    }
-    Ok(values)
 }

@@ -20,6 +20,19 @@ use super::fourier::FourierCompliance;
 use super::operator::{cell_filter, ShareBuffer};
 use crate::parallel::map_rows;
 
+/// What a [`BoxInverse`] is applied to: a residual on a row-major grid of
+/// `columns` columns and `values.len() / columns` rows, restricted to the
+/// cells where `member` holds and shifted by `-shift` there (the force
+/// projection), with the box's first cell at grid cell `origin`.
+#[derive(Clone, Copy)]
+pub(crate) struct Residual<'a> {
+    pub(crate) columns: usize,
+    pub(crate) origin: (isize, isize),
+    pub(crate) member: &'a [bool],
+    pub(crate) values: &'a [f64],
+    pub(crate) shift: f64,
+}
+
 /// The approximate inverse on a box of a fixed size (plans, multiplier and
 /// box buffers), placed anywhere on a grid at each application.
 pub(crate) struct BoxInverse {
@@ -87,20 +100,15 @@ impl BoxInverse {
     /// and the box's values in `spare` if long enough (a per-cell vector of
     /// the solver's that is idle meanwhile): the box then holds no per-cell
     /// buffer of its own.
-    #[allow(clippy::too_many_arguments)]
     pub(crate) fn apply_in(
         &mut self,
         buffer: &mut ShareBuffer,
         spare: &mut [f64],
-        columns: usize,
-        origin: (isize, isize),
-        member: &[bool],
-        residual: &[f64],
-        shift: f64,
+        residual: &Residual<'_>,
         result: &mut [f64],
     ) -> Result<(f64, f64)> {
         let own = self.convolution.lend_tiles(std::mem::take(&mut buffer.0));
-        let sums = self.apply_with(spare, columns, origin, member, residual, shift, result);
+        let sums = self.apply_with(spare, residual, result);
         // Its own buffer (empty unless the lent one was too small) is dropped.
         buffer.0 = self.convolution.lend_tiles(Vec::new());
         drop(own);
@@ -112,14 +120,13 @@ impl BoxInverse {
         self.size
     }
 
-    /// `result = P M^-1 P (residual - shift)` on a row-major grid of
-    /// `columns` columns and `residual.len() / columns` rows, `P` the
-    /// restriction to the cells where `member` holds, with the box's first
-    /// cell at grid cell `origin` (rows and columns, possibly negative: box
-    /// cells off the grid are zero). Only members in the box are written:
-    /// the box must hold every member. Returns `(sum result, sum result *
-    /// (residual - shift))` over the members, added row by row in order
-    /// (the same whatever the threads).
+    /// `result = P M^-1 P (r - shift)` for the [`Residual`] `r` on its grid,
+    /// `P` the restriction to its members, with the box's first cell at grid
+    /// cell `origin` (rows and columns, possibly negative: box cells off the
+    /// grid are zero). Only members in the box are written: the box must
+    /// hold every member. Returns `(sum result, sum result * (r - shift))`
+    /// over the members, added row by row in order (the same whatever the
+    /// threads).
     ///
     /// The box's values are kept in `spare` if it is long enough (a
     /// vector of the solver's that is idle meanwhile), else in a buffer of
@@ -127,17 +134,19 @@ impl BoxInverse {
     ///
     /// # Errors
     /// As the FFT ([`Error::Internal`](crate::Error::Internal), a bug).
-    #[allow(clippy::too_many_arguments)]
     fn apply_with(
         &mut self,
         spare: &mut [f64],
-        columns: usize,
-        origin: (isize, isize),
-        member: &[bool],
-        residual: &[f64],
-        shift: f64,
+        residual: &Residual<'_>,
         result: &mut [f64],
     ) -> Result<(f64, f64)> {
+        let Residual {
+            columns,
+            origin,
+            member,
+            values: residual,
+            shift,
+        } = *residual;
         let (m0, m1) = self.size;
         // This rank's grid rows `grid.start..` and box rows `boxed`
         // (serial: all of either), and whether `spare` holds the box's rows.

@@ -21,7 +21,7 @@ mod radial;
 pub(crate) use convolution::wavenumber;
 pub use fourier::FourierCompliance;
 pub use influence::{InfluenceCoefficients, MAX_TAIL_ERROR};
-pub(crate) use inverse::BoxInverse;
+pub(crate) use inverse::{BoxInverse, Residual};
 pub use operator::{
     check_film, distributed_memory_estimate, memory_estimate, ComplianceOperator,
     DIRECT_LOADS_PER_LOG2, MIN_THICKNESS_OVER_SPACING,

@@ -55,6 +55,7 @@
 #![allow(clippy::needless_range_loop)]
 
 mod adhesive;
+mod cg_ends;
 mod griffith;
 mod multiresolution;
 mod params;

@@ -4,7 +4,7 @@
 
 use crate::error::Result;
 use crate::grid::{fft_friendly_even, Boundary};
-use crate::kernel::BoxInverse;
+use crate::kernel::{BoxInverse, Residual};
 
 use super::passes::{self, Bounds};
 use super::ContactSolver;
@@ -82,17 +82,15 @@ impl ContactSolver {
         let origin = (start(bounds.0, m0), start(bounds.1, m1));
         // The box's FFT works in the compliance operator's buffer.
         self.operator.lend_buffer(|buffer| {
-            inverse.apply_in(
-                buffer,
-                // Written by the step after this, read only there.
-                &mut ws.previous,
+            let residual = Residual {
                 columns,
                 origin,
-                &ws.working,
-                &ws.gap,
+                member: &ws.working,
+                values: &ws.gap,
                 shift,
-                &mut ws.response,
-            )
+            };
+            // `previous` is written by the step after this, read only there.
+            inverse.apply_in(buffer, &mut ws.previous, &residual, &mut ws.response)
         })
     }
 }
