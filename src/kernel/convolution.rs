@@ -203,17 +203,17 @@ impl Convolution {
 
     /// Takes the largest buffer (the tiles of the half-spectra) out, to
     /// free it or lend it to another convolution that is not applied at
-    /// the same time ([`Convolution::lend_tiles`]); the next application
+    /// the same time ([`Convolution::give_tiles`]); the next application
     /// without it allocates one.
     pub(super) fn take_tiles(&mut self) -> Vec<Complex<f64>> {
         std::mem::take(&mut self.tiles)
     }
 
     /// Gives this convolution `tiles` as its buffer (taken from another
-    /// with [`Convolution::take_tiles`]; used if large enough), and returns
+    /// with [`Convolution::take_tiles`]; used if large enough), in place of
     /// its own.
-    pub(super) fn lend_tiles(&mut self, tiles: Vec<Complex<f64>>) -> Vec<Complex<f64>> {
-        std::mem::replace(&mut self.tiles, tiles)
+    pub(super) fn give_tiles(&mut self, tiles: Vec<Complex<f64>>) {
+        self.tiles = tiles;
     }
 
     /// This process's data rows.

@@ -107,11 +107,12 @@ impl BoxInverse {
         residual: &Residual<'_>,
         result: &mut [f64],
     ) -> Result<(f64, f64)> {
-        let own = self.convolution.lend_tiles(std::mem::take(&mut buffer.0));
+        // The box allocates its buffer only on first use and gives it back
+        // below, so it holds none of its own here.
+        self.convolution.give_tiles(std::mem::take(&mut buffer.0));
         let sums = self.apply_with(spare, residual, result);
-        // Its own buffer (empty unless the lent one was too small) is dropped.
-        buffer.0 = self.convolution.lend_tiles(Vec::new());
-        drop(own);
+        // The lent buffer, or the box's own if that was too small.
+        buffer.0 = self.convolution.take_tiles();
         sums
     }
 

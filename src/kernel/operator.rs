@@ -469,7 +469,7 @@ impl ComplianceOperator {
     pub(crate) fn lend_buffer<T>(&mut self, f: impl FnOnce(&mut ShareBuffer) -> T) -> T {
         let mut shared = ShareBuffer(self.convolution.take_tiles());
         let result = f(&mut shared);
-        self.convolution.lend_tiles(shared.0);
+        self.convolution.give_tiles(shared.0);
         result
     }
 

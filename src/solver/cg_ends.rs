@@ -8,7 +8,7 @@ use std::borrow::Cow;
 use crate::error::{Error, Result};
 
 use super::polonsky_keer::Control;
-use super::{ContactSolver, Solution, WarmStart};
+use super::{passes, ContactSolver, Solution, WarmStart};
 
 impl ContactSolver {
     /// The solution and warm start of a converged pressure.
@@ -26,11 +26,7 @@ impl ContactSolver {
         // control follows from it.
         if let Control::Force(_) = control {
             let ws = &self.workspace;
-            let (sum, count) = (0..pressure.len())
-                .filter(|&c| pressure[c] > 0.0)
-                .fold((0.0, 0usize), |(s, k), c| {
-                    (s + ws.profile[c] + ws.displacement[c], k + 1)
-                });
+            let (sum, count) = passes::contact_sum(&ws.profile, &ws.displacement, &pressure);
             let mut totals = [sum, count as f64];
             self.sum_over_ranks(&mut totals);
             depth = totals[0] / totals[1].max(1.0);

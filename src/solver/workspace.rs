@@ -3,8 +3,6 @@
 
 use crate::error::Result;
 
-use super::cell_vector;
-
 /// Scratch vectors, one value per cell (empty when released).
 #[derive(Default)]
 pub(super) struct Workspace {
@@ -35,16 +33,9 @@ fn fit<T: Clone + Default>(vector: &mut Vec<T>, n: usize) -> Result<()> {
 
 impl Workspace {
     pub(super) fn new(n: usize) -> Result<Self> {
-        Ok(Workspace {
-            profile: cell_vector(n)?,
-            displacement: cell_vector(n)?,
-            gap: cell_vector(n)?,
-            direction: cell_vector(n)?,
-            response: cell_vector(n)?,
-            previous: cell_vector(n)?,
-            target: Vec::new(),
-            working: vec![false; n],
-        })
+        let mut workspace = Workspace::default();
+        workspace.fit(n)?;
+        Ok(workspace)
     }
 
     /// Sizes every vector (but the clamped solve's target) for `n` cells,
