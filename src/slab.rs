@@ -158,6 +158,129 @@ pub(crate) fn agree<T>(slab: Option<&Slab>, result: Result<T>) -> Result<T> {
     }
 }
 
+/// An [`Exchange`] between threads of one process, to test split code
+/// without MPI: [`threads::run`] runs a closure on every rank.
+#[cfg(test)]
+pub(crate) mod threads {
+    use std::sync::{Arc, Barrier, Mutex, PoisonError};
+
+    use num_complex::Complex;
+
+    use super::Exchange;
+
+    /// A rank's send buffer of an all-to-all, and its counts per rank.
+    type Posted = (Vec<Complex<f64>>, Vec<usize>);
+
+    /// What each rank has posted for the collective under way.
+    struct Board {
+        barrier: Barrier,
+        reals: Mutex<Vec<Vec<f64>>>,
+        blocks: Mutex<Vec<Posted>>,
+    }
+
+    /// One rank.
+    pub(crate) struct Threads {
+        rank: usize,
+        ranks: usize,
+        board: Arc<Board>,
+    }
+
+    impl Threads {
+        /// Every rank's values of one reduction, in rank order.
+        fn gather(&self, values: &[f64]) -> Vec<Vec<f64>> {
+            let lock = || {
+                self.board
+                    .reals
+                    .lock()
+                    .unwrap_or_else(PoisonError::into_inner)
+            };
+            lock()[self.rank] = values.to_vec();
+            self.board.barrier.wait();
+            let all = lock().clone();
+            self.board.barrier.wait();
+            all
+        }
+    }
+
+    impl Exchange for Threads {
+        fn rank(&self) -> usize {
+            self.rank
+        }
+        fn ranks(&self) -> usize {
+            self.ranks
+        }
+        fn sum(&self, values: &mut [f64]) {
+            let all = self.gather(values);
+            for (k, v) in values.iter_mut().enumerate() {
+                *v = all.iter().map(|r| r[k]).sum();
+            }
+        }
+        fn min(&self, values: &mut [f64]) {
+            let all = self.gather(values);
+            for (k, v) in values.iter_mut().enumerate() {
+                *v = all.iter().map(|r| r[k]).fold(f64::INFINITY, f64::min);
+            }
+        }
+        fn all_to_all(
+            &self,
+            send: &[Complex<f64>],
+            send_counts: &[usize],
+            receive: &mut [Complex<f64>],
+            receive_counts: &[usize],
+        ) {
+            let lock = || {
+                self.board
+                    .blocks
+                    .lock()
+                    .unwrap_or_else(PoisonError::into_inner)
+            };
+            lock()[self.rank] = (send.to_vec(), send_counts.to_vec());
+            self.board.barrier.wait();
+            {
+                let blocks = lock();
+                let mut at = 0;
+                for (source, (values, counts)) in blocks.iter().enumerate() {
+                    let from: usize = counts[..self.rank].iter().sum();
+                    let n = receive_counts[source];
+                    receive[at..at + n].copy_from_slice(&values[from..from + n]);
+                    at += n;
+                }
+            }
+            self.board.barrier.wait();
+        }
+    }
+
+    /// `work(exchange)` on each of `ranks` threads, the results in rank
+    /// order.
+    pub(crate) fn run<T: Send>(
+        ranks: usize,
+        work: impl Fn(Arc<dyn Exchange>) -> T + Sync,
+    ) -> Vec<T> {
+        let board = Arc::new(Board {
+            barrier: Barrier::new(ranks),
+            reals: Mutex::new(vec![Vec::new(); ranks]),
+            blocks: Mutex::new(vec![(Vec::new(), Vec::new()); ranks]),
+        });
+        std::thread::scope(|scope| {
+            let handles: Vec<_> = (0..ranks)
+                .map(|rank| {
+                    let exchange: Arc<dyn Exchange> = Arc::new(Threads {
+                        rank,
+                        ranks,
+                        board: Arc::clone(&board),
+                    });
+                    let work = &work;
+                    scope.spawn(move || work(exchange))
+                })
+                .collect();
+            handles
+                .into_iter()
+                .map(|h| h.join().expect("a rank's thread panicked"))
+                .collect()
+        })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -46,10 +46,13 @@ use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, StandardNormal};
 use realfft::RealFftPlanner;
 
+use num_complex::Complex;
+
 use crate::error::{Error, Result};
 use crate::grid::Grid;
 use crate::indenter::HeightMap;
 use crate::kernel::wavenumber;
+use crate::slab::{even_starts, lengths, Slab};
 
 /// How large a synthesised surface is.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -96,56 +99,75 @@ impl SelfAffine {
     /// or non-finite amplitude, a short cut-off below two cells or above the
     /// long one, or a surface without any mode between them on this grid.
     pub fn heights(&self, grid: &Grid) -> Result<Vec<f64>> {
+        self.synthesise(grid, None)
+    }
+
+    /// The heights of the rows of `grid` that `slab` gives this rank (all
+    /// of them when `slab` is `None`), equal bit for bit to those rows of
+    /// [`heights`](Self::heights): a distributed run synthesises its share
+    /// of a surface, not the whole of it on every rank.
+    ///
+    /// Every rank draws the whole sequence of random numbers (cheap beside
+    /// the transforms) and keeps the coefficients of its band of columns of
+    /// the half-spectrum. It transforms those columns, exchanges the blocks
+    /// once (a transpose, as the split convolution does) and transforms its
+    /// rows. The sums that normalise the surface are taken in the serial
+    /// order: the spectrum's as the coefficients are drawn, the heights' row
+    /// by row, each row's sum added over the ranks (where the other ranks
+    /// add zeros) and the rows then summed in order.
+    pub(crate) fn synthesise(&self, grid: &Grid, slab: Option<&Slab>) -> Result<Vec<f64>> {
         self.check(grid)?;
         let (n0, n1) = (grid.rows(), grid.columns());
         let delta = grid.spacing();
         let half = n1 / 2 + 1;
         let (q_r, q_s) = (2.0 * PI / self.long_cutoff, 2.0 * PI / self.short_cutoff);
         let exponent = -(1.0 + self.hurst); // of the amplitude, sqrt(C)
+        let rows = slab.map_or(0..n0, Slab::rows);
+        let (rank, ranks) = slab.map_or((0, 1), |s| (s.exchange.rank(), s.exchange.ranks()));
+        let column_starts = even_starts(half, ranks);
+        let own = column_starts[rank]..column_starts[rank + 1];
+        let width = own.len();
         let mut rng = ChaCha8Rng::seed_from_u64(self.seed);
-        let mut spectrum: Vec<num_complex::Complex<f64>> =
-            crate::error::zeroed(n0 * half, "rough-surface spectrum")?;
-        for kx in 0..n0 {
-            let qx = wavenumber(kx, n0, delta);
-            for ky in 0..half {
-                let qy = wavenumber(ky, n1, delta);
-                let q = qx.hypot(qy);
-                let re: f64 = StandardNormal.sample(&mut rng);
-                let im: f64 = StandardNormal.sample(&mut rng);
-                if q == 0.0 || q > q_s {
-                    continue;
-                }
-                let amplitude = (q.max(q_r) / q_r).powf(exponent);
-                spectrum[kx * half + ky] = num_complex::Complex::new(re, im) * amplitude;
-            }
-        }
+        // This rank's columns of the half-spectrum, row-major (kx, ky).
+        let mut spectrum: Vec<Complex<f64>> =
+            crate::error::zeroed(n0 * width, "rough-surface spectrum")?;
         // The columns ky = 0 (and ky = n1/2) hold their own conjugates:
-        // make them Hermitian in kx so that their transforms are real.
-        for ky in std::iter::once(0).chain((n1 % 2 == 0).then_some(n1 / 2)) {
-            for kx in 0..n0 {
-                let partner = (n0 - kx) % n0;
-                let index = kx * half + ky;
-                if partner == kx {
-                    spectrum[index].im = 0.0;
-                } else if partner < kx {
-                    spectrum[index] = spectrum[partner * half + ky].conj();
-                }
-            }
-        }
+        // they are made Hermitian in kx, so that their transforms are real,
+        // from the partners kept here.
+        let self_conjugate = |ky: usize| ky == 0 || (n1 % 2 == 0 && ky == n1 / 2);
+        let mut partners = [vec![Complex::default(); n0], vec![Complex::default(); n0]];
         let (mut height_sum, mut slope_sum) = (0.0, 0.0);
         for kx in 0..n0 {
             let qx = wavenumber(kx, n0, delta);
+            let partner = (n0 - kx) % n0;
             for ky in 0..half {
                 let q = qx.hypot(wavenumber(ky, n1, delta));
+                let re: f64 = StandardNormal.sample(&mut rng);
+                let im: f64 = StandardNormal.sample(&mut rng);
+                let mut c = if q == 0.0 || q > q_s {
+                    Complex::default()
+                } else {
+                    Complex::new(re, im) * (q.max(q_r) / q_r).powf(exponent)
+                };
                 // Bins with a conjugate partner in the other half count twice.
-                let weight = if ky == 0 || (n1 % 2 == 0 && ky == n1 / 2) {
+                let weight = if self_conjugate(ky) {
+                    let column = &mut partners[usize::from(ky != 0)];
+                    if partner == kx {
+                        c.im = 0.0;
+                    } else if partner < kx {
+                        c = column[partner].conj();
+                    }
+                    column[kx] = c;
                     1.0
                 } else {
                     2.0
                 };
-                let power = weight * spectrum[kx * half + ky].norm_sqr();
+                let power = weight * c.norm_sqr();
                 height_sum += power;
                 slope_sum += q * q * power;
+                if own.contains(&ky) {
+                    spectrum[kx * width + ky - own.start] = c;
+                }
             }
         }
         if height_sum == 0.0 {
@@ -164,20 +186,23 @@ impl SelfAffine {
             Amplitude::RmsSlope(s) => s * cells / slope_sum.sqrt(),
         } / cells;
         // Inverse 2D transform: complex columns, then complex-to-real rows.
-        let mut planner = rustfft::FftPlanner::<f64>::new();
-        let columns = planner.plan_fft_inverse(n0);
-        let mut line = vec![num_complex::Complex::default(); n0];
-        for ky in 0..half {
+        let columns = rustfft::FftPlanner::<f64>::new().plan_fft_inverse(n0);
+        let mut line = vec![Complex::default(); n0];
+        for j in 0..width {
             for (kx, value) in line.iter_mut().enumerate() {
-                *value = spectrum[kx * half + ky] * scale;
+                *value = spectrum[kx * width + j] * scale;
             }
             columns.process(&mut line);
             for (kx, value) in line.iter().enumerate() {
-                spectrum[kx * half + ky] = *value;
+                spectrum[kx * width + j] = *value;
             }
         }
-        let rows = RealFftPlanner::<f64>::new().plan_fft_inverse(n1);
-        let mut heights: Vec<f64> = crate::error::zeroed(n0 * n1, "rough-surface heights")?;
+        let mut spectrum = match slab {
+            Some(slab) => transpose(slab, spectrum, &column_starts, half)?,
+            None => spectrum,
+        };
+        let plan = RealFftPlanner::<f64>::new().plan_fft_inverse(n1);
+        let mut heights: Vec<f64> = crate::error::zeroed(rows.len() * n1, "rough-surface heights")?;
         for (row, out) in spectrum
             .chunks_exact_mut(half)
             .zip(heights.chunks_exact_mut(n1))
@@ -186,19 +211,21 @@ impl SelfAffine {
             if n1 % 2 == 0 {
                 row[half - 1].im = 0.0;
             }
-            rows.process(row, out).map_err(|e| Error::Internal {
+            plan.process(row, out).map_err(|e| Error::Internal {
                 what: "rough-surface synthesis",
                 detail: e.to_string(),
             })?;
         }
+        drop(spectrum);
         // Cancel the mean's rounding and the rms height's.
-        let mean = heights.iter().sum::<f64>() / cells;
+        let mean = grid_sum(slab, n0, rows.start, &heights, n1, |h| h) / cells;
         heights.iter_mut().for_each(|h| *h -= mean);
         if let Amplitude::RmsHeight(target) = self.amplitude {
-            let rms = (heights.iter().map(|h| h * h).sum::<f64>() / cells).sqrt();
+            let rms = (grid_sum(slab, n0, rows.start, &heights, n1, |h| h * h) / cells).sqrt();
             heights.iter_mut().for_each(|h| *h *= target / rms);
         }
-        crate::solver::all_finite("rough-surface synthesis", &heights)?;
+        let finite = crate::solver::all_finite("rough-surface synthesis", &heights);
+        crate::slab::agree(slab, finite)?;
         Ok(heights)
     }
 
@@ -209,9 +236,25 @@ impl SelfAffine {
     /// # Errors
     /// As [`SelfAffine::heights`].
     pub fn indenter(&self, grid: &Grid) -> Result<HeightMap> {
-        let heights = self.heights(grid)?;
-        let top = heights.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        HeightMap::new(*grid, heights.iter().map(|h| top - h).collect())
+        self.indenter_on(grid, None)
+    }
+
+    /// The realisation as a rigid indenter, holding only the rows of `grid`
+    /// that `slab` gives this rank (all of them when `slab` is `None`):
+    /// what a distributed run's rank samples. Its top is the whole
+    /// surface's.
+    ///
+    /// # Errors
+    /// As [`SelfAffine::heights`].
+    pub(crate) fn indenter_on(&self, grid: &Grid, slab: Option<&Slab>) -> Result<HeightMap> {
+        let heights = self.synthesise(grid, slab)?;
+        let mut top = [-heights.iter().copied().fold(f64::NEG_INFINITY, f64::max)];
+        if let Some(slab) = slab {
+            slab.exchange.min(&mut top);
+        }
+        let top = -top[0];
+        let first_row = slab.map_or(0, |s| s.rows().start);
+        HeightMap::band(*grid, first_row, heights.iter().map(|h| top - h).collect())
     }
 
     pub(crate) fn check(&self, grid: &Grid) -> Result<()> {
@@ -249,5 +292,114 @@ impl SelfAffine {
             });
         }
         Ok(())
+    }
+}
+
+/// This rank's columns of the half-spectrum, all rows (row-major, `width`
+/// columns), turned into this rank's rows, all `half` columns: one
+/// exchange of blocks between every pair of ranks.
+fn transpose(
+    slab: &Slab,
+    spectrum: Vec<Complex<f64>>,
+    column_starts: &[usize],
+    half: usize,
+) -> Result<Vec<Complex<f64>>> {
+    let rank = slab.exchange.rank();
+    let width = column_starts[rank + 1] - column_starts[rank];
+    let rows = slab.rows().len();
+    let widths = lengths(column_starts);
+    let send_counts: Vec<usize> = slab.counts().iter().map(|r| r * width).collect();
+    let receive_counts: Vec<usize> = widths.iter().map(|w| w * rows).collect();
+    let mut receive: Vec<Complex<f64>> =
+        crate::error::zeroed(rows * half, "rough-surface spectrum (exchanged)")?;
+    slab.exchange
+        .all_to_all(&spectrum, &send_counts, &mut receive, &receive_counts);
+    drop(spectrum);
+    let mut assembled: Vec<Complex<f64>> =
+        crate::error::zeroed(rows * half, "rough-surface spectrum (rows)")?;
+    let mut blocks = receive.as_slice();
+    for (&start, &w) in column_starts.iter().zip(&widths) {
+        let (block, rest) = blocks.split_at(w * rows);
+        for (i, part) in block.chunks_exact(w.max(1)).take(rows).enumerate() {
+            assembled[i * half + start..i * half + start + w].copy_from_slice(&part[..w]);
+        }
+        blocks = rest;
+    }
+    Ok(assembled)
+}
+
+/// The sum of `f` over the whole grid's heights, of which this rank holds
+/// rows `first_row..` (`heights`, `columns` a row), in the serial order:
+/// each row summed, the rows' sums added over the ranks (each row's sum is
+/// nonzero on one rank only, so that adds nothing to its rounding), then
+/// summed in row order.
+fn grid_sum(
+    slab: Option<&Slab>,
+    grid_rows: usize,
+    first_row: usize,
+    heights: &[f64],
+    columns: usize,
+    f: impl Fn(f64) -> f64,
+) -> f64 {
+    let mut sums = vec![0.0; grid_rows];
+    for (i, row) in heights.chunks_exact(columns).enumerate() {
+        sums[first_row + i] = row.iter().map(|&h| f(h)).sum();
+    }
+    if let Some(slab) = slab {
+        slab.sum(&mut sums);
+    }
+    sums.iter().sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::Arc;
+
+    use super::*;
+    use crate::indenter::Indenter;
+
+    /// Split across 1 to 5 ranks (threads), each rank's rows of the
+    /// surface and of its indenter equal the serial ones bit for bit: even
+    /// and odd column counts, rows that do not divide evenly, and more
+    /// ranks than some bands of columns hold.
+    #[test]
+    fn a_split_synthesis_equals_the_serial_one() {
+        for (rows, columns, amplitude) in [
+            (64, 48, Amplitude::RmsHeight(1e-6)),
+            (30, 45, Amplitude::RmsSlope(0.1)),
+            (20, 6, Amplitude::RmsHeight(2e-6)),
+        ] {
+            let grid = Grid::new(rows, columns, 1e-6).unwrap();
+            let surface = SelfAffine {
+                hurst: 0.7,
+                amplitude,
+                long_cutoff: 16e-6,
+                short_cutoff: 2e-6,
+                seed: 11,
+            };
+            let serial = surface.heights(&grid).unwrap();
+            let map = surface.indenter(&grid).unwrap();
+            for ranks in 1..=5 {
+                let shares = crate::slab::threads::run(ranks, |exchange| {
+                    let slab = Slab::new(Arc::clone(&exchange), rows, 1).unwrap();
+                    let heights = surface.synthesise(&grid, Some(&slab)).unwrap();
+                    let band = surface.indenter_on(&grid, Some(&slab)).unwrap();
+                    (slab.rows(), heights, band)
+                });
+                for (rows, heights, band) in shares {
+                    let own = &serial[rows.start * columns..rows.end * columns];
+                    assert_eq!(heights, own, "{ranks} ranks, rows {rows:?}");
+                    assert_eq!(
+                        band.heights(),
+                        &map.heights()[rows.start * columns..rows.end * columns]
+                    );
+                    // The band reads its own rows as the whole map does.
+                    for i in [rows.start, rows.end - 1] {
+                        let (x, y) = grid.cell_centre(i, columns - 1);
+                        assert_eq!(band.height(x, y), map.height(x, y));
+                    }
+                }
+            }
+        }
     }
 }

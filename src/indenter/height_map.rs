@@ -28,6 +28,9 @@ use super::Indenter;
 #[derive(Debug, Clone, PartialEq)]
 pub struct HeightMap {
     grid: Grid,
+    /// The first row held: 0, except for a distributed run's band of rows
+    /// ([`HeightMap::band`]).
+    first_row: usize,
     heights: Vec<f64>,
 }
 
@@ -56,7 +59,32 @@ impl HeightMap {
                 expected: "finite or +inf",
             });
         }
-        Ok(HeightMap { grid, heights })
+        Ok(HeightMap {
+            grid,
+            first_row: 0,
+            heights,
+        })
+    }
+
+    /// The rows `first_row..` of a map over `grid` (`heights` row-major, a
+    /// whole number of rows): a distributed run's share, which its rank
+    /// alone samples. The rows it does not hold read as `+inf`, like the
+    /// points outside the map.
+    pub(crate) fn band(grid: Grid, first_row: usize, heights: Vec<f64>) -> Result<Self> {
+        let columns = grid.columns();
+        let rows = heights.len() / columns.max(1);
+        if rows * columns != heights.len() || first_row + rows > grid.rows() {
+            return Err(Error::ShapeMismatch {
+                field: "heights (a band of rows)",
+                expected: (grid.rows() - first_row.min(grid.rows())) * columns,
+                found: heights.len(),
+            });
+        }
+        Ok(HeightMap {
+            grid,
+            first_row,
+            heights,
+        })
     }
 }
 
@@ -159,7 +187,9 @@ impl HeightMap {
         &self.grid
     }
 
-    /// The heights (m, row-major).
+    /// The heights (m, row-major): of every row of the grid, except in a
+    /// rank's share of a distributed run (the scene of a rough surface split
+    /// across MPI ranks), which holds its own rows only.
     pub fn heights(&self) -> &[f64] {
         &self.heights
     }
@@ -171,12 +201,10 @@ impl Indenter for HeightMap {
         let delta = self.grid.spacing();
         let i = ((x + 0.5 * lx) / delta).floor();
         let j = ((y + 0.5 * ly) / delta).floor();
-        if i >= 0.0
-            && j >= 0.0
-            && (i as usize) < self.grid.rows()
-            && (j as usize) < self.grid.columns()
-        {
-            self.heights[i as usize * self.grid.columns() + j as usize]
+        let columns = self.grid.columns();
+        let held = self.first_row..self.first_row + self.heights.len() / columns.max(1);
+        if i >= 0.0 && j >= 0.0 && held.contains(&(i as usize)) && (j as usize) < columns {
+            self.heights[(i as usize - self.first_row) * columns + j as usize]
         } else {
             f64::INFINITY
         }

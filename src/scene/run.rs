@@ -136,10 +136,14 @@ impl Scene {
                          process for its fields and stresses",
             });
         }
-        let indenter = self.indenter.build(self.tilt)?;
         let mut grown: Option<ContactSolver> = None;
         for _ in 0..=MAX_GRID_GROWTH {
             let active = grown.as_mut().unwrap_or(&mut *solver);
+            // Built for each grid (a grid grows only for the shapes that
+            // are cheap to build): a rank of a split run synthesises only
+            // its own rows of a rough surface.
+            let split = active.operator().slab().map(|slab| (slab, active.grid()));
+            let indenter = self.indenter.build_on(self.tilt, split)?;
             let outcome = match (self.adhesion.works(), self.solver.adhesion_method) {
                 (Some(works), AdhesionMethod::EnergyBalance) => {
                     energy::run(self, active, &*indenter, works, progress, observer)?

@@ -366,6 +366,17 @@ impl IndenterSpec {
     /// ([`Error::HeightMapFile`]) and of the synthesis
     /// ([`SelfAffine::heights`]).
     pub fn build(&self, tilt: Option<Tilt>) -> Result<Box<dyn Indenter + Send + Sync>> {
+        self.build_on(tilt, None)
+    }
+
+    /// [`build`](Self::build) for a solver on `grid` split by `slab` (a
+    /// distributed run's rank): a rough surface on that same grid is
+    /// synthesised in shares, and this rank keeps its own rows only.
+    pub(crate) fn build_on(
+        &self,
+        tilt: Option<Tilt>,
+        split: Option<(&crate::slab::Slab, &crate::grid::Grid)>,
+    ) -> Result<Box<dyn Indenter + Send + Sync>> {
         let shape: Box<dyn Indenter + Send + Sync> = match self {
             IndenterSpec::FlatPunch { radius } => Box::new(FlatPunch::new(*radius)?),
             IndenterSpec::Sphere { radius } => Box::new(Sphere::new(*radius)?),
@@ -380,7 +391,9 @@ impl IndenterSpec {
                     what: "scene indenter",
                     detail: "a rough surface without its parameters".into(),
                 })?;
-                Box::new(surface.indenter(&grid)?)
+                // A solver on another grid samples the whole surface.
+                let slab = split.and_then(|(slab, on)| (*on == grid).then_some(slab));
+                Box::new(surface.indenter_on(&grid, slab)?)
             }
             IndenterSpec::Custom(custom) => {
                 crate::error::positive_finite("bounding_radius", custom.bounding_radius())?;

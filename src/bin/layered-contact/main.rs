@@ -252,14 +252,17 @@ fn check(scene: &Scene, ranks: Option<usize>) -> Result<()> {
     if let Some(ranks) = ranks {
         let mut per_rank =
             layered_contact::kernel::distributed_memory_estimate(&grid, scene.boundary, ranks);
-        // Every rank holds the whole height map, and synthesises a rough
-        // surface through its half-spectrum: 8 + 16 bytes per cell.
-        if matches!(
-            scene.indenter,
-            layered_contact::scene::IndenterSpec::HeightMap { .. }
-                | layered_contact::scene::IndenterSpec::RoughSurface { .. }
-        ) {
-            per_rank += 24 * grid.len();
+        // Every rank reads a height map file whole (its bytes, the array
+        // and the map: 24 bytes per cell); a rough surface is synthesised
+        // in shares, and each rank keeps its own rows (8 bytes per cell of
+        // them; the synthesis's 24 come and go before the solver's
+        // vectors are allocated).
+        match scene.indenter {
+            layered_contact::scene::IndenterSpec::HeightMap { .. } => per_rank += 24 * grid.len(),
+            layered_contact::scene::IndenterSpec::RoughSurface { .. } => {
+                per_rank += 8 * grid.len().div_ceil(ranks)
+            }
+            _ => {}
         }
         say!(
             "memory split across {ranks} MPI ranks: about {:.1} MB per rank",
