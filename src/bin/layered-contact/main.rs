@@ -232,6 +232,11 @@ fn run_with(
     Ok(())
 }
 
+/// What `check --ranks` adds per rank for the process and its MPI library,
+/// and per cell of the rank's rows for what its count leaves out.
+const PROCESS_BYTES: usize = 64 << 20;
+const SLACK_BYTES_PER_CELL: usize = 8;
+
 fn check(scene: &Scene, ranks: Option<usize>) -> Result<()> {
     scene.validate()?;
     let grid = scene.grid()?;
@@ -257,6 +262,12 @@ fn check(scene: &Scene, ranks: Option<usize>) -> Result<()> {
         // in shares, and each rank keeps its own rows (8 bytes per cell of
         // them; the synthesis's 24 come and go before the solver's
         // vectors are allocated).
+        // The process itself, its MPI library and what the count above
+        // leaves out (the allocator's slack, the coarse grids' share):
+        // measured about 29 MB and 3.6 bytes per cell of the rank's rows
+        // on this project's split runs (BENCHMARKS.md), allowed for with
+        // a margin.
+        per_rank += PROCESS_BYTES + SLACK_BYTES_PER_CELL * grid.len().div_ceil(ranks);
         match scene.indenter {
             layered_contact::scene::IndenterSpec::HeightMap { .. } => per_rank += 24 * grid.len(),
             layered_contact::scene::IndenterSpec::RoughSurface { .. } => {
