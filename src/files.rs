@@ -19,15 +19,8 @@ pub(crate) const MAX_TEXT_MAP_BYTES: u64 = (crate::grid::MAX_CELLS as u64) << 5;
 /// The bytes of the regular file at `path`, at most `limit` of them; the
 /// error is a sentence for the caller's typed error.
 pub(crate) fn read_bounded(path: &Path, limit: u64) -> Result<Vec<u8>, String> {
-    let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
-    let metadata = file.metadata().map_err(|e| e.to_string())?;
-    if !metadata.is_file() {
-        return Err("not a regular file (a device, a pipe or a folder cannot be read)".into());
-    }
+    let (file, metadata) = open_bounded(path, limit)?;
     let too_long = |bytes: u64| format!("{bytes} bytes, more than the {limit} bytes read at most");
-    if metadata.len() > limit {
-        return Err(too_long(metadata.len()));
-    }
     let mut bytes = Vec::new();
     bytes
         .try_reserve_exact(metadata.len() as usize)
@@ -40,6 +33,26 @@ pub(crate) fn read_bounded(path: &Path, limit: u64) -> Result<Vec<u8>, String> {
         return Err(too_long(bytes.len() as u64));
     }
     Ok(bytes)
+}
+
+/// The regular file at `path`, if it holds at most `limit` bytes, and its
+/// metadata; the error is a sentence for the caller's typed error.
+pub(crate) fn open_bounded(
+    path: &Path,
+    limit: u64,
+) -> Result<(std::fs::File, std::fs::Metadata), String> {
+    let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
+    let metadata = file.metadata().map_err(|e| e.to_string())?;
+    if !metadata.is_file() {
+        return Err("not a regular file (a device, a pipe or a folder cannot be read)".into());
+    }
+    if metadata.len() > limit {
+        return Err(format!(
+            "{} bytes, more than the {limit} bytes read at most",
+            metadata.len()
+        ));
+    }
+    Ok((file, metadata))
 }
 
 /// The text of the regular file at `path`, at most `limit` bytes of UTF-8.

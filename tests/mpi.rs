@@ -67,22 +67,62 @@ fn mpirun(np: &str) -> Command {
 
 /// The tool (`layered-contact run`) on a rough force cycle, on one process
 /// and under `mpirun -np 2`: the curves agree to 1e-12 (depth and force)
-/// and exactly (contact area).
+/// and exactly (contact area). The surface is synthesised by the scene (in
+/// shares when split), then read from a `.npy` map (in bands of rows when
+/// split).
 fn the_tool_runs_a_scene_split() -> Result<(), String> {
-    let tool = env!("CARGO_BIN_EXE_layered-contact");
     let folder = std::env::temp_dir().join(format!("layered-contact-mpi-{}", std::process::id()));
     std::fs::create_dir_all(&folder).map_err(|e| e.to_string())?;
-    let scene = folder.join("rough.toml");
+    let grid = Grid::new(128, 128, 7.8125e-6).map_err(|e| e.to_string())?;
+    let map = SelfAffine {
+        hurst: 0.8,
+        amplitude: Amplitude::RmsSlope(0.1),
+        long_cutoff: 2.5e-4,
+        short_cutoff: 3.125e-5,
+        seed: 1,
+    }
+    .indenter(&grid)
+    .map_err(|e| e.to_string())?;
+    let npy = folder.join("map.npy");
+    let array = ndarray::Array2::from_shape_vec((128, 128), map.heights().to_vec())
+        .map_err(|e| e.to_string())?;
+    ndarray_npy::write_npy(&npy, &array).map_err(|e| e.to_string())?;
+    for (name, indenter) in [
+        (
+            "rough",
+            "kind = \"rough_surface\"\nhurst = 0.8\namplitude = { rms_slope = 0.1 }\n\
+             long_cutoff = 2.5e-4\nshort_cutoff = 3.125e-5\nseed = 1\ncells = 128\n\
+             spacing = 7.8125e-6\n"
+                .to_string(),
+        ),
+        (
+            "map",
+            format!(
+                "kind = \"height_map\"\npath = \"{}\"\nspacing = 7.8125e-6\n",
+                npy.display()
+            ),
+        ),
+    ] {
+        tool_split(&folder, name, &indenter)?;
+    }
+    std::fs::remove_dir_all(&folder).map_err(|e| e.to_string())
+}
+
+/// The tool on the scene with `indenter` (its section's keys), on one
+/// process and under `mpirun -np 2`, compared.
+fn tool_split(folder: &std::path::Path, name: &str, indenter: &str) -> Result<(), String> {
+    let tool = env!("CARGO_BIN_EXE_layered-contact");
+    let scene = folder.join(format!("{name}.toml"));
     std::fs::write(
         &scene,
-        "boundary = \"periodic\"\n\
-         [substrate]\nkind = \"layer_on_rigid_base\"\nyoungs_modulus = 1e6\n\
-         poisson_ratio = 0.49\nthickness = 1e-4\n\
-         [indenter]\nkind = \"rough_surface\"\nhurst = 0.8\n\
-         amplitude = { rms_slope = 0.1 }\nlong_cutoff = 2.5e-4\nshort_cutoff = 3.125e-5\n\
-         seed = 1\ncells = 128\nspacing = 7.8125e-6\n\
-         [protocol]\nkind = \"force_cycle\"\nmax_force = 2e-2\nsteps = 3\n\
-         [solver]\ntolerance = 1e-13\n",
+        format!(
+            "boundary = \"periodic\"\n\
+             [substrate]\nkind = \"layer_on_rigid_base\"\nyoungs_modulus = 1e6\n\
+             poisson_ratio = 0.49\nthickness = 1e-4\n\
+             [indenter]\n{indenter}\
+             [protocol]\nkind = \"force_cycle\"\nmax_force = 2e-2\nsteps = 3\n\
+             [solver]\ntolerance = 1e-13\n"
+        ),
     )
     .map_err(|e| e.to_string())?;
     let curve = |out: &str| -> Result<Vec<Vec<f64>>, String> {
@@ -101,12 +141,12 @@ fn the_tool_runs_a_scene_split() -> Result<(), String> {
     };
     let serial = Command::new(tool)
         .args(["run", scene.to_str().unwrap_or_default(), "-o"])
-        .arg(folder.join("serial"))
+        .arg(folder.join(format!("{name}-serial")))
         .output()
         .map_err(|e| e.to_string())?;
     let split = mpirun("2")
         .args([tool, "run", scene.to_str().unwrap_or_default(), "-o"])
-        .arg(folder.join("split"))
+        .arg(folder.join(format!("{name}-split")))
         .output()
         .map_err(|e| e.to_string())?;
     if !serial.status.success() || !split.status.success() {
@@ -119,7 +159,10 @@ fn the_tool_runs_a_scene_split() -> Result<(), String> {
     if !String::from_utf8_lossy(&split.stdout).contains("split across 2 MPI ranks") {
         return Err("the tool under mpirun did not split the scene".into());
     }
-    let (a, b) = (curve("serial")?, curve("split")?);
+    let (a, b) = (
+        curve(&format!("{name}-serial"))?,
+        curve(&format!("{name}-split"))?,
+    );
     if a.len() != 7 || a.len() != b.len() {
         return Err(format!("{} and {} steps (7 expected)", a.len(), b.len()));
     }
@@ -134,10 +177,10 @@ fn the_tool_runs_a_scene_split() -> Result<(), String> {
         }
     }
     println!(
-        "the tool under mpirun -np 2: {} steps, as on one process",
+        "the tool under mpirun -np 2 ({name}): {} steps, as on one process",
         a.len()
     );
-    std::fs::remove_dir_all(&folder).map_err(|e| e.to_string())
+    Ok(())
 }
 
 /// One case: a body, a grid, an indenter and loads.

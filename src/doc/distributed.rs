@@ -48,12 +48,17 @@
 //!
 //! What stays whole on every rank: the kernel's spectrum while it is built
 //! (each rank keeps its columns), the influence coefficients it is built
-//! from on an isolated grid, and a height map read from a file. A scene's
-//! rough surface is synthesised in shares: every rank draws the whole
-//! sequence of random numbers but keeps its band of the spectrum's
-//! columns, transforms them, exchanges the blocks once and transforms its
-//! rows, so that it holds its own rows only, equal bit for bit to the
-//! serial surface's (a unit test checks this on 1 to 5 ranks).
+//! from on an isolated grid, and a height map read from a text file. A
+//! scene's `.npy` height map (little-endian `float64` in C order, what
+//! NumPy writes by default; other layouts are read whole and cut) is read
+//! in bands: each rank reads its own rows from the file, and the grid from
+//! the header alone. A scene's rough surface is synthesised in shares:
+//! every rank draws the whole sequence of random numbers but keeps its
+//! band of the spectrum's columns, transforms them, exchanges the blocks
+//! once and transforms its rows, so that it holds its own rows only, equal
+//! bit for bit to the serial surface's (a unit test checks this on 1 to 5
+//! ranks; `tests/mpi.rs` runs the tool on both kinds split and serial). A
+//! rank that fails to read its rows stops every rank.
 //! [`distributed_memory_estimate`](crate::kernel::distributed_memory_estimate)
 //! counts these; `layered-contact check scene.toml --ranks N` prints it.
 //!

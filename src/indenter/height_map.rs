@@ -1,5 +1,7 @@
 //! An arbitrary indenter given by heights on a grid.
 
+use std::io::{Read, Seek, SeekFrom};
+use std::ops::Range;
 use std::path::Path;
 
 use crate::error::{Error, Result};
@@ -49,16 +51,7 @@ impl HeightMap {
                 found: heights.len(),
             });
         }
-        if let Some(&bad) = heights
-            .iter()
-            .find(|h| h.is_nan() || **h == f64::NEG_INFINITY)
-        {
-            return Err(Error::InvalidParameter {
-                name: "heights",
-                value: bad,
-                expected: "finite or +inf",
-            });
-        }
+        check_heights(&heights)?;
         Ok(HeightMap {
             grid,
             first_row: 0,
@@ -80,6 +73,7 @@ impl HeightMap {
                 found: heights.len(),
             });
         }
+        check_heights(&heights)?;
         Ok(HeightMap {
             grid,
             first_row,
@@ -125,6 +119,57 @@ impl HeightMap {
         let (rows, columns) = array.dim();
         let grid = Grid::new(rows, columns, spacing)?;
         HeightMap::new(grid, array.iter().copied().collect())
+    }
+
+    /// The grid of the `.npy` height map at `path` on cells of side
+    /// `spacing`, from its header alone.
+    ///
+    /// # Errors
+    /// As [`HeightMap::from_npy`], for the header.
+    pub(crate) fn npy_grid(path: &Path, spacing: f64) -> Result<Grid> {
+        let layout = NpyLayout::of(path)?;
+        Grid::new(layout.rows, layout.columns, spacing)
+    }
+
+    /// The rows `rows` of the `.npy` height map at `path` on cells of side
+    /// `spacing` ([`HeightMap::band`]): a distributed run's share, read
+    /// without the rest when the file holds little-endian `float64` in C
+    /// order (else read whole and cut).
+    ///
+    /// # Errors
+    /// As [`HeightMap::from_npy`].
+    pub(crate) fn npy_band(path: &Path, spacing: f64, rows: Range<usize>) -> Result<Self> {
+        let layout = NpyLayout::of(path)?;
+        let grid = Grid::new(layout.rows, layout.columns, spacing)?;
+        let columns = layout.columns;
+        let rows = rows.start.min(layout.rows)..rows.end.min(layout.rows);
+        if !layout.plain {
+            let whole = HeightMap::from_npy(path, spacing)?;
+            let heights = whole.heights[rows.start * columns..rows.end * columns].to_vec();
+            return HeightMap::band(grid, rows.start, heights);
+        }
+        let file_error = |detail: String| Error::HeightMapFile {
+            path: path.display().to_string(),
+            detail,
+        };
+        let (mut file, _) =
+            crate::files::open_bounded(path, crate::files::MAX_NPY_BYTES).map_err(file_error)?;
+        let length = rows.len() * columns * 8;
+        let mut bytes = Vec::new();
+        bytes
+            .try_reserve_exact(length)
+            .map_err(|_| file_error(format!("{length} bytes could not be allocated")))?;
+        bytes.resize(length, 0);
+        file.seek(SeekFrom::Start(
+            layout.data_start + (rows.start * columns * 8) as u64,
+        ))
+        .and_then(|_| file.read_exact(&mut bytes))
+        .map_err(|e| file_error(format!("its rows {rows:?}: {e}")))?;
+        let heights = bytes
+            .chunks_exact(8)
+            .map(|b| f64::from_le_bytes([b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7]]))
+            .collect();
+        HeightMap::band(grid, rows.start, heights)
     }
 
     /// A height map from a text file with one row of the map per line,
@@ -213,5 +258,154 @@ impl Indenter for HeightMap {
     fn bounding_radius(&self) -> f64 {
         let (lx, ly) = self.grid.extent();
         0.5 * lx.hypot(ly)
+    }
+}
+
+/// Every height finite or `+inf`.
+fn check_heights(heights: &[f64]) -> Result<()> {
+    match heights
+        .iter()
+        .find(|h| h.is_nan() || **h == f64::NEG_INFINITY)
+    {
+        Some(&bad) => Err(Error::InvalidParameter {
+            name: "heights",
+            value: bad,
+            expected: "finite or +inf",
+        }),
+        None => Ok(()),
+    }
+}
+
+/// Where a `.npy` file's values lie, from its header.
+struct NpyLayout {
+    rows: usize,
+    columns: usize,
+    /// The offset of the first value, bytes.
+    data_start: u64,
+    /// Whether the values are little-endian `float64` in C (row-major)
+    /// order, so that a band of rows is a range of bytes.
+    plain: bool,
+}
+
+impl NpyLayout {
+    fn of(path: &Path) -> Result<Self> {
+        let file_error = |detail: String| Error::HeightMapFile {
+            path: path.display().to_string(),
+            detail,
+        };
+        let (file, metadata) =
+            crate::files::open_bounded(path, crate::files::MAX_NPY_BYTES).map_err(file_error)?;
+        let mut counted = Counted {
+            inner: file,
+            bytes: 0,
+        };
+        let header = ndarray_npy::npy::header::Header::from_reader(&mut counted)
+            .map_err(|e| file_error(e.to_string()))?;
+        let (rows, columns) = match header.shape[..] {
+            [rows, columns] => (rows, columns),
+            _ => {
+                return Err(file_error(format!(
+                    "a height map is a 2D array, its header gives shape {:?}",
+                    header.shape
+                )))
+            }
+        };
+        let data_start = counted.bytes;
+        let holds = metadata.len().saturating_sub(data_start);
+        let claimed = (rows as u64)
+            .checked_mul(columns as u64)
+            .and_then(|n| n.checked_mul(8));
+        if claimed.is_none_or(|claimed| claimed > holds) {
+            return Err(file_error(format!(
+                "its header claims shape {:?} of 8-byte values, but {holds} bytes follow it",
+                header.shape
+            )));
+        }
+        let plain = !header.layout.is_fortran()
+            && header.type_descriptor == <f64 as ndarray_npy::WritableElement>::type_descriptor();
+        Ok(NpyLayout {
+            rows,
+            columns,
+            data_start,
+            plain,
+        })
+    }
+}
+
+/// A reader that counts the bytes read through it.
+struct Counted<R> {
+    inner: R,
+    bytes: u64,
+}
+
+impl<R: Read> Read for Counted<R> {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        let n = self.inner.read(buf)?;
+        self.bytes += n as u64;
+        Ok(n)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use ndarray::ShapeBuilder;
+
+    use super::*;
+
+    /// A band of rows read from a `.npy` file equals those rows of the
+    /// whole map, whether read directly (C order) or through the whole
+    /// file (Fortran order); the grid comes from the header alone.
+    #[test]
+    fn a_band_of_an_npy_map_equals_its_rows_of_the_whole() {
+        let dir = std::env::temp_dir().join(format!("lc-npy-band-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let values: Vec<f64> = (0..35).map(|k| 1e-6 * f64::from(k * k % 11)).collect();
+        for (name, array) in [
+            (
+                "c.npy",
+                ndarray::Array2::from_shape_vec((7, 5), values.clone()),
+            ),
+            (
+                "f.npy",
+                ndarray::Array2::from_shape_vec((7, 5).f(), values.clone()),
+            ),
+        ] {
+            let path = dir.join(name);
+            ndarray_npy::write_npy(&path, &array.unwrap()).unwrap();
+            let whole = HeightMap::from_npy(&path, 1e-4).unwrap();
+            // C order is read in bands; Fortran order through the whole.
+            assert_eq!(NpyLayout::of(&path).unwrap().plain, name == "c.npy");
+            assert_eq!(HeightMap::npy_grid(&path, 1e-4).unwrap(), *whole.grid());
+            for rows in [0..7, 2..5, 6..7, 3..3] {
+                let band = HeightMap::npy_band(&path, 1e-4, rows.clone()).unwrap();
+                assert_eq!(
+                    band.heights(),
+                    &whole.heights()[rows.start * 5..rows.end * 5]
+                );
+                for i in 0..7 {
+                    let (x, y) = whole.grid().cell_centre(i, 4);
+                    let expected = if rows.contains(&i) {
+                        whole.height(x, y)
+                    } else {
+                        f64::INFINITY
+                    };
+                    assert_eq!(
+                        band.height(x, y),
+                        expected,
+                        "{name}, rows {rows:?}, row {i}"
+                    );
+                }
+            }
+        }
+        // A header that claims more values than follow is refused.
+        let short = dir.join("short.npy");
+        let mut bytes = std::fs::read(dir.join("c.npy")).unwrap();
+        bytes.truncate(bytes.len() - 8);
+        std::fs::write(&short, bytes).unwrap();
+        assert!(matches!(
+            HeightMap::npy_band(&short, 1e-4, 0..1),
+            Err(Error::HeightMapFile { .. })
+        ));
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -140,10 +140,14 @@ impl Scene {
         for _ in 0..=MAX_GRID_GROWTH {
             let active = grown.as_mut().unwrap_or(&mut *solver);
             // Built for each grid (a grid grows only for the shapes that
-            // are cheap to build): a rank of a split run synthesises only
-            // its own rows of a rough surface.
-            let split = active.operator().slab().map(|slab| (slab, active.grid()));
-            let indenter = self.indenter.build_on(self.tilt, split)?;
+            // are cheap to build): a rank of a split run synthesises or
+            // reads only its own rows of a rough surface or `.npy` map.
+            let slab = active.operator().slab();
+            let built = self
+                .indenter
+                .build_on(self.tilt, slab.map(|slab| (slab, active.grid())));
+            // A rank that cannot read its rows stops every rank.
+            let indenter = crate::slab::agree(slab, built)?;
             let outcome = match (self.adhesion.works(), self.solver.adhesion_method) {
                 (Some(works), AdhesionMethod::EnergyBalance) => {
                     energy::run(self, active, &*indenter, works, progress, observer)?

@@ -250,7 +250,9 @@ pub enum IndenterSpec {
     /// Heights (m) read from a file ([`HeightMap::from_npy`] for a `.npy`
     /// file, [`HeightMap::from_text`] for any other), on square cells of
     /// side `spacing`, centred on the axis. The indenter's lowest point
-    /// should be at height 0 (it then touches first at depth 0).
+    /// should be at height 0 (it then touches first at depth 0). Split
+    /// across MPI ranks, each rank reads its own rows of a `.npy` map (a
+    /// text map is read whole on every rank).
     HeightMap {
         /// The file; relative paths are relative to the working directory.
         path: PathBuf,
@@ -385,7 +387,14 @@ impl IndenterSpec {
                 half_angle,
                 base_radius,
             } => Box::new(Cone::new(*half_angle, *base_radius)?),
-            IndenterSpec::HeightMap { path, spacing } => Box::new(read_height_map(path, *spacing)?),
+            IndenterSpec::HeightMap { path, spacing } => match split {
+                // A rank of a split run on the map's own grid reads its rows
+                // of a `.npy` map only.
+                Some((slab, on)) if is_npy(path) && HeightMap::npy_grid(path, *spacing)? == *on => {
+                    Box::new(HeightMap::npy_band(path, *spacing, slab.rows())?)
+                }
+                _ => Box::new(read_height_map(path, *spacing)?),
+            },
             IndenterSpec::RoughSurface { .. } => {
                 let (surface, grid) = self.rough_surface()?.ok_or(Error::Internal {
                     what: "scene indenter",
@@ -413,6 +422,9 @@ impl IndenterSpec {
     /// As [`IndenterSpec::build`].
     pub fn map_grid(&self) -> Result<Option<Grid>> {
         Ok(match self {
+            IndenterSpec::HeightMap { path, spacing } if is_npy(path) => {
+                Some(HeightMap::npy_grid(path, *spacing)?)
+            }
             IndenterSpec::HeightMap { path, spacing } => {
                 Some(*read_height_map(path, *spacing)?.grid())
             }
@@ -467,14 +479,17 @@ impl IndenterSpec {
 
 /// A height map from `path`: `.npy` by its extension, plain text otherwise.
 fn read_height_map(path: &std::path::Path, spacing: f64) -> Result<HeightMap> {
-    if path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("npy"))
-    {
+    if is_npy(path) {
         HeightMap::from_npy(path, spacing)
     } else {
         HeightMap::from_text(path, spacing)
     }
+}
+
+/// Whether `path` names a `.npy` file (by its extension).
+fn is_npy(path: &std::path::Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("npy"))
 }
 
 /// Which adhesion a scene calls for.

@@ -257,23 +257,31 @@ fn check(scene: &Scene, ranks: Option<usize>) -> Result<()> {
     if let Some(ranks) = ranks {
         let mut per_rank =
             layered_contact::kernel::distributed_memory_estimate(&grid, scene.boundary, ranks);
-        // Every rank reads a height map file whole (its bytes, the array
-        // and the map: 24 bytes per cell); a rough surface is synthesised
-        // in shares, and each rank keeps its own rows (8 bytes per cell of
-        // them; the synthesis's 24 come and go before the solver's
-        // vectors are allocated).
         // The process itself, its MPI library and what the count above
         // leaves out (the allocator's slack, the coarse grids' share):
         // measured about 29 MB and 3.6 bytes per cell of the rank's rows
         // on this project's split runs (BENCHMARKS.md), allowed for with
         // a margin.
         per_rank += PROCESS_BYTES + SLACK_BYTES_PER_CELL * grid.len().div_ceil(ranks);
-        match scene.indenter {
-            layered_contact::scene::IndenterSpec::HeightMap { .. } => per_rank += 24 * grid.len(),
-            layered_contact::scene::IndenterSpec::RoughSurface { .. } => {
-                per_rank += 8 * grid.len().div_ceil(ranks)
-            }
-            _ => {}
+        // Every rank reads a text height map whole (its bytes, the values
+        // and the map: 24 bytes per cell); a rank reads its own rows of a
+        // `.npy` map, and synthesises its share of a rough surface, and
+        // keeps them (8 bytes per cell of its rows; the synthesis's 24
+        // come and go before the solver's vectors are allocated).
+        let own_rows = match &scene.indenter {
+            layered_contact::scene::IndenterSpec::HeightMap { path, .. } => path
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("npy")),
+            layered_contact::scene::IndenterSpec::RoughSurface { .. } => true,
+            _ => false,
+        };
+        if own_rows {
+            per_rank += 8 * grid.len().div_ceil(ranks);
+        } else if matches!(
+            scene.indenter,
+            layered_contact::scene::IndenterSpec::HeightMap { .. }
+        ) {
+            per_rank += 24 * grid.len();
         }
         say!(
             "memory split across {ranks} MPI ranks: about {:.1} MB per rank",
