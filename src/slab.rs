@@ -200,6 +200,14 @@ pub(crate) mod threads {
             self.board.barrier.wait();
             all
         }
+
+        /// Each value folded over the ranks, in rank order, from `start`.
+        fn reduce(&self, values: &mut [f64], start: f64, op: fn(f64, f64) -> f64) {
+            let all = self.gather(values);
+            for (k, v) in values.iter_mut().enumerate() {
+                *v = all.iter().map(|r| r[k]).fold(start, op);
+            }
+        }
     }
 
     impl Exchange for Threads {
@@ -210,16 +218,10 @@ pub(crate) mod threads {
             self.ranks
         }
         fn sum(&self, values: &mut [f64]) {
-            let all = self.gather(values);
-            for (k, v) in values.iter_mut().enumerate() {
-                *v = all.iter().map(|r| r[k]).sum();
-            }
+            self.reduce(values, 0.0, |a, b| a + b);
         }
         fn min(&self, values: &mut [f64]) {
-            let all = self.gather(values);
-            for (k, v) in values.iter_mut().enumerate() {
-                *v = all.iter().map(|r| r[k]).fold(f64::INFINITY, f64::min);
-            }
+            self.reduce(values, f64::INFINITY, f64::min);
         }
         fn all_to_all(
             &self,

@@ -52,7 +52,7 @@ use crate::error::{Error, Result};
 use crate::grid::Grid;
 use crate::indenter::HeightMap;
 use crate::kernel::wavenumber;
-use crate::slab::{even_starts, lengths, Slab};
+use crate::slab::{agree, even_starts, lengths, Slab};
 
 /// How large a synthesised surface is.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -114,7 +114,9 @@ impl SelfAffine {
     /// rows. The sums that normalise the surface are taken in the serial
     /// order: the spectrum's as the coefficients are drawn, the heights' row
     /// by row, each row's sum added over the ranks (where the other ranks
-    /// add zeros) and the rows then summed in order.
+    /// add zeros) and the rows then summed in order. A rank that fails (to
+    /// allocate, say) says so to the others before the next exchange, so
+    /// that every rank returns the error and none waits.
     pub(crate) fn synthesise(&self, grid: &Grid, slab: Option<&Slab>) -> Result<Vec<f64>> {
         self.check(grid)?;
         let (n0, n1) = (grid.rows(), grid.columns());
@@ -129,8 +131,10 @@ impl SelfAffine {
         let width = own.len();
         let mut rng = ChaCha8Rng::seed_from_u64(self.seed);
         // This rank's columns of the half-spectrum, row-major (kx, ky).
-        let mut spectrum: Vec<Complex<f64>> =
-            crate::error::zeroed(n0 * width, "rough-surface spectrum")?;
+        let mut spectrum: Vec<Complex<f64>> = agree(
+            slab,
+            crate::error::zeroed(n0 * width, "rough-surface spectrum"),
+        )?;
         // The columns ky = 0 (and ky = n1/2) hold their own conjugates:
         // they are made Hermitian in kx, so that their transforms are real,
         // from the partners kept here.
@@ -202,21 +206,26 @@ impl SelfAffine {
             None => spectrum,
         };
         let plan = RealFftPlanner::<f64>::new().plan_fft_inverse(n1);
-        let mut heights: Vec<f64> = crate::error::zeroed(rows.len() * n1, "rough-surface heights")?;
-        for (row, out) in spectrum
-            .chunks_exact_mut(half)
-            .zip(heights.chunks_exact_mut(n1))
-        {
-            row[0].im = 0.0;
-            if n1 % 2 == 0 {
-                row[half - 1].im = 0.0;
-            }
-            plan.process(row, out).map_err(|e| Error::Internal {
-                what: "rough-surface synthesis",
-                detail: e.to_string(),
-            })?;
-        }
+        let heights = crate::error::zeroed(rows.len() * n1, "rough-surface heights").and_then(
+            |mut heights: Vec<f64>| {
+                for (row, out) in spectrum
+                    .chunks_exact_mut(half)
+                    .zip(heights.chunks_exact_mut(n1))
+                {
+                    row[0].im = 0.0;
+                    if n1 % 2 == 0 {
+                        row[half - 1].im = 0.0;
+                    }
+                    plan.process(row, out).map_err(|e| Error::Internal {
+                        what: "rough-surface synthesis",
+                        detail: e.to_string(),
+                    })?;
+                }
+                Ok(heights)
+            },
+        );
         drop(spectrum);
+        let mut heights = agree(slab, heights)?;
         // Cancel the mean's rounding and the rms height's.
         let mean = grid_sum(slab, n0, rows.start, &heights, n1, |h| h) / cells;
         heights.iter_mut().for_each(|h| *h -= mean);
@@ -224,8 +233,10 @@ impl SelfAffine {
             let rms = (grid_sum(slab, n0, rows.start, &heights, n1, |h| h * h) / cells).sqrt();
             heights.iter_mut().for_each(|h| *h *= target / rms);
         }
-        let finite = crate::solver::all_finite("rough-surface synthesis", &heights);
-        crate::slab::agree(slab, finite)?;
+        agree(
+            slab,
+            crate::solver::all_finite("rough-surface synthesis", &heights),
+        )?;
         Ok(heights)
     }
 
@@ -310,13 +321,17 @@ fn transpose(
     let widths = lengths(column_starts);
     let send_counts: Vec<usize> = slab.counts().iter().map(|r| r * width).collect();
     let receive_counts: Vec<usize> = widths.iter().map(|w| w * rows).collect();
-    let mut receive: Vec<Complex<f64>> =
-        crate::error::zeroed(rows * half, "rough-surface spectrum (exchanged)")?;
+    let mut receive: Vec<Complex<f64>> = agree(
+        Some(slab),
+        crate::error::zeroed(rows * half, "rough-surface spectrum (exchanged)"),
+    )?;
     slab.exchange
         .all_to_all(&spectrum, &send_counts, &mut receive, &receive_counts);
     drop(spectrum);
-    let mut assembled: Vec<Complex<f64>> =
-        crate::error::zeroed(rows * half, "rough-surface spectrum (rows)")?;
+    let mut assembled: Vec<Complex<f64>> = agree(
+        Some(slab),
+        crate::error::zeroed(rows * half, "rough-surface spectrum (rows)"),
+    )?;
     let mut blocks = receive.as_slice();
     for (&start, &w) in column_starts.iter().zip(&widths) {
         let (block, rest) = blocks.split_at(w * rows);
