@@ -55,7 +55,9 @@
 #![allow(clippy::needless_range_loop)]
 
 mod adhesive;
+mod anderson;
 mod cg_ends;
+mod cohesive;
 mod griffith;
 mod multiresolution;
 mod params;
@@ -75,6 +77,7 @@ use crate::substrate::Substrate;
 
 use workspace::Workspace;
 
+pub use cohesive::{CohesivePullOff, CohesiveZone, COHESIVE_ZONE_CELLS};
 pub use griffith::{
     AdhesiveBranches, BranchPoint, EdgePoint, EdgeRelease, Reach, EDGE_SHIFT, EDGE_WINDOW,
 };

@@ -144,7 +144,7 @@ impl ContactSolver {
         Ok((solution, end))
     }
 
-    fn constrained_cg(
+    pub(super) fn constrained_cg(
         &mut self,
         control: Control,
         warm: Option<Cow<'_, WarmStart>>,

@@ -1,0 +1,418 @@
+//! Adhesive contact in the JKR limit through a cohesive zone resolved on the
+//! grid: a short-range adhesive law whose range shrinks with the cell, so
+//! that its zone spans a fixed number of cells and the solution tends to
+//! the JKR limit as the grid is refined, for any contact shape.
+//!
+//! The law (energy per unit area of a gap `g`, `w(g) = -dgamma (1 -
+//! g/rho)^2` for `g < rho`, zero beyond) pulls with the tension `sigma(g) =
+//! -(2 dgamma / rho)(1 - g/rho)`; its zone, where the gap is open but below
+//! `rho`, is `E* rho^2 / (4 dgamma)` long (Maugis 1992, J. Colloid
+//! Interface Sci. 150, 243, for Dugdale's law; the same scale for this
+//! one). With the range `rho = 2 sqrt(dgamma k Delta / E*)` it spans `k`
+//! cells. The JKR limit is the zone's vanishing width: `G = dgamma` holds
+//! at every point of every edge without the edge being located.
+//!
+//! Each equilibrium is a fixed point: for given tensions `t` (one per cell,
+//! from the gaps) the contact is the non-adhesive one of the profile
+//! shifted by their displacement, `f + K t`, solved by the constrained
+//! conjugate gradients for the compressive part `p' = p - t >= 0`; the
+//! gaps of that solution give new tensions. The map contracts at a rate of
+//! about `1 / (2 pi)` set by the law's negative stiffness `2 dgamma /
+//! rho^2` against the compliance over a zone; near a pull-off (a fold of
+//! the equilibrium branch) it slows down, and beyond it the iteration
+//! walks the contact off, as the quasi-static jump does.
+
+use std::borrow::Cow;
+
+use crate::error::{Error, Result};
+use crate::indenter::Indenter;
+
+use super::anderson::Anderson;
+use super::polonsky_keer::Control;
+use super::{check_finite, ContactSolver, Observer, Solution, WarmStart};
+
+/// The default width of the cohesive zone, in cells.
+pub const COHESIVE_ZONE_CELLS: f64 = 8.0;
+
+/// Differences kept by the Anderson mixing of the tensions.
+const MIXING_DEPTH: usize = 5;
+
+/// Fixed-point rounds of one cohesive solve before it gives up.
+const MAX_ROUNDS: usize = 2000;
+
+/// A short-range adhesive law whose range shrinks with the cell: the JKR
+/// limit for any contact shape ([`ContactSolver::solve_depth_cohesive`]).
+///
+/// ```
+/// use layered_contact::solver::CohesiveZone;
+///
+/// let law = CohesiveZone::new(0.05, 0.05)?.with_zone_cells(8.0)?;
+/// // On 1 um cells of a rubber of E* = 1 MPa: rho = 2 sqrt(dgamma k Delta / E*).
+/// let rho = law.range(0.05, 1e-6, 1e6);
+/// assert!((rho - 2.0 * (0.05 * 8.0 * 1e-6 / 1e6f64).sqrt()).abs() < 1e-18);
+/// Ok::<(), layered_contact::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CohesiveZone {
+    advancing: f64,
+    receding: f64,
+    zone_cells: f64,
+}
+
+impl CohesiveZone {
+    /// The law for the advancing (loading, `dgamma0`) and receding
+    /// (unloading, `dgamma1 >= dgamma0`) works of adhesion, J/m^2, with a
+    /// zone of [`COHESIVE_ZONE_CELLS`] cells. A cell bonds when it touches
+    /// and then holds with `dgamma1` until its gap exceeds the receding
+    /// range; a cell that has not touched pulls with `dgamma0`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for a negative or non-finite work of
+    /// adhesion or `advancing > receding`.
+    pub fn new(advancing: f64, receding: f64) -> Result<Self> {
+        let (advancing, receding) = crate::error::works_of_adhesion(advancing, receding)?;
+        Ok(CohesiveZone {
+            advancing,
+            receding,
+            zone_cells: COHESIVE_ZONE_CELLS,
+        })
+    }
+
+    /// The same law with a zone of `cells` cells (2 to 256): wider zones
+    /// leave less lattice trapping and converge later.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] outside `[2, 256]`.
+    pub fn with_zone_cells(self, cells: f64) -> Result<Self> {
+        if !(2.0..=256.0).contains(&cells) {
+            return Err(Error::InvalidParameter {
+                name: "cohesive zone width (cells)",
+                value: cells,
+                expected: "in [2, 256]",
+            });
+        }
+        Ok(CohesiveZone {
+            zone_cells: cells,
+            ..self
+        })
+    }
+
+    /// The advancing work of adhesion, J/m^2.
+    pub fn advancing(&self) -> f64 {
+        self.advancing
+    }
+
+    /// The receding work of adhesion, J/m^2.
+    pub fn receding(&self) -> f64 {
+        self.receding
+    }
+
+    /// The zone's width in cells.
+    pub fn zone_cells(&self) -> f64 {
+        self.zone_cells
+    }
+
+    /// The law's range `rho = 2 sqrt(dgamma k Delta / E*)` (m) for a work
+    /// of adhesion `work` on cells of `spacing` (m) of a surface of contact
+    /// modulus `contact_modulus` (Pa).
+    pub fn range(&self, work: f64, spacing: f64, contact_modulus: f64) -> f64 {
+        2.0 * (work * self.zone_cells * spacing / contact_modulus).sqrt()
+    }
+}
+
+/// One work of adhesion's law on this grid: the peak tension and the range.
+#[derive(Clone, Copy)]
+struct Law {
+    peak: f64,
+    range: f64,
+}
+
+impl Law {
+    fn new(zone: &CohesiveZone, work: f64, spacing: f64, modulus: f64) -> Self {
+        let range = zone.range(work, spacing, modulus);
+        let peak = if range > 0.0 { 2.0 * work / range } else { 0.0 };
+        Law { peak, range }
+    }
+
+    /// The tension (Pa, `<= 0`) at a gap `g >= 0`.
+    fn tension(&self, g: f64) -> f64 {
+        if g < self.range {
+            -self.peak * (1.0 - g / self.range)
+        } else {
+            0.0
+        }
+    }
+}
+
+impl ContactSolver {
+    /// Adhesive contact at `depth` (m) in the JKR limit by a cohesive zone
+    /// resolved on the grid ([`CohesiveZone`]; the method is described in
+    /// [`doc::adhesion`](crate::doc::adhesion)). Any contact shape, on
+    /// isolated and periodic grids: edges advance and recede where their
+    /// local energy release rate asks, contacts split and merge. `warm`
+    /// carries the history (the last pressures and which cells are bonded).
+    ///
+    /// The solution's pressure includes the tension of the open zone
+    /// (cells out of contact within the law's range); its contact cells
+    /// are those whose gap is closed.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for a non-finite depth;
+    /// [`Error::ShapeMismatch`] for a warm start from another grid;
+    /// [`Error::NoConvergence`] if the fixed point or an inner solve does
+    /// not converge; as [`ContactSolver::solve_depth`] otherwise.
+    pub fn solve_depth_cohesive<I: Indenter + ?Sized>(
+        &mut self,
+        indenter: &I,
+        depth: f64,
+        zone: &CohesiveZone,
+        warm: Option<&WarmStart>,
+        observer: &mut dyn Observer,
+    ) -> Result<(Solution, WarmStart)> {
+        self.serial_only("solve depth cohesive")?;
+        check_finite("depth", depth)?;
+        self.check_warm_start(warm)?;
+        self.sample_profile(indenter)?;
+        let spacing = self.grid().spacing();
+        let modulus = self.surface_contact_modulus;
+        let advancing = Law::new(zone, zone.advancing, spacing, modulus);
+        let receding = Law::new(zone, zone.receding, spacing, modulus);
+        let n = self.local_cells();
+        let base = self.workspace.profile.clone();
+        let mut bonded = match warm {
+            Some(w) => w.attached.clone(),
+            None => vec![false; n],
+        };
+        // The tensions from the gaps of the last pressures at this depth.
+        let mut total = match warm {
+            Some(w) => w.pressure.clone(),
+            None => vec![0.0; n],
+        };
+        let mut kt = super::cell_vector(n)?;
+        self.operator.apply(&total, &mut kt)?;
+        let mut tension = vec![0.0; n];
+        for c in 0..n {
+            let g = (base[c] - depth + kt[c]).max(0.0);
+            let law = if bonded[c] { &receding } else { &advancing };
+            tension[c] = law.tension(g);
+        }
+        let mut compressive: Vec<f64> = (0..n).map(|c| (total[c] - tension[c]).max(0.0)).collect();
+        let scale = receding.peak.max(f64::MIN_POSITIVE);
+        let outer = self.params.tolerance;
+        let tolerance = outer.max(1e-13);
+        let mut iterations = 0usize;
+        let mut change = f64::INFINITY;
+        let mut mixer = Anderson::new(MIXING_DEPTH);
+        let mut mapped = vec![0.0; n];
+        for _ in 0..MAX_ROUNDS {
+            self.check_interrupt("the cohesive zone's fixed point")?;
+            self.operator.apply(&tension, &mut kt)?;
+            for c in 0..n {
+                self.workspace.profile[c] = base[c] + kt[c];
+            }
+            let start = WarmStart {
+                pressure: std::mem::take(&mut compressive),
+                attached: Vec::new(),
+            };
+            // Inner solves only as tight as the fixed point has come: a
+            // hundredth of the last change of the tensions.
+            let inner = tolerance.max(1e-2 * change.min(scale) / scale);
+            self.params.tolerance = inner;
+            let solved =
+                self.constrained_cg(Control::Depth(depth), Some(Cow::Owned(start)), observer);
+            self.params.tolerance = outer;
+            let (solution, end) = match solved {
+                Ok(pair) => pair,
+                Err(e) => {
+                    self.workspace.profile.copy_from_slice(&base);
+                    return Err(e);
+                }
+            };
+            iterations += solution.iterations;
+            compressive = end.pressure;
+            // The tensions the law gives at the gaps of this solution.
+            let previous = change;
+            change = 0.0;
+            let ws = &self.workspace;
+            for c in 0..n {
+                let touching = compressive[c] > 0.0;
+                let g = if touching {
+                    0.0
+                } else {
+                    (ws.profile[c] - depth + ws.displacement[c]).max(0.0)
+                };
+                if touching {
+                    bonded[c] = true;
+                } else if g >= receding.range {
+                    bonded[c] = false;
+                }
+                let law = if bonded[c] { &receding } else { &advancing };
+                mapped[c] = law.tension(g);
+                change = f64::max(change, (mapped[c] - tension[c]).abs());
+            }
+            if change <= tolerance * scale && inner <= tolerance {
+                // The solution of the tensions just solved for (the law's
+                // tensions at its gaps differ by at most `change`).
+                let contact: Vec<bool> = compressive.iter().map(|p| *p > 0.0).collect();
+                for c in 0..n {
+                    total[c] = compressive[c] + tension[c];
+                }
+                let ws = &mut self.workspace;
+                ws.profile.copy_from_slice(&base);
+                for (u, k) in ws.displacement.iter_mut().zip(&kt) {
+                    *u += k;
+                }
+                let residual = change / scale;
+                let solution = self.solution(&total, depth, iterations, residual, Some(&contact));
+                super::check_solution(&solution)?;
+                return Ok((
+                    solution,
+                    WarmStart {
+                        pressure: total,
+                        attached: bonded,
+                    },
+                ));
+            }
+            // A round that made the residual grow (a contact set or a bond
+            // changed) restarts the mixing from the plain step.
+            if change > previous {
+                mixer.reset();
+            }
+            mixer.next(&mut tension, &mapped);
+            for (t, m) in tension.iter_mut().zip(&mapped) {
+                // Mixed tensions stay within the law's values (and zero
+                // where the law gives zero: cells out of reach).
+                *t = if *m == 0.0 { 0.0 } else { t.clamp(-scale, 0.0) };
+            }
+            // The compressive part keeps the total pressure of the cells.
+            for c in 0..n {
+                if compressive[c] > 0.0 {
+                    compressive[c] = (compressive[c] + mapped[c] - tension[c]).max(0.0);
+                }
+            }
+        }
+        self.workspace.profile.copy_from_slice(&base);
+        Err(Error::NoConvergence {
+            method: "cohesive zone fixed point",
+            iterations: MAX_ROUNDS,
+            residual: change / scale,
+        })
+    }
+}
+
+/// The pull-off of an unloading under displacement control
+/// ([`ContactSolver::cohesive_pull_off`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CohesivePullOff {
+    /// The most tensile force along the unloading, N (negative).
+    pub force: f64,
+    /// The depth where it is reached, m.
+    pub depth: f64,
+    /// Cohesive solves taken.
+    pub solves: usize,
+    /// Conjugate-gradient iterations over all of them.
+    pub iterations: usize,
+}
+
+/// Unloading steps before [`ContactSolver::cohesive_pull_off`] gives up.
+const MAX_UNLOADING_STEPS: usize = 100_000;
+
+/// Finer steps over the last two coarse ones, for the minimum.
+const REFINEMENT: usize = 8;
+
+impl ContactSolver {
+    /// The pull-off force under displacement control: from the equilibrium
+    /// at `depth` (reached from `warm`, or cold), the indenter is withdrawn
+    /// in steps of `step` (m) with [`solve_depth_cohesive`](Self::solve_depth_cohesive)
+    /// until the force rises again or the contact is lost; the last two
+    /// steps are walked again in steps eight times finer and the minimum
+    /// taken from the parabola through the three lowest forces (exact to
+    /// `O(step^3)` where the force is smooth).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for a step that is not positive and
+    /// finite or a start already past the pull-off (the force rises at the
+    /// first step); [`Error::NoConvergence`] after 100000 steps; as
+    /// [`solve_depth_cohesive`](Self::solve_depth_cohesive) otherwise.
+    pub fn cohesive_pull_off<I: Indenter + ?Sized>(
+        &mut self,
+        indenter: &I,
+        zone: &CohesiveZone,
+        depth: f64,
+        step: f64,
+        warm: Option<&WarmStart>,
+        observer: &mut dyn Observer,
+    ) -> Result<CohesivePullOff> {
+        let step = crate::error::positive_finite("unloading step", step)?;
+        let mut tally = CohesivePullOff {
+            force: f64::INFINITY,
+            depth,
+            solves: 0,
+            iterations: 0,
+        };
+        let mut solve = |solver: &mut Self, d: f64, w: Option<&WarmStart>| {
+            let (s, end) = solver.solve_depth_cohesive(indenter, d, zone, w, observer)?;
+            tally.solves += 1;
+            tally.iterations += s.iterations;
+            Ok::<_, Error>((s.force, s.contact_cells, end))
+        };
+        let (force, _, end) = solve(self, depth, warm)?;
+        // The last three (depth, force, state) of the walk.
+        let mut walk = vec![(depth, force, end)];
+        for k in 1..=MAX_UNLOADING_STEPS {
+            let d = depth - k as f64 * step;
+            let (force, contact, end) = solve(self, d, Some(&walk[walk.len() - 1].2))?;
+            let rising = force > walk[walk.len() - 1].1;
+            if rising && walk.len() == 1 {
+                return Err(Error::InvalidParameter {
+                    name: "start depth of the unloading (m)",
+                    value: depth,
+                    expected: "before the pull-off (the force rose at the first step)",
+                });
+            }
+            walk.push((d, force, end));
+            if walk.len() > 3 {
+                walk.remove(0);
+            }
+            if rising || contact == 0 {
+                break;
+            }
+            if k == MAX_UNLOADING_STEPS {
+                return Err(Error::NoConvergence {
+                    method: "cohesive pull-off (unloading steps)",
+                    iterations: k,
+                    residual: force,
+                });
+            }
+        }
+        // Walk the last two steps again, finer.
+        let (start, _, state) = walk.swap_remove(0);
+        let fine = step / REFINEMENT as f64;
+        let mut state = state;
+        let mut points = Vec::with_capacity(2 * REFINEMENT + 1);
+        for k in 0..=2 * REFINEMENT {
+            let d = start - k as f64 * fine;
+            let (force, contact, end) = solve(self, d, Some(&state))?;
+            state = end;
+            points.push((d, force));
+            if contact == 0 {
+                break;
+            }
+        }
+        let lowest = (0..points.len())
+            .min_by(|&a, &b| points[a].1.total_cmp(&points[b].1))
+            .unwrap_or(0);
+        let (d1, f1) = points[lowest];
+        (tally.depth, tally.force) = (d1, f1);
+        if lowest > 0 && lowest + 1 < points.len() {
+            let (f0, f2) = (points[lowest - 1].1, points[lowest + 1].1);
+            let curvature = f0 - 2.0 * f1 + f2;
+            if curvature > 0.0 {
+                let shift = 0.5 * (f0 - f2) / curvature;
+                tally.force = f1 + 0.25 * (f2 - f0) * shift;
+                tally.depth = d1 - shift * fine;
+            }
+        }
+        Ok(tally)
+    }
+}
