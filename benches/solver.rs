@@ -5,7 +5,9 @@
 //! comparison; finer curves are timed by the `accuracy` example); the
 //! adhesive branches of an elliptic paraboloid (radii 10 and 20 mm, a
 //! non-axisymmetric family of contact sets) at 64 and 128 cells across its
-//! pull-off contact; a rough periodic contact (the surface of
+//! pull-off contact; the cohesive-zone pull-off of Johnson's sinusoid with
+//! its crests at 45 degrees to the grid (64 and 128 cells per wavelength);
+//! a rough periodic contact (the surface of
 //! `benches/peers/rough.py`, N = 256 and 512); the cost of one CG iteration
 //! against a padded FFT round trip.
 
@@ -23,7 +25,7 @@ use layered_contact::scene::{
     Adhesion, AdhesionMethod, IndenterSpec, Protocol, Resolution, Scene, SolverSettings,
     SubstrateSpec,
 };
-use layered_contact::solver::{ContactSolver, IterationInfo, Reach, SolverParams};
+use layered_contact::solver::{CohesiveZone, ContactSolver, IterationInfo, Reach, SolverParams};
 use layered_contact::topography::{Amplitude, SelfAffine};
 use layered_contact::{Boundary, Grid, Material, Substrate};
 
@@ -305,5 +307,63 @@ fn bench_iteration(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_solver, bench_rough, bench_iteration);
+/// One unloading to the pull-off through the cohesive zone (8 cells) of
+/// Johnson's sinusoid (`alpha = 0.3`, rubber half-space, periodic) with its
+/// crests at 45 degrees to the grid, `n` cells per wavelength on `n sqrt 2`
+/// cells each way (the case of `tests/cohesive.rs`).
+fn bench_cohesive(c: &mut Criterion) {
+    let rubber = Material::new(1e6, 0.48).unwrap();
+    let work = 0.05;
+    let mut group = c.benchmark_group("cohesive pull-off (sinusoid at 45 degrees, alpha = 0.3)");
+    group.sample_size(10);
+    for n in [64usize, 128] {
+        let cells = (n as f64 * 2f64.sqrt()).round() as usize;
+        let spacing = 1e-5;
+        let wavelength = cells as f64 * spacing / 2f64.sqrt();
+        let amplitude = (2.0 * wavelength * work
+            / (std::f64::consts::PI.powi(2) * rubber.contact_modulus()))
+        .sqrt()
+            / 0.3;
+        let grid = Grid::square_of_side(cells, cells as f64 * spacing).unwrap();
+        let values = (0..grid.len())
+            .map(|c| {
+                let phase = ((c / cells + c % cells) % cells) as f64 / cells as f64;
+                amplitude * (1.0 - (2.0 * std::f64::consts::PI * phase).cos())
+            })
+            .collect();
+        let surface = HeightMap::new(grid, values).unwrap();
+        let zone = CohesiveZone::new(work, work).unwrap();
+        let mut solver = ContactSolver::new(
+            &Substrate::half_space(rubber),
+            &grid,
+            Boundary::Periodic,
+            SolverParams::default(),
+        )
+        .unwrap();
+        group.bench_function(BenchmarkId::from_parameter(n), |b| {
+            b.iter(|| {
+                solver
+                    .cohesive_pull_off(
+                        &surface,
+                        &zone,
+                        0.6 * amplitude,
+                        black_box(amplitude / 40.0),
+                        None,
+                        &mut (),
+                    )
+                    .unwrap()
+                    .force
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(
+    benches,
+    bench_solver,
+    bench_rough,
+    bench_cohesive,
+    bench_iteration
+);
 criterion_main!(benches);

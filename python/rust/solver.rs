@@ -247,12 +247,72 @@ impl ContactSolver {
         })
     }
 
+    /// The adhesive equilibrium at `depth` (m) in the JKR limit through a
+    /// cohesive zone resolved on the grid (any contact shape, isolated or
+    /// periodic; the crate's `doc::adhesion`): works of adhesion
+    /// `advancing` and `receding` (J/m^2, `receding` defaults to
+    /// `advancing`), the zone `zone_cells` cells wide. `warm_start` carries
+    /// the history (which cells are bonded).
+    #[pyo3(signature = (indenter, depth, advancing, receding=None, zone_cells=lc::solver::COHESIVE_ZONE_CELLS, warm_start=false))]
+    #[allow(clippy::too_many_arguments)]
+    fn solve_depth_cohesive(
+        &mut self,
+        py: Python<'_>,
+        indenter: &Indenter,
+        depth: f64,
+        advancing: f64,
+        receding: Option<f64>,
+        zone_cells: f64,
+        warm_start: bool,
+    ) -> PyResult<Solution> {
+        let zone = cohesive_zone(advancing, receding, zone_cells)?;
+        self.solve(py, indenter, warm_start, move |solver, shape, warm| {
+            solver.solve_depth_cohesive(shape, depth, &zone, warm, &mut ())
+        })
+    }
+
+    /// The pull-off under displacement control through the cohesive zone:
+    /// from the equilibrium at `depth` (m, reached cold), withdrawn in
+    /// steps of `step` (m) until the force rises again, the minimum refined
+    /// on steps eight times finer. Returns `(force, depth)` (N, m).
+    #[pyo3(signature = (indenter, depth, step, advancing, receding=None, zone_cells=lc::solver::COHESIVE_ZONE_CELLS))]
+    #[allow(clippy::too_many_arguments)]
+    fn cohesive_pull_off(
+        &mut self,
+        py: Python<'_>,
+        indenter: &Indenter,
+        depth: f64,
+        step: f64,
+        advancing: f64,
+        receding: Option<f64>,
+        zone_cells: f64,
+    ) -> PyResult<(f64, f64)> {
+        let zone = cohesive_zone(advancing, receding, zone_cells)?;
+        let shape = Shared(indenter.inner.clone());
+        let inner = &mut self.inner;
+        let pull_off = py
+            .detach(|| inner.cohesive_pull_off(&shape, &zone, depth, step, None, &mut ()))
+            .py_err()?;
+        Ok((pull_off.force, pull_off.depth))
+    }
+
     /// `(rows, columns, spacing)`.
     #[getter]
     fn grid(&self) -> (usize, usize, f64) {
         let g = self.inner.grid();
         (g.rows(), g.columns(), g.spacing())
     }
+}
+
+/// The cohesive law of the given works of adhesion and zone width.
+fn cohesive_zone(
+    advancing: f64,
+    receding: Option<f64>,
+    zone_cells: f64,
+) -> PyResult<lc::solver::CohesiveZone> {
+    lc::solver::CohesiveZone::new(advancing, receding.unwrap_or(advancing))
+        .and_then(|zone| zone.with_zone_cells(zone_cells))
+        .py_err()
 }
 
 type Solved = lc::Result<(lc::solver::Solution, lc::solver::WarmStart)>;

@@ -315,7 +315,7 @@ pub struct CohesivePullOff {
 }
 
 /// Unloading steps before [`ContactSolver::cohesive_pull_off`] gives up.
-const MAX_UNLOADING_STEPS: usize = 100_000;
+const MAX_UNLOADING_STEPS: usize = 10_000;
 
 /// Finer steps over the last two coarse ones, for the minimum.
 const REFINEMENT: usize = 8;
@@ -332,7 +332,7 @@ impl ContactSolver {
     /// # Errors
     /// [`Error::InvalidParameter`] for a step that is not positive and
     /// finite or a start already past the pull-off (the force rises at the
-    /// first step); [`Error::NoConvergence`] after 100000 steps; as
+    /// first step); [`Error::NoConvergence`] after 10000 steps; as
     /// [`solve_depth_cohesive`](Self::solve_depth_cohesive) otherwise.
     pub fn cohesive_pull_off<I: Indenter + ?Sized>(
         &mut self,
@@ -344,6 +344,15 @@ impl ContactSolver {
         observer: &mut dyn Observer,
     ) -> Result<CohesivePullOff> {
         let step = crate::error::positive_finite("unloading step", step)?;
+        check_finite("depth", depth)?;
+        if depth - step / REFINEMENT as f64 == depth {
+            return Err(Error::InvalidParameter {
+                name: "unloading step (m)",
+                value: step,
+                expected: "at least eight units in the last place of the depth (a smaller \
+                           step does not move the indenter)",
+            });
+        }
         let mut tally = CohesivePullOff {
             force: f64::INFINITY,
             depth,

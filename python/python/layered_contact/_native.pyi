@@ -144,6 +144,24 @@ class ContactSolver:
     ) -> Self: ...
     def solve_depth(self, indenter: Indenter, depth: float, warm_start: bool = False) -> Solution: ...
     def solve_force(self, indenter: Indenter, force: float, warm_start: bool = False) -> Solution: ...
+    def solve_depth_cohesive(
+        self,
+        indenter: Indenter,
+        depth: float,
+        advancing: float,
+        receding: float | None = None,
+        zone_cells: float = 8.0,
+        warm_start: bool = False,
+    ) -> Solution: ...
+    def cohesive_pull_off(
+        self,
+        indenter: Indenter,
+        depth: float,
+        step: float,
+        advancing: float,
+        receding: float | None = None,
+        zone_cells: float = 8.0,
+    ) -> Tuple[float, float]: ...
     @property
     def grid(self) -> Tuple[int, int, float]: ...
 
