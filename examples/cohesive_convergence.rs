@@ -1,111 +1,195 @@
 //! The cohesive-zone adhesion ([`ContactSolver::solve_depth_cohesive`])
 //! against exact JKR references, for `BENCHMARKS.md` ("Adhesion through a
-//! resolved cohesive zone"): the pull-off of the JKR sphere on a half-space
-//! (Johnson, Kendall & Roberts 1971) at `N` cells across its pull-off
-//! contact, and of Johnson's (1995) sinusoid with its crests along the grid
-//! and at 45 degrees at the same wavelength in cells.
+//! resolved cohesive zone"): pull-off errors against the resolution for
 //!
-//! `cargo run --release --example cohesive_convergence -- [zone cells] [sphere N...] [-- sinusoid n...]`
-//! Defaults: zone of 8 cells, sphere at 16 32 64, sinusoid at 181 362.
+//! * `sphere`: the JKR sphere on a half-space (Johnson, Kendall & Roberts
+//!   1971), `N` cells across the pull-off contact;
+//! * `layer`: the same sphere on a rubber film on a rigid base as thick as
+//!   the half-space's pull-off contact radius, against the exact layered
+//!   JKR pull-off ([`Axisymmetric`](layered_contact::analytic::Axisymmetric));
+//! * `punch`: Kendall's flat punch (1971), `N` cells across, against the
+//!   punch of the staircase's area;
+//! * `sinusoid`: Johnson's (1995) sinusoid, `alpha = 0.3`, `N` cells per
+//!   wavelength with the crests along the grid (`N^2` cells) and at 45
+//!   degrees (`(N sqrt 2)^2` cells).
+//!
+//! `cargo run --release --example cohesive_convergence -- [zone cells] [case N...]...`,
+//! for example `-- 8 sphere 16 32 64 punch 16 32 sinusoid 128 181`.
 use std::f64::consts::PI;
 use std::time::Instant;
 
-use layered_contact::analytic::{JkrSinusoid, JkrSphere};
-use layered_contact::indenter::{HeightMap, Sphere};
+use layered_contact::analytic::{Axisymmetric, JkrFlatPunch, JkrSinusoid, JkrSphere};
+use layered_contact::indenter::{FlatPunch, HeightMap, Sphere};
 use layered_contact::solver::{CohesiveZone, ContactSolver, SolverParams};
-use layered_contact::{Boundary, Grid, Material, Substrate};
+use layered_contact::{Boundary, Grid, Material, Result, Substrate};
 
-fn main() -> Result<(), layered_contact::Error> {
+const WORK: f64 = 0.05;
+const RADIUS: f64 = 0.01;
+
+fn main() -> Result<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let split = args.iter().position(|a| a == "--").unwrap_or(args.len());
     let k: f64 = args.first().and_then(|a| a.parse().ok()).unwrap_or(8.0);
-    let mut spheres: Vec<usize> = args[1.min(split)..split]
-        .iter()
-        .filter_map(|a| a.parse().ok())
-        .collect();
-    let mut waves: Vec<usize> = args[(split + 1).min(args.len())..]
-        .iter()
-        .filter_map(|a| a.parse().ok())
-        .collect();
-    if split == args.len() && spheres.is_empty() {
-        spheres = vec![16, 32, 64];
-        waves = vec![181, 362];
-    }
+    // CURVATURE_CORRECTION=c overrides the default (0 turns it off).
+    let correction: f64 = std::env::var("CURVATURE_CORRECTION")
+        .ok()
+        .and_then(|c| c.parse().ok())
+        .unwrap_or(layered_contact::solver::CURVATURE_CORRECTION);
+    let zone = CohesiveZone::new(WORK, WORK)?
+        .with_zone_cells(k)?
+        .with_curvature_correction(correction)?;
     let rubber = Material::new(1e6, 0.48)?;
-    let work = 0.05;
-    let zone = CohesiveZone::new(work, work)?.with_zone_cells(k)?;
-    let jkr = JkrSphere::new(&rubber, 0.01, work)?;
-    let a_po = jkr.pull_off_contact_radius();
-    for n in spheres {
-        let delta = 2.0 * a_po / n as f64;
-        let cells = 2 * (4.0 * a_po / delta).ceil() as usize;
-        let grid = Grid::square_of_side(cells, cells as f64 * delta)?;
-        let mut solver = ContactSolver::new(
-            &Substrate::half_space(rubber),
-            &grid,
-            Boundary::Isolated,
-            SolverParams::default(),
-        )?;
-        let sphere = Sphere::new(0.01)?;
-        let start = jkr.depth(1.6 * a_po);
-        let step = jkr.critical_depth().abs() / 10.0;
+    let mut case = String::new();
+    for arg in args.iter().skip(1) {
+        let Ok(n) = arg.parse::<usize>() else {
+            case = arg.clone();
+            continue;
+        };
         let clock = Instant::now();
-        let p = solver.cohesive_pull_off(&sphere, &zone, start, step, None, &mut ())?;
-        println!(
-            "sphere, zone {k} cells, N = {n} ({cells}^2): error {:+.4} %, {} solves, {} iterations, {:.1} s",
-            100.0 * (p.force / jkr.pull_off_force() - 1.0),
-            p.solves,
-            p.iterations,
-            clock.elapsed().as_secs_f64()
-        );
-    }
-    for n in waves {
-        // Crests along the grid on n x n cells, and at 45 degrees on the
-        // grid whose wavelength has the same length in cells (n sqrt 2).
-        for (wave, cells) in [
-            ((1usize, 0usize), n),
-            ((1, 1), (n as f64 * 2f64.sqrt()).round() as usize),
-        ] {
-            let delta = 1e-5;
-            let side = cells as f64 * delta;
-            let wavelength = side / ((wave.0 * wave.0 + wave.1 * wave.1) as f64).sqrt();
-            let estar = rubber.contact_modulus();
-            let amplitude = (2.0 * wavelength * work / (PI * PI * estar)).sqrt() / 0.3;
-            let exact = JkrSinusoid::new(&rubber, wavelength, amplitude, work)?;
-            let grid = Grid::square_of_side(cells, side)?;
-            let values = (0..grid.len())
-                .map(|c| {
-                    let (i, j) = (c / cells, c % cells);
-                    let phase = ((wave.0 * i + wave.1 * j) % cells) as f64 / cells as f64;
-                    amplitude * (1.0 - (2.0 * PI * phase).cos())
-                })
-                .collect();
-            let map = HeightMap::new(grid, values)?;
-            let mut solver = ContactSolver::new(
-                &Substrate::half_space(rubber),
-                &grid,
-                Boundary::Periodic,
-                SolverParams::default(),
-            )?;
-            let (exact_pull_off, _) = exact.pull_off()?;
-            let clock = Instant::now();
-            let p = solver.cohesive_pull_off(
-                &map,
-                &zone,
-                0.6 * amplitude,
-                amplitude / 40.0,
-                None,
-                &mut (),
-            )?;
-            println!(
-                "sinusoid {wave:?}, zone {k} cells, {:.1} cells per wavelength ({cells}^2): error {:+.4} %, {} solves, {} iterations, {:.1} s",
-                wavelength / delta,
-                100.0 * (p.force / (side * side) / exact_pull_off - 1.0),
-                p.solves,
-                p.iterations,
-                clock.elapsed().as_secs_f64()
-            );
+        match case.as_str() {
+            "sphere" | "layer" => {
+                let jkr = JkrSphere::new(&rubber, RADIUS, WORK)?;
+                let a = jkr.pull_off_contact_radius();
+                let (substrate, exact) = if case == "sphere" {
+                    (Substrate::half_space(rubber), jkr.pull_off_force())
+                } else {
+                    let film = Substrate::layer_on_rigid_base(rubber, a)?;
+                    let body = Axisymmetric::up_to_contact_radius(&film, 4.0 * a)?;
+                    let exact = body.paraboloid(RADIUS, WORK)?.pull_off()?.load_control;
+                    (film, exact.force)
+                };
+                let delta = 2.0 * a / n as f64;
+                let cells = 2 * (4.0 * a / delta).ceil() as usize;
+                let grid = Grid::square_of_side(cells, cells as f64 * delta)?;
+                let mut solver = ContactSolver::new(
+                    &substrate,
+                    &grid,
+                    Boundary::Isolated,
+                    SolverParams::default(),
+                )?;
+                let step = jkr.critical_depth().abs() / 10.0;
+                let start = jkr.depth(1.6 * a);
+                let p = solver.cohesive_pull_off(
+                    &Sphere::new(RADIUS)?,
+                    &zone,
+                    start,
+                    step,
+                    None,
+                    &mut (),
+                )?;
+                report(
+                    &case,
+                    k,
+                    n,
+                    cells,
+                    p.force / exact - 1.0,
+                    p.solves,
+                    p.iterations,
+                    clock,
+                );
+            }
+            "punch" => {
+                let a = 1e-3;
+                let delta = 2.0 * a / n as f64;
+                let cells = n + 4;
+                let grid = Grid::square_of_side(cells, cells as f64 * delta)?;
+                let face = (0..grid.len())
+                    .filter(|&c| {
+                        let (x, y) = grid.cell_centre(c / cells, c % cells);
+                        x * x + y * y <= a * a
+                    })
+                    .count();
+                let equal_area = (face as f64 * delta * delta / PI).sqrt();
+                let exact = JkrFlatPunch::new(&rubber, equal_area, WORK)?;
+                let mut solver = ContactSolver::new(
+                    &Substrate::half_space(rubber),
+                    &grid,
+                    Boundary::Isolated,
+                    SolverParams::default(),
+                )?;
+                let dc = exact.critical_depth().abs();
+                // Refused (pinned at the rim); the error says why.
+                let punch = FlatPunch::new(a)?;
+                match solver.cohesive_pull_off(&punch, &zone, 0.3 * dc, dc / 20.0, None, &mut ()) {
+                    Ok(p) => {
+                        let error = p.force / exact.pull_off_force() - 1.0;
+                        report(&case, k, n, cells, error, p.solves, p.iterations, clock);
+                    }
+                    Err(e) => println!("{case:16} zone {k:>4} cells  N {n:>4}: {e}"),
+                }
+            }
+            "sinusoid" => {
+                for (wave, cells) in [
+                    ((1, 0), n),
+                    ((1, 1), (n as f64 * 2f64.sqrt()).round() as usize),
+                ] {
+                    let clock = Instant::now();
+                    let (error, solves, iterations) = sinusoid(&rubber, &zone, wave, cells)?;
+                    let name = if wave == (1, 0) {
+                        "sinusoid along"
+                    } else {
+                        "sinusoid 45 deg"
+                    };
+                    report(name, k, n, cells, error, solves, iterations, clock);
+                }
+            }
+            other => println!("unknown case {other:?}"),
         }
     }
     Ok(())
+}
+
+#[allow(clippy::too_many_arguments)]
+fn report(
+    case: &str,
+    k: f64,
+    n: usize,
+    cells: usize,
+    error: f64,
+    solves: usize,
+    iterations: usize,
+    clock: Instant,
+) {
+    println!(
+        "{case:16} zone {k:>4} cells  N {n:>4} ({cells}^2)  error {:+.4} %  {solves} solves  {iterations} iterations  {:.1} s",
+        100.0 * error,
+        clock.elapsed().as_secs_f64()
+    );
+}
+
+/// The pull-off error of Johnson's sinusoid with wave vector `wave` on
+/// `cells^2` periodic cells, its solves and iterations.
+fn sinusoid(
+    rubber: &Material,
+    zone: &CohesiveZone,
+    wave: (usize, usize),
+    cells: usize,
+) -> Result<(f64, usize, usize)> {
+    let delta = 1e-5;
+    let side = cells as f64 * delta;
+    let wavelength = side / ((wave.0 * wave.0 + wave.1 * wave.1) as f64).sqrt();
+    let amplitude = (2.0 * wavelength * WORK / (PI * PI * rubber.contact_modulus())).sqrt() / 0.3;
+    let exact = JkrSinusoid::new(rubber, wavelength, amplitude, WORK)?;
+    let grid = Grid::square_of_side(cells, side)?;
+    let values = (0..grid.len())
+        .map(|c| {
+            let (i, j) = (c / cells, c % cells);
+            let phase = ((wave.0 * i + wave.1 * j) % cells) as f64 / cells as f64;
+            amplitude * (1.0 - (2.0 * PI * phase).cos())
+        })
+        .collect();
+    let map = HeightMap::new(grid, values)?;
+    let mut solver = ContactSolver::new(
+        &Substrate::half_space(*rubber),
+        &grid,
+        Boundary::Periodic,
+        SolverParams::default(),
+    )?;
+    let (pull_off, _) = exact.pull_off()?;
+    let p =
+        solver.cohesive_pull_off(&map, zone, 0.6 * amplitude, amplitude / 40.0, None, &mut ())?;
+    Ok((
+        p.force / (side * side) / pull_off - 1.0,
+        p.solves,
+        p.iterations,
+    ))
 }

@@ -58,6 +58,8 @@ mod adhesive;
 mod anderson;
 mod cg_ends;
 mod cohesive;
+mod cohesive_pull_off;
+mod curvature;
 mod griffith;
 mod multiresolution;
 mod params;
@@ -77,7 +79,8 @@ use crate::substrate::Substrate;
 
 use workspace::Workspace;
 
-pub use cohesive::{CohesivePullOff, CohesiveZone, COHESIVE_ZONE_CELLS};
+pub use cohesive::{CohesiveZone, COHESIVE_ZONE_CELLS, CURVATURE_CORRECTION};
+pub use cohesive_pull_off::CohesivePullOff;
 pub use griffith::{
     AdhesiveBranches, BranchPoint, EdgePoint, EdgeRelease, Reach, EDGE_SHIFT, EDGE_WINDOW,
 };
