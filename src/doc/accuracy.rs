@@ -113,6 +113,8 @@
 //! | wavy surface, crests along the grid, energy balance | Johnson (1995) pull-off | -1.16 % | -0.46 % | -0.19 % | 1.3 |
 //! | wavy surface, crests at 45 degrees, energy balance | Johnson (1995) pull-off | -1.09 % | -0.46 % | -0.19 % | 1.2 |
 //! | wavy surface, crests along two cells by one, energy balance | Johnson (1995) pull-off | | -0.46 % | -0.20 % | 1.2 |
+//! | wavy surface, crests along the grid, cohesive zone | Johnson (1995) pull-off | -4.27 % | -1.64 % | -0.43 % | 1.9 |
+//! | wavy surface, crests at 45 degrees, cohesive zone | Johnson (1995) pull-off | -4.15 % | -1.57 % | -0.51 % | 1.6 |
 //!
 //! (`N` = lines of cells per wavelength, `alpha = 0.3`: 30 cells across the
 //! pull-off contact at 256 along the grid; -0.087 % at 512 along two cells
@@ -125,6 +127,16 @@
 //! | elliptical punch, `b/a = 1/2`, at 0, 30, 45 degrees | onset force | 1.5 to 4.1 % | 0.3 to 1.0 % | 0.2 to 0.8 % |
 //! | circular punch under moment, mean over the edge | `K(theta)` | -4.4 % | -1.05 % | -0.42 % |
 //! | JKR sphere off the cell centres, mean over the edge | JKR `G` | -3.2 % | -1.5 % | -0.8 % |
+//!
+//! The cohesive zone on compact contacts (default curvature correction;
+//! `N` cells across the pull-off contact; `BENCHMARKS.md`, "Adhesion
+//! through a resolved cohesive zone"):
+//!
+//! | case | reference | 16 | 32 | 64 | 128 | order |
+//! |---|---|---|---|---|---|---|
+//! | JKR sphere, half-space | JKR pull-off | -6.39 % | -2.43 % | -0.66 % | -0.16 % | 2 |
+//! | JKR sphere, film `h = a` on glass | exact layered JKR | -8.67 % | -3.29 % | -1.00 % | | 1.7 |
+//! | Kendall's flat punch | Kendall (1971) | refused: pinned at the rim (-23 % at 64) | | | | |
 //!
 //! For the `1/N` quantities Richardson extrapolation of two resolutions
 //! ([`richardson`](crate::scene::richardson)) gains one to two orders of

@@ -46,6 +46,13 @@ pub const CURVATURE_CORRECTION: f64 = 0.2;
 /// Differences kept by the Anderson mixing of the tensions.
 const MIXING_DEPTH: usize = 5;
 
+/// Rounds without a new smallest change of the tensions before the
+/// fixed point turns to damped plain steps (and halves their damping).
+const STALL: usize = 25;
+
+/// The smallest damping of the plain steps.
+const MIN_DAMPING: f64 = 1.0 / 64.0;
+
 /// Fixed-point rounds of one cohesive solve before it gives up.
 const MAX_ROUNDS: usize = 2000;
 
@@ -250,6 +257,8 @@ impl ContactSolver {
         let mut mixer = Anderson::new(MIXING_DEPTH);
         let mut mapped = vec![0.0; n];
         let mut bend: Vec<f64> = Vec::new();
+        let (mut best, mut stall, mut streak, mut damping) =
+            (f64::INFINITY, 0usize, 0usize, 1.0f64);
         // Each cell's largest tension, Pa (its law's peak).
         let mut caps = vec![0.0; n];
         for _ in 0..MAX_ROUNDS {
@@ -347,7 +356,35 @@ impl ContactSolver {
             if change > previous {
                 mixer.reset();
             }
-            mixer.next(&mut tension, &mapped);
+            // Where the contact sets keep changing the mixing can settle
+            // into a cycle (a rough film at 256^2 repeated twelve rounds):
+            // after STALL rounds without a new smallest change, plain
+            // steps, damped by half at every further stall and undamped
+            // again, step by step, while they make progress (back to the
+            // mixing at full steps).
+            if change < best {
+                (best, stall) = (change, 0);
+                streak += 1;
+                if streak >= STALL / 2 && damping < 1.0 {
+                    damping = (2.0 * damping).min(1.0);
+                    streak = 0;
+                }
+            } else {
+                stall += 1;
+                streak = 0;
+                if stall >= STALL {
+                    damping = (0.5 * damping).max(MIN_DAMPING);
+                    stall = 0;
+                    mixer.reset();
+                }
+            }
+            if damping < 1.0 {
+                for (t, m) in tension.iter_mut().zip(&mapped) {
+                    *t += damping * (m - *t);
+                }
+            } else {
+                mixer.next(&mut tension, &mapped);
+            }
             for ((t, m), cap) in tension.iter_mut().zip(&mapped).zip(&caps) {
                 // Mixed tensions stay within the law's values (and zero
                 // where the law gives zero: cells out of reach).
