@@ -9,6 +9,10 @@
 //!   JKR pull-off ([`Axisymmetric`](layered_contact::analytic::Axisymmetric));
 //! * `punch`: Kendall's flat punch (1971), `N` cells across, against the
 //!   punch of the staircase's area;
+//! * `ellipse`: an elliptic paraboloid (radii 10 and 20 mm) on the
+//!   half-space, `N` cells across the short axis of a 0.46 mm pull-off
+//!   contact, beside the energy balance on the same grid (no exact
+//!   reference: the two methods' difference);
 //! * `sinusoid`: Johnson's (1995) sinusoid, `alpha = 0.3`, `N` cells per
 //!   wavelength with the crests along the grid (`N^2` cells) and at 45
 //!   degrees (`(N sqrt 2)^2` cells).
@@ -20,7 +24,7 @@ use std::time::Instant;
 
 use layered_contact::analytic::{Axisymmetric, JkrFlatPunch, JkrSinusoid, JkrSphere};
 use layered_contact::indenter::{FlatPunch, HeightMap, Sphere};
-use layered_contact::solver::{CohesiveZone, ContactSolver, SolverParams};
+use layered_contact::solver::{CohesiveZone, ContactSolver, Reach, SolverParams};
 use layered_contact::{Boundary, Grid, Material, Result, Substrate};
 
 const WORK: f64 = 0.05;
@@ -116,6 +120,42 @@ fn main() -> Result<()> {
                     }
                     Err(e) => println!("{case:16} zone {k:>4} cells  N {n:>4}: {e}"),
                 }
+            }
+            "ellipse" => {
+                let (rx, ry) = (0.01, 0.02);
+                let delta = 0.46e-3 / n as f64;
+                let cells = 4 * n;
+                let grid = Grid::square_of_side(cells, cells as f64 * delta)?;
+                let values = (0..grid.len())
+                    .map(|c| {
+                        let (x, y) = grid.cell_centre(c / cells, c % cells);
+                        x * x / (2.0 * rx) + y * y / (2.0 * ry)
+                    })
+                    .collect();
+                let map = HeightMap::new(grid, values)?;
+                let mut solver = ContactSolver::new(
+                    &Substrate::half_space(rubber),
+                    &grid,
+                    Boundary::Isolated,
+                    SolverParams::default(),
+                )?;
+                // The sphere of the same mean curvature for the depths.
+                let jkr = JkrSphere::new(&rubber, (rx * ry).sqrt(), WORK)?;
+                let start = jkr.depth(1.5 * jkr.pull_off_contact_radius());
+                let step = jkr.critical_depth().abs() / 10.0;
+                let p = solver.cohesive_pull_off(&map, &zone, start, step, None, &mut ())?;
+                let branches =
+                    solver.adhesive_branches(&map, Reach::Depth(start), WORK, WORK, &mut ())?;
+                let peak = branches.at_depth(start, 0.0)?;
+                let balance = branches.pull_off(peak.contact_area)?.force;
+                println!(
+                    "ellipse          zone {k:>4} cells  N {n:>4} ({cells}^2)  cohesive {:.6e} N, energy balance {:.6e} N, difference {:+.4} %  {} solves  {:.1} s",
+                    p.force,
+                    balance,
+                    100.0 * (p.force / balance - 1.0),
+                    p.solves,
+                    clock.elapsed().as_secs_f64()
+                );
             }
             "sinusoid" => {
                 for (wave, cells) in [

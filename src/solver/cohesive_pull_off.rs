@@ -10,6 +10,7 @@ use super::{check_finite, CohesiveZone, ContactSolver, Observer, WarmStart};
 /// The pull-off of an unloading under displacement control
 /// ([`ContactSolver::cohesive_pull_off`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct CohesivePullOff {
     /// The most tensile force along the unloading, N (negative).
     pub force: f64,

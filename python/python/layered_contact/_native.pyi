@@ -150,7 +150,7 @@ class ContactSolver:
         depth: float,
         advancing: float,
         receding: float | None = None,
-        zone_cells: float = 8.0,
+        zone_cells: float = ...,
         warm_start: bool = False,
     ) -> Solution: ...
     def cohesive_pull_off(
@@ -160,7 +160,7 @@ class ContactSolver:
         step: float,
         advancing: float,
         receding: float | None = None,
-        zone_cells: float = 8.0,
+        zone_cells: float = ...,
     ) -> Tuple[float, float]: ...
     @property
     def grid(self) -> Tuple[int, int, float]: ...
