@@ -275,6 +275,9 @@ fn bad_input_is_a_typed_error_never_a_nan() {
     // Unloading steps that cannot move the indenter.
     for step in [0.0, -1e-6, f64::NAN, 1e-30] {
         let r = solver.cohesive_pull_off(&sphere, &zone, 1e-6, step, None, &mut ());
-        assert!(matches!(r, Err(Error::InvalidParameter { .. })), "{step}: {r:?}");
+        assert!(
+            matches!(r, Err(Error::InvalidParameter { .. })),
+            "{step}: {r:?}"
+        );
     }
 }
