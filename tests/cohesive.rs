@@ -272,6 +272,9 @@ fn bad_input_is_a_typed_error_never_a_nan() {
             assert!(s.force.is_finite() && s.depth.is_finite(), "{depth}: {s:?}");
         }
     }
+    // An unloading that starts without contact has no pull-off.
+    let r = solver.cohesive_pull_off(&sphere, &zone, -1e-3, 1e-7, None, &mut ());
+    assert!(matches!(r, Err(Error::InvalidParameter { .. })), "{r:?}");
     // Unloading steps that cannot move the indenter.
     for step in [0.0, -1e-6, f64::NAN, 1e-30] {
         let r = solver.cohesive_pull_off(&sphere, &zone, 1e-6, step, None, &mut ());

@@ -291,9 +291,8 @@ impl ContactSolver {
             let previous = change;
             change = 0.0;
             // The edge's curvature from the first round's contact, then
-            // held for the rest of the solve (recomputed each round, the
-            // law's change with the contact kept the fixed point from
-            // settling).
+            // held for the rest of the solve: the law does not change with
+            // the contact within a solve.
             if zone.curvature_correction > 0.0 && bend.is_empty() {
                 let contact: Vec<bool> = compressive.iter().map(|p| *p > 0.0).collect();
                 let grid = self.grid();

@@ -39,8 +39,8 @@ impl ContactSolver {
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for a step that is not positive and
-    /// finite or a start already past the pull-off (the force rises at the
-    /// first step); [`Error::Unsupported`] if the contact at the pull-off
+    /// finite, a start without contact or already past the pull-off (the
+    /// force rises at the first step); [`Error::Unsupported`] if the contact at the pull-off
     /// is pinned at the rim of the indenter's face (a cell in contact next
     /// to one it cannot reach: a flat punch), which the zone does not
     /// represent; [`Error::NoConvergence`] after 10000 steps; as
@@ -87,7 +87,14 @@ impl ContactSolver {
                         .any(|m| m.is_some_and(|m| !profile[m].is_finite()))
             })
         };
-        let (force, _, end) = solve(self, depth, warm)?;
+        let (force, contact, end) = solve(self, depth, warm)?;
+        if contact == 0 {
+            return Err(Error::InvalidParameter {
+                name: "start depth of the unloading (m)",
+                value: depth,
+                expected: "a depth at which the indenter is in contact",
+            });
+        }
         // The last three (depth, force, state) of the walk.
         let mut walk = vec![(depth, force, end)];
         for k in 1..=MAX_UNLOADING_STEPS {
