@@ -177,9 +177,9 @@ impl Law {
         Law { peak, range }
     }
 
-    /// The law of `factor` times the work of adhesion over the same zone.
-    fn scaled(&self, factor: f64) -> Law {
-        let root = factor.sqrt();
+    /// The law of `root^2` times the work of adhesion over the same zone
+    /// (its peak and range scale with `root`).
+    fn scaled(&self, root: f64) -> Law {
         Law {
             peak: self.peak * root,
             range: self.range * root,
@@ -256,7 +256,9 @@ impl ContactSolver {
         let mut change = f64::INFINITY;
         let mut mixer = Anderson::new(MIXING_DEPTH);
         let mut mapped = vec![0.0; n];
-        let mut bend: Vec<f64> = Vec::new();
+        // Each cell's law as the square root of its curvature factor (the
+        // peak and the range scale with it), set at the first round.
+        let mut roots: Vec<f64> = Vec::new();
         let (mut best, mut stall, mut streak, mut damping) =
             (f64::INFINITY, 0usize, 0usize, 1.0f64);
         // Each cell's largest tension, Pa (its law's peak).
@@ -293,16 +295,23 @@ impl ContactSolver {
             // The edge's curvature from the first round's contact, then
             // held for the rest of the solve: the law does not change with
             // the contact within a solve.
-            if zone.curvature_correction > 0.0 && bend.is_empty() {
+            if zone.curvature_correction > 0.0 && roots.is_empty() {
                 let contact: Vec<bool> = compressive.iter().map(|p| *p > 0.0).collect();
                 let grid = self.grid();
-                bend = super::curvature::edge_curvature(
+                let bend = super::curvature::edge_curvature(
                     &contact,
                     grid.rows(),
                     grid.columns(),
                     self.operator.boundary() == crate::grid::Boundary::Periodic,
                     zone.zone_cells,
                 );
+                roots = bend
+                    .iter()
+                    .map(|kappa| {
+                        let bias = zone.curvature_correction * kappa * zone.zone_cells;
+                        (1.0 / (1.0 + bias.clamp(-0.5, 0.5))).sqrt()
+                    })
+                    .collect();
             }
             let ws = &self.workspace;
             for c in 0..n {
@@ -312,17 +321,14 @@ impl ContactSolver {
                 } else {
                     (ws.profile[c] - depth + ws.displacement[c]).max(0.0)
                 };
-                let factor = bend.get(c).map_or(1.0, |kappa| {
-                    1.0 / (1.0
-                        + (zone.curvature_correction * kappa * zone.zone_cells).clamp(-0.5, 0.5))
-                });
+                let root = roots.get(c).copied().unwrap_or(1.0);
                 if touching {
                     bonded[c] = true;
-                } else if g >= receding.range * factor.sqrt() {
+                } else if g >= receding.range * root {
                     bonded[c] = false;
                 }
                 let law = if bonded[c] { &receding } else { &advancing };
-                let law = law.scaled(factor);
+                let law = law.scaled(root);
                 mapped[c] = law.tension(g);
                 caps[c] = law.peak;
                 change = f64::max(change, (mapped[c] - tension[c]).abs());
