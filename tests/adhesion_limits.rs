@@ -8,7 +8,8 @@ use std::f64::consts::PI;
 use layered_contact::analytic::{JkrSinusoid, JkrSphere};
 use layered_contact::indenter::{HeightMap, Paraboloid};
 use layered_contact::scene::{
-    Adhesion, Caveat, IndenterSpec, Protocol, Resolution, Scene, SubstrateSpec, Tilt,
+    Adhesion, AdhesionMethod, Caveat, IndenterSpec, Protocol, Resolution, Scene, SubstrateSpec,
+    Tilt,
 };
 use layered_contact::solver::{ContactSolver, Reach, EDGE_SHIFT};
 use layered_contact::{Boundary, Error, Grid};
@@ -123,21 +124,29 @@ fn scenes_report_edge_averaged_adhesion() {
         "{pull_off} vs {exact}"
     );
     // A paraboloid tilted by 0.05 rad is a paraboloid whose apex moved
-    // sideways by R tan(0.05): the same JKR pull-off, but its contact sets
-    // are no longer discs about the grid's axis, so the method flags them.
-    let tilted = sphere_scene(Some(Tilt {
+    // sideways by R tan(0.05): the same JKR pull-off, and its contact sets
+    // are discs about the moved apex, so the energy balance (the automatic
+    // method) is as exact as for the straight one (-0.081 % against
+    // -0.032 % at 16 cells) and carries no caveat.
+    let tilt = Some(Tilt {
         angle_y: 0.05,
         angle_x: 0.0,
-    }))
-    .run(&mut |_| {})
-    .unwrap();
-    assert_eq!(tilted.caveats, vec![Caveat::EdgeAveragedAdhesion]);
-    assert!(tilted.caveats[0].to_string().contains("several per cent"));
+    });
+    let tilted = sphere_scene(tilt).run(&mut |_| {}).unwrap();
+    assert!(tilted.caveats.is_empty(), "{:?}", tilted.caveats);
     let pull_off = tilted.pull_off().unwrap().force;
     assert!(
-        (pull_off / exact - 1.0).abs() < 0.05,
+        (pull_off / exact - 1.0).abs() < 2e-3,
         "{pull_off} vs {exact}"
     );
+    // A tilted sphere's sets are not discs (the linearised tilt of its
+    // cap): the energy balance flags them.
+    let mut sphere = sphere_scene(tilt);
+    sphere.indenter = IndenterSpec::Sphere { radius: RADIUS };
+    sphere.solver.adhesion_method = AdhesionMethod::EnergyBalance;
+    let tilted = sphere.run(&mut |_| {}).unwrap();
+    assert_eq!(tilted.caveats, vec![Caveat::EdgeAveragedAdhesion]);
+    assert!(tilted.caveats[0].to_string().contains("several per cent"));
 }
 
 #[test]

@@ -6,7 +6,8 @@
 use layered_contact::analytic::Hertz;
 use layered_contact::indenter::{HeightMap, Indenter, Paraboloid};
 use layered_contact::scene::{
-    CustomIndenter, IndenterSpec, Outputs, Protocol, Resolution, Scene, SubstrateSpec,
+    AdhesionMethod, CustomIndenter, IndenterSpec, Outputs, Protocol, Resolution, Scene,
+    SolverSettings, SubstrateSpec,
 };
 use layered_contact::solver::{ContactSolver, Fields, SolverParams};
 use layered_contact::topography::{Amplitude, SelfAffine};
@@ -271,8 +272,22 @@ fn custom_indenter_grows_and_cycles_with_adhesion() {
             cells_across: 64,
             margin: 0.0,
         },
+        solver: SolverSettings {
+            adhesion_method: AdhesionMethod::EnergyBalance,
+            ..SolverSettings::default()
+        },
         ..Scene::default()
     };
+    // A custom indenter's sets need not be discs: the automatic method is
+    // the cohesive zone; this test names the energy balance.
+    let auto = Scene {
+        solver: SolverSettings::default(),
+        ..scene.clone()
+    };
+    assert_eq!(
+        auto.resolved_adhesion_method(),
+        AdhesionMethod::CohesiveZone
+    );
     let first = scene.grid().unwrap();
     let curve = scene.run(&mut |_| {}).unwrap();
     assert!(curve.grid.rows() > first.rows(), "the grid did not grow");

@@ -1,13 +1,15 @@
-//! # Adhesion in the JKR limit: two methods and a local criterion
+//! # Adhesion in the JKR limit: the energy balance, a cohesive zone and the mesh criterion
 //!
 //! In the JKR limit (Johnson, Kendall & Roberts 1971, Proc. R. Soc. A 324,
 //! 301) the adhesive contact is a crack between the indenter and the body:
 //! the contact edge stands where the energy release rate `G` equals the work
 //! of adhesion `dgamma`. With adhesion hysteresis the edge advances only
 //! while `G <= dgamma0` and recedes only while `G >= dgamma1 >= dgamma0`.
-//! The crate offers two ways to put that on a grid of square cells.
+//! The crate offers three ways to put that on a grid of square cells; a
+//! scene takes the one that is exact for it (below, "Which method a scene
+//! takes").
 //!
-//! ## The energy balance (default)
+//! ## The energy balance (automatic for discs)
 //!
 //! [`ContactSolver::adhesive_branches`](crate::solver::ContactSolver::adhesive_branches),
 //! [`AdhesionMethod::EnergyBalance`](crate::scene::AdhesionMethod::EnergyBalance).
@@ -318,11 +320,35 @@
 //! any shape and orientation, with patches, on any body; at 64 cells
 //! across a compact contact it is within about 1 %, and Richardson
 //! extrapolation of two resolutions at second order gains a further
-//! order. It is not the scenes' default yet: their
-//! [`AdhesionMethod`](crate::scene::AdhesionMethod) is an exhaustive enum
-//! of the 0.1 API, so a third method waits for the next minor version; the
-//! solver, Python (`ContactSolver.solve_depth_cohesive`,
-//! `cohesive_pull_off`) and the examples use it.
+//! order.
+//!
+//! ## Which method a scene takes
+//!
+//! [`AdhesionMethod::Auto`](crate::scene::AdhesionMethod::Auto), the
+//! default, resolves per scene
+//! ([`Scene::resolved_adhesion_method`](crate::scene::Scene::resolved_adhesion_method)):
+//!
+//! - the energy balance where the contact sets are discs on an isolated
+//!   grid (an untilted sphere, paraboloid, cone or flat punch, and a tilted
+//!   paraboloid, which is a paraboloid moved off the axis: -0.081 % at 16
+//!   cells across, against -0.032 % untilted, `tests/adhesion_limits.rs`),
+//!   where it is exact and a whole cycle costs one family of contact sets;
+//! - the energy balance also for any flat punch (pinned at its rim, which the
+//!   zone does not represent; a tilted or non-round punch carries
+//!   [`Caveat::EdgeAveragedAdhesion`](crate::scene::Caveat::EdgeAveragedAdhesion))
+//!   and for force control, which the step-by-step methods do not offer;
+//! - the cohesive zone for every other scene: tilted spheres and cones,
+//!   height maps, rough surfaces, custom indenters, periodic grids. Its
+//!   cycle records the protocol's unloading steps and, where the force
+//!   turns, walks the last two again on steps eight times finer and solves
+//!   the vertex of the parabola through the lowest three, so that
+//!   [`Curve::pull_off`](crate::scene::Curve::pull_off) is the curve's
+//!   minimum (a paraboloid moved off the axis at 32 cells across: -2.40 %,
+//!   the zone's own error there, `tests/scene_cohesive.rs`).
+//!
+//! `solver.adhesion_method` in a scene file names any method explicitly;
+//! the cohesive zone refuses flat punches and force control
+//! ([`Error::Unsupported`](crate::Error::Unsupported)).
 //!
 //! ## The mesh-dependent criterion (reference)
 //!

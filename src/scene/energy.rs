@@ -74,7 +74,8 @@ pub(super) fn run(
         solver,
         recorder.steps,
         peak_solution,
-        branches.edge_averaged(),
+        // A tilted paraboloid's sets are discs about another point.
+        branches.edge_averaged() && !scene.contact_sets_are_discs(),
     ))
 }
 

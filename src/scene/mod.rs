@@ -204,13 +204,31 @@ pub struct SolverSettings {
 }
 
 /// How an adhesive scene decides where the contact edge stands.
+///
+/// [`Auto`](AdhesionMethod::Auto), the default, takes the method that is
+/// exact for the scene ([`Scene::resolved_adhesion_method`]): the energy
+/// balance where the contact sets are discs about the axis, the cohesive
+/// zone for every other shape. `#[non_exhaustive]`: methods may be added
+/// in minor releases.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[cfg_attr(
     feature = "serde",
     derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
 )]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+#[non_exhaustive]
 pub enum AdhesionMethod {
+    /// The method that converges to the JKR limit for the scene: the energy
+    /// balance for an untilted flat punch, sphere or cone and any paraboloid
+    /// on an isolated grid (their contact sets are discs: exact, and a whole
+    /// cycle for the price of one family of contact sets), for any flat
+    /// punch (its contact is pinned at the
+    /// rim, which the cohesive zone does not represent) and for force
+    /// control; the cohesive zone for every other scene (tilted curved
+    /// indenters, height maps, rough surfaces, custom indenters, periodic
+    /// grids).
+    #[default]
+    Auto,
     /// The energy (Griffith) balance over the contact edge along a family of
     /// contact sets ([`ContactSolver::adhesive_branches`]): a sphere's
     /// pull-off against exact JKR at each resolution is tabulated in
@@ -222,7 +240,6 @@ pub enum AdhesionMethod {
     /// curve for every other (forces may be off by several per cent);
     /// refuses contacts that split into patches or span more than half a
     /// period.
-    #[default]
     EnergyBalance,
     /// The mesh-dependent critical stress of Pohrt & Popov (2015), cell by
     /// cell ([`ContactSolver::solve_depth_hysteretic`]): the method of the
@@ -230,9 +247,18 @@ pub enum AdhesionMethod {
     /// converging slowly (about `3/N` relative error in a sphere's pull-off
     /// force) and biased by how the contact edge lies on the grid; its
     /// curves carry [`Caveat::MeshDependentAdhesion`]. Displacement control
-    /// only. The method for contacts that split into patches (rough
-    /// surfaces: `examples/scenes/rough_adhesive_film.toml`).
+    /// only.
     MeshCriterion,
+    /// A cohesive zone resolved on the grid
+    /// ([`ContactSolver::solve_depth_cohesive`] with the default
+    /// [`CohesiveZone`](crate::solver::CohesiveZone)): the JKR limit for any
+    /// contact shape, orientation and number of patches, on isolated and
+    /// periodic grids, converging at second order (a sphere's pull-off
+    /// -0.66 % at 64 cells across, [`doc::accuracy`](crate::doc::accuracy)).
+    /// The pull-off of a cycle is refined on steps eight times finer and a
+    /// parabola through the lowest forces. Displacement control only;
+    /// refuses contacts pinned at the rim of a face (flat punches).
+    CohesiveZone,
 }
 
 impl Default for SolverSettings {
@@ -354,16 +380,37 @@ impl Scene {
                 check_steps(steps)?;
             }
         }
+        let method = self.resolved_adhesion_method();
+        let forced = matches!(
+            self.protocol,
+            Protocol::Force { .. } | Protocol::ForceCycle { .. }
+        );
+        if self.adhesion != Adhesion::None && forced {
+            match method {
+                AdhesionMethod::MeshCriterion => {
+                    return Err(Error::Unsupported {
+                        feature: "force control with the mesh-dependent adhesion criterion",
+                        reason: "use the energy-balance method for adhesive force control",
+                    })
+                }
+                AdhesionMethod::CohesiveZone => {
+                    return Err(Error::Unsupported {
+                        feature: "force control with the cohesive-zone adhesion method",
+                        reason: "use the energy-balance method for adhesive force control",
+                    })
+                }
+                _ => {}
+            }
+        }
         if self.adhesion != Adhesion::None
-            && self.solver.adhesion_method == AdhesionMethod::MeshCriterion
-            && matches!(
-                self.protocol,
-                Protocol::Force { .. } | Protocol::ForceCycle { .. }
-            )
+            && method == AdhesionMethod::CohesiveZone
+            && matches!(self.indenter, IndenterSpec::FlatPunch { .. })
         {
             return Err(Error::Unsupported {
-                feature: "force control with the mesh-dependent adhesion criterion",
-                reason: "use the energy-balance method (the default) for adhesive force control",
+                feature: "the cohesive-zone adhesion method on a flat punch",
+                reason: "its contact is pinned at the rim, beyond which the zone cannot form \
+                         (Kendall's punch -23 % at 64 cells across): use the energy balance \
+                         (the automatic choice for punches)",
             });
         }
         if !(MIN_CELLS_ACROSS..=8192).contains(&self.resolution.cells_across) {
@@ -390,6 +437,64 @@ impl Scene {
             });
         }
         Ok(())
+    }
+
+    /// The adhesion method this scene runs: its
+    /// [`SolverSettings::adhesion_method`], with
+    /// [`Auto`](AdhesionMethod::Auto) resolved to the energy balance for an
+    /// untilted flat punch, sphere or cone and any paraboloid (a tilted one
+    /// is a paraboloid moved off the axis) on an isolated grid, for any flat
+    /// punch and for force control, and to the cohesive zone for every
+    /// other scene (never `Auto`).
+    ///
+    /// ```
+    /// use layered_contact::scene::{AdhesionMethod, IndenterSpec, Scene, Tilt};
+    ///
+    /// let sphere = Scene {
+    ///     indenter: IndenterSpec::Paraboloid { radius: 0.01 },
+    ///     ..Scene::default()
+    /// };
+    /// assert_eq!(sphere.resolved_adhesion_method(), AdhesionMethod::EnergyBalance);
+    /// let tilted = Scene {
+    ///     indenter: IndenterSpec::Cone { half_angle: 1.2, base_radius: 1e-3 },
+    ///     tilt: Some(Tilt { angle_x: 0.0, angle_y: 0.01 }),
+    ///     ..Scene::default()
+    /// };
+    /// assert_eq!(tilted.resolved_adhesion_method(), AdhesionMethod::CohesiveZone);
+    /// ```
+    pub fn resolved_adhesion_method(&self) -> AdhesionMethod {
+        if self.solver.adhesion_method != AdhesionMethod::Auto {
+            return self.solver.adhesion_method;
+        }
+        let punch = matches!(self.indenter, IndenterSpec::FlatPunch { .. });
+        let forced = matches!(
+            self.protocol,
+            Protocol::Force { .. } | Protocol::ForceCycle { .. }
+        );
+        if self.contact_sets_are_discs() || punch || forced {
+            AdhesionMethod::EnergyBalance
+        } else {
+            AdhesionMethod::CohesiveZone
+        }
+    }
+
+    /// Whether the indenter's level sets are discs on an isolated grid, where
+    /// the energy balance releases evenly along the edge and is exact: an
+    /// untilted sphere, paraboloid, cone or flat punch, and a tilted
+    /// paraboloid (`r^2 / 2R + x tan(t)` is the paraboloid about `x = -R
+    /// tan(t)`, lowered by `R tan(t)^2 / 2`).
+    pub(crate) fn contact_sets_are_discs(&self) -> bool {
+        let untilted = self
+            .tilt
+            .is_none_or(|t| t.angle_x == 0.0 && t.angle_y == 0.0);
+        self.boundary == Boundary::Isolated
+            && match self.indenter {
+                IndenterSpec::Paraboloid { .. } => true,
+                IndenterSpec::Sphere { .. }
+                | IndenterSpec::Cone { .. }
+                | IndenterSpec::FlatPunch { .. } => untilted,
+                _ => false,
+            }
     }
 
     /// Makes a relative height-map path relative to `folder` (the folder of

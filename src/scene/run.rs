@@ -148,11 +148,11 @@ impl Scene {
                 .build_on(self.tilt, slab.map(|slab| (slab, active.grid())));
             // A rank that cannot read its rows stops every rank.
             let indenter = crate::slab::agree(slab, built)?;
-            let outcome = match (self.adhesion.works(), self.solver.adhesion_method) {
+            let outcome = match (self.adhesion.works(), self.resolved_adhesion_method()) {
                 (Some(works), AdhesionMethod::EnergyBalance) => {
                     energy::run(self, active, &*indenter, works, progress, observer)?
                 }
-                _ => Runner::new(self, active, &indenter, observer).run(progress)?,
+                _ => Runner::new(self, active, &indenter, observer)?.run(progress)?,
             };
             match outcome {
                 Outcome::Done(mut curve) => {

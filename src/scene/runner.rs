@@ -1,12 +1,17 @@
 //! The step-by-step runner: non-adhesive protocols and adhesive ones with
-//! the mesh-dependent criterion, one warm-started solve per step.
+//! the mesh-dependent criterion or the cohesive zone, one warm-started
+//! solve per step.
 
 use crate::error::{Error, Result};
 use crate::grid::Boundary;
 use crate::indenter::Indenter;
-use crate::solver::{ContactSolver, Fields, Observer, Solution, SolverParams, WarmStart};
+use crate::solver::{
+    CohesiveZone, ContactSolver, Fields, Observer, Solution, SolverParams, WarmStart,
+};
 
-use super::{Curve, IndenterSpec, Phase, Protocol, Scene, Step, MAX_PULL_DEPTHS};
+mod cohesive;
+
+use super::{AdhesionMethod, Curve, IndenterSpec, Phase, Protocol, Scene, Step, MAX_PULL_DEPTHS};
 
 pub(super) enum Outcome {
     Done(Box<Curve>),
@@ -28,6 +33,8 @@ pub(super) struct Runner<'a> {
     warm: Option<WarmStart>,
     /// Whether curved-indenter contacts must stay off the grid's edge.
     watch_edge: bool,
+    /// The cohesive zone's law, when the scene's adhesion takes it.
+    cohesive: Option<CohesiveZone>,
 }
 
 impl<'a> Runner<'a> {
@@ -36,8 +43,14 @@ impl<'a> Runner<'a> {
         solver: &'a mut ContactSolver,
         indenter: &'a (dyn Indenter + Send + Sync),
         observer: &'a mut dyn Observer,
-    ) -> Self {
-        Runner {
+    ) -> Result<Self> {
+        let cohesive = match (scene.adhesion.works(), scene.resolved_adhesion_method()) {
+            (Some((loading, unloading)), AdhesionMethod::CohesiveZone) => {
+                Some(CohesiveZone::new(loading, unloading)?)
+            }
+            _ => None,
+        };
+        Ok(Runner {
             scene,
             solver,
             indenter,
@@ -48,7 +61,8 @@ impl<'a> Runner<'a> {
             watch_edge: !matches!(scene.indenter, IndenterSpec::FlatPunch { .. })
                 && !scene.indenter.is_map()
                 && scene.boundary == Boundary::Isolated,
-        }
+            cohesive,
+        })
     }
 
     /// One solve at `depth` (or force), warm-started from the last. With
@@ -57,6 +71,14 @@ impl<'a> Runner<'a> {
     fn solve(&mut self, control: Control) -> Result<Solution> {
         let warm = self.warm.as_ref();
         let (solution, warm) = match (control, self.scene.adhesion.works()) {
+            (Control::Depth(d), Some(_)) if self.cohesive.is_some() => {
+                let zone = self.cohesive.as_ref().ok_or(Error::Internal {
+                    what: "scene cohesive zone",
+                    detail: "no law".into(),
+                })?;
+                self.solver
+                    .solve_depth_cohesive(self.indenter, d, zone, warm, self.observer)?
+            }
             (Control::Depth(d), None) => {
                 self.solver
                     .solve_depth(self.indenter, d, warm, self.observer)?
@@ -153,7 +175,12 @@ impl<'a> Runner<'a> {
                     progress(&step);
                     self.steps.push(step);
                 }
-                if !self.unload(max_depth, increment, progress)? {
+                let unloaded = if self.cohesive.is_some() {
+                    self.unload_cohesive(max_depth, increment, progress)?
+                } else {
+                    self.unload(max_depth, increment, progress)?
+                };
+                if !unloaded {
                     return Ok(Outcome::ReachedEdge);
                 }
             }
@@ -183,8 +210,8 @@ impl<'a> Runner<'a> {
             grid: *self.solver.grid(),
             peak: self.peak,
             // The step-by-step runner's adhesion is the mesh-dependent
-            // criterion's.
-            caveats: if self.scene.adhesion.works().is_some() {
+            // criterion's or the cohesive zone's.
+            caveats: if self.scene.adhesion.works().is_some() && self.cohesive.is_none() {
                 vec![super::Caveat::MeshDependentAdhesion]
             } else {
                 Vec::new()
@@ -209,12 +236,7 @@ impl<'a> Runner<'a> {
         let mut cells = self.last_contact_cells();
         let mut shrinking_refined = false;
         let mut increment = increment;
-        let limit = (2.0 * max_depth / increment).ceil() as usize
-            + (MAX_PULL_DEPTHS * max_depth / increment)
-                .log2()
-                .ceil()
-                .max(0.0) as usize
-            + 2;
+        let limit = unloading_steps(max_depth, increment);
         for _ in 0..limit {
             if depth < -max_depth {
                 increment *= 2.0;
@@ -247,12 +269,7 @@ impl<'a> Runner<'a> {
                 return Ok(false);
             }
         }
-        Err(Error::NoConvergence {
-            method:
-                "unloading to contact loss (still attached 20 loading depths above the surface)",
-            iterations: limit,
-            residual: depth,
-        })
+        Err(still_attached(limit, depth))
     }
 
     fn last_contact_cells(&self) -> usize {
@@ -293,6 +310,27 @@ impl<'a> Runner<'a> {
         }
         self.warm = near_state;
         Ok(true)
+    }
+}
+
+/// The most unloading steps from `max_depth` by `increment`: to `-max_depth`
+/// in steps of `increment`, then doubling them to `-MAX_PULL_DEPTHS max_depth`.
+fn unloading_steps(max_depth: f64, increment: f64) -> usize {
+    (2.0 * max_depth / increment).ceil() as usize
+        + (MAX_PULL_DEPTHS * max_depth / increment)
+            .log2()
+            .ceil()
+            .max(0.0) as usize
+        + 2
+}
+
+/// The error of an unloading that still holds at `-MAX_PULL_DEPTHS` loading
+/// depths.
+fn still_attached(steps: usize, depth: f64) -> Error {
+    Error::NoConvergence {
+        method: "unloading to contact loss (still attached 20 loading depths above the surface)",
+        iterations: steps,
+        residual: depth,
     }
 }
 

@@ -158,9 +158,10 @@ impl Scene {
             // staircase, whose error is a clean `c / N` that Richardson
             // extrapolation removes (the shifted staircase's is smaller but
             // changes sign near 32 cells across and is not a power of `N`).
-            let shift = match (self.adhesion, self.solver.adhesion_method) {
-                (Adhesion::None, _) | (_, AdhesionMethod::MeshCriterion) => 0.0,
+            let shift = match (self.adhesion, self.resolved_adhesion_method()) {
+                (Adhesion::None, _) => 0.0,
                 (_, AdhesionMethod::EnergyBalance) => crate::solver::EDGE_SHIFT,
+                _ => 0.0,
             };
             return Grid::new(cells, cells, equal_area_spacing(radius, n, cells, shift));
         }

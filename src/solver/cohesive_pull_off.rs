@@ -76,17 +76,6 @@ impl ContactSolver {
             tally.iterations += s.iterations;
             Ok::<_, Error>((s.force, s.contact_cells, end))
         };
-        let pinned = |solver: &Self, state: &WarmStart| {
-            let grid = solver.grid();
-            let (rows, columns) = (grid.rows(), grid.columns());
-            let profile = &solver.workspace.profile;
-            (0..profile.len()).any(|c| {
-                state.attached[c]
-                    && super::neighbours(c, rows, columns)
-                        .iter()
-                        .any(|m| m.is_some_and(|m| !profile[m].is_finite()))
-            })
-        };
         let (force, contact, end) = solve(self, depth, warm)?;
         if contact == 0 {
             return Err(Error::InvalidParameter {
@@ -132,7 +121,7 @@ impl ContactSolver {
             let d = start - k as f64 * fine;
             let (force, contact, end) = solve(self, d, Some(&state))?;
             state = end;
-            points.push((d, force, pinned(self, &state)));
+            points.push((d, force, self.bonded_at_rim(&state)));
             if contact == 0 {
                 break;
             }
@@ -142,13 +131,7 @@ impl ContactSolver {
             .unwrap_or(0);
         let (d1, f1, at_rim) = points[lowest];
         if at_rim {
-            return Err(Error::Unsupported {
-                feature: "the cohesive zone's pull-off of a contact pinned at the rim of a face \
-                          (a flat punch)",
-                reason: "the zone cannot form beyond the rim, so the contact detaches late and \
-                         weak (Kendall's punch -23 % at 64 cells across); the \
-                         detachment onset is ContactSolver::edge_release's",
-            });
+            return Err(pinned_at_rim());
         }
         (tally.depth, tally.force) = (d1, f1);
         if lowest > 0 && lowest + 1 < points.len() {
@@ -161,5 +144,33 @@ impl ContactSolver {
             }
         }
         Ok(tally)
+    }
+}
+
+impl ContactSolver {
+    /// Whether a cell bonded in `state` lies next to one the indenter
+    /// cannot reach (the rim of a face: a flat punch), whose pull-off the
+    /// cohesive zone does not represent ([`pinned_at_rim`]).
+    pub(crate) fn bonded_at_rim(&self, state: &WarmStart) -> bool {
+        let grid = self.grid();
+        let (rows, columns) = (grid.rows(), grid.columns());
+        let profile = &self.workspace.profile;
+        (0..profile.len().min(state.attached.len())).any(|c| {
+            state.attached[c]
+                && super::neighbours(c, rows, columns)
+                    .iter()
+                    .any(|m| m.is_some_and(|m| !profile[m].is_finite()))
+        })
+    }
+}
+
+/// The refusal of a cohesive pull-off pinned at the rim of a face.
+pub(crate) fn pinned_at_rim() -> Error {
+    Error::Unsupported {
+        feature: "the cohesive zone's pull-off of a contact pinned at the rim of a face \
+                  (a flat punch)",
+        reason: "the zone cannot form beyond the rim, so the contact detaches late and \
+                 weak (Kendall's punch -23 % at 64 cells across); the detachment onset is \
+                 ContactSolver::edge_release's, the pull-off the energy balance's",
     }
 }

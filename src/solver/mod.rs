@@ -80,6 +80,7 @@ use crate::substrate::Substrate;
 use workspace::Workspace;
 
 pub use cohesive::{CohesiveZone, COHESIVE_ZONE_CELLS, CURVATURE_CORRECTION};
+pub(crate) use cohesive_pull_off::pinned_at_rim;
 pub use cohesive_pull_off::CohesivePullOff;
 pub use griffith::{
     AdhesiveBranches, BranchPoint, EdgePoint, EdgeRelease, Reach, EDGE_SHIFT, EDGE_WINDOW,

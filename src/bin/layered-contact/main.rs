@@ -174,7 +174,8 @@ fn run_with(
     // The energy balance builds its family of contact sets before any step:
     // each set is reported as it is solved.
     let family = scene.adhesion.works().is_some()
-        && scene.solver.adhesion_method == layered_contact::scene::AdhesionMethod::EnergyBalance;
+        && scene.resolved_adhesion_method()
+            == layered_contact::scene::AdhesionMethod::EnergyBalance;
     let progress = std::cell::RefCell::new(progress);
     let curve = scene.run_observed(
         &mut solver,
