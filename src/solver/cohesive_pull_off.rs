@@ -1,10 +1,11 @@
 //! The pull-off of an unloading through the cohesive zone of
 //! [`cohesive`](super::cohesive): the indenter withdrawn in steps, the
-//! minimum of the force refined on finer steps.
+//! least force searched between the last two ([`least_force`]).
 
 use crate::error::{Error, Result};
 use crate::indenter::Indenter;
 
+use super::least_force::{least_force, Probe};
 use super::{check_finite, CohesiveZone, ContactSolver, Observer, WarmStart};
 
 /// The pull-off of an unloading under displacement control
@@ -25,17 +26,20 @@ pub struct CohesivePullOff {
 /// Unloading steps before [`ContactSolver::cohesive_pull_off`] gives up.
 const MAX_UNLOADING_STEPS: usize = 10_000;
 
-/// Finer steps over the last two coarse ones, for the minimum.
-const REFINEMENT: usize = 8;
+/// The least force's bracket is narrowed to this fraction of a step before
+/// the parabola's vertex is solved.
+const BRACKET: usize = 16;
 
 impl ContactSolver {
     /// The pull-off force under displacement control: from the equilibrium
     /// at `depth` (reached from `warm`, or cold), the indenter is withdrawn
     /// in steps of `step` (m) with [`solve_depth_cohesive`](Self::solve_depth_cohesive)
-    /// until the force rises again or the contact is lost; the last two
-    /// steps are walked again in steps eight times finer and the minimum
-    /// taken from the parabola through the three lowest forces (exact to
-    /// `O(step^3)` where the force is smooth).
+    /// until the force rises again or the contact is lost; the least force
+    /// of the last two steps is then bracketed by golden sections to a
+    /// quarter of a step, each equilibrium reached from the nearest one
+    /// above it, and solved at the vertex of the parabola through the
+    /// least three (exact to third order in the bracket where the force is
+    /// smooth; about six more solves).
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for a step that is not positive and
@@ -56,12 +60,12 @@ impl ContactSolver {
     ) -> Result<CohesivePullOff> {
         let step = crate::error::positive_finite("unloading step", step)?;
         check_finite("depth", depth)?;
-        if depth - step / REFINEMENT as f64 == depth {
+        if depth - step / (16 * BRACKET) as f64 == depth {
             return Err(Error::InvalidParameter {
                 name: "unloading step (m)",
                 value: step,
-                expected: "at least eight units in the last place of the depth (a smaller \
-                           step does not move the indenter)",
+                expected: "at least 64 units in the last place of the depth (the search \
+                           for the least force divides it)",
             });
         }
         let mut tally = CohesivePullOff {
@@ -112,37 +116,34 @@ impl ContactSolver {
                 });
             }
         }
-        // Walk the last two steps again, finer.
-        let (start, _, state) = walk.swap_remove(0);
-        let fine = step / REFINEMENT as f64;
-        let mut state = state;
-        let mut points = Vec::with_capacity(2 * REFINEMENT + 1);
-        for k in 0..=2 * REFINEMENT {
-            let d = start - k as f64 * fine;
-            let (force, contact, end) = solve(self, d, Some(&state))?;
-            state = end;
-            points.push((d, force, self.bonded_at_rim(&state)));
-            if contact == 0 {
-                break;
-            }
-        }
-        let lowest = (0..points.len())
-            .min_by(|&a, &b| points[a].1.total_cmp(&points[b].1))
-            .unwrap_or(0);
-        let (d1, f1, at_rim) = points[lowest];
-        if at_rim {
+        // The least force between the last three steps.
+        let walked: Vec<Probe<WarmStart>> = walk
+            .into_iter()
+            .map(|(depth, force, kept)| Probe { depth, force, kept })
+            .collect();
+        let bracket: [Probe<WarmStart>; 3] = walked.try_into().map_err(|_| Error::Internal {
+            what: "cohesive pull-off",
+            detail: "the walk ended with fewer than three steps".into(),
+        })?;
+        let probes = least_force(bracket, step / BRACKET as f64, |d, from| {
+            let (force, _, kept) = solve(self, d, Some(&from.kept))?;
+            Ok::<_, Error>(Probe {
+                depth: d,
+                force,
+                kept,
+            })
+        })?;
+        let lowest = probes
+            .iter()
+            .min_by(|a, b| a.force.total_cmp(&b.force))
+            .ok_or(Error::Internal {
+                what: "cohesive pull-off",
+                detail: "no equilibrium".into(),
+            })?;
+        if self.bonded_at_rim(&lowest.kept) {
             return Err(pinned_at_rim());
         }
-        (tally.depth, tally.force) = (d1, f1);
-        if lowest > 0 && lowest + 1 < points.len() {
-            let (f0, f2) = (points[lowest - 1].1, points[lowest + 1].1);
-            let curvature = f0 - 2.0 * f1 + f2;
-            if curvature > 0.0 {
-                let shift = 0.5 * (f0 - f2) / curvature;
-                tally.force = f1 + 0.25 * (f2 - f0) * shift;
-                tally.depth = d1 - shift * fine;
-            }
-        }
+        (tally.depth, tally.force) = (lowest.depth, lowest.force);
         Ok(tally)
     }
 }

@@ -61,6 +61,7 @@ mod cohesive;
 mod cohesive_pull_off;
 mod curvature;
 mod griffith;
+pub(crate) mod least_force;
 mod multiresolution;
 mod params;
 mod passes;

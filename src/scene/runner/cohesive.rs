@@ -1,38 +1,31 @@
 //! The unloading of a cycle through the cohesive zone: steps of the
-//! protocol until the contact is lost, and the pull-off walked again on
-//! steps eight times finer, its minimum solved at the vertex of the
-//! parabola through the three lowest forces.
+//! protocol until the contact is lost, and the pull-off searched between
+//! the last two where the force turns (golden sections to a quarter of a
+//! step, then the parabola's vertex: `solver::least_force`).
 
 use crate::error::Result;
+use crate::solver::least_force::{least_force, Probe};
 use crate::solver::{Solution, WarmStart};
 
 use super::super::{Phase, Step, MAX_PULL_DEPTHS};
 use super::{still_attached, unloading_steps, Control, Runner};
 
-/// Finer steps per protocol step where the force turns.
-const REFINEMENT: usize = 8;
+/// The least force's bracket is narrowed to this fraction of a step.
+const BRACKET: f64 = 16.0;
 
-/// A vertex closer than this (in fine steps) to a solved step is not
-/// solved again.
-const VERTEX_MARGIN: f64 = 0.01;
-
-/// The last recorded equilibrium of the walk.
-struct Recorded {
-    depth: f64,
-    force: f64,
-    state: Option<WarmStart>,
-}
+/// What a probe of the search keeps: its state, and its solution unless it
+/// is already recorded.
+type Kept = (Option<WarmStart>, Option<Solution>);
 
 impl Runner<'_> {
     /// Retracts from `max_depth` by `increment` (doubled at each step
     /// beyond `-max_depth`, as [`Runner::unload`]) until the contact is
     /// lost. Each step is recorded one step late: where the force rises
-    /// after a new lowest value, the last two steps are walked again in
-    /// steps eight times finer from the last recorded state, and the
-    /// pull-off is solved at the vertex of the parabola through the lowest
-    /// fine force and its neighbours (exact to third order in the step
-    /// where the force is smooth), so that [`Curve::pull_off`] is the
-    /// minimum of the curve, not of the protocol's steps.
+    /// after a new least value, the least force of the last two steps is
+    /// searched from the last recorded state (each equilibrium reached from
+    /// the nearest one above it) and solved at the parabola's vertex, so
+    /// that [`Curve::pull_off`] is the minimum of the curve, not of the
+    /// protocol's steps. Every equilibrium is recorded, by falling depth.
     ///
     /// [`Curve::pull_off`]: super::super::Curve::pull_off
     pub(in crate::scene) fn unload_cohesive(
@@ -43,13 +36,13 @@ impl Runner<'_> {
     ) -> Result<bool> {
         let mut increment = increment;
         let mut depth = max_depth;
-        let mut recorded = Recorded {
+        let mut recorded = Probe {
             depth,
             force: self.steps.last().map_or(0.0, |s| s.force),
-            state: self.warm.clone(),
+            kept: (self.warm.clone(), None),
         };
         let mut lowest = recorded.force;
-        let mut pending: Option<(Solution, Option<WarmStart>)> = None;
+        let mut pending: Option<Probe<Kept>> = None;
         let limit = unloading_steps(max_depth, increment);
         for _ in 0..limit {
             if depth < -max_depth {
@@ -61,118 +54,93 @@ impl Runner<'_> {
             depth -= increment;
             let solution = self.solve(Control::Depth(depth))?;
             let lost = solution.contact_cells == 0;
+            let current = Probe {
+                depth,
+                force: solution.force,
+                kept: (self.warm.clone(), Some(solution)),
+            };
             match pending.take() {
-                Some((turn, _)) if turn.force < lowest && solution.force > turn.force => {
-                    // The force turned within the last two steps: walk them
-                    // again, finer, from the last recorded state.
-                    let Some(walked) = self.refine(&recorded, depth, progress)? else {
-                        return Ok(false);
-                    };
-                    lowest = lowest.min(walked.0);
-                    recorded = Recorded {
-                        depth: walked.1,
-                        force: walked.2,
-                        state: self.warm.clone(),
-                    };
-                    if walked.3 {
+                Some(turn) if turn.force < lowest && current.force > turn.force => {
+                    // The force turned within the last two steps.
+                    let (state, lost, least) =
+                        match self.search([recorded, turn, current], progress)? {
+                            Some(end) => end,
+                            None => return Ok(false),
+                        };
+                    if lost {
                         return Ok(true);
                     }
-                    depth = walked.1;
+                    lowest = lowest.min(least);
+                    self.warm = state.clone();
+                    recorded = Probe {
+                        depth,
+                        force: self.steps.last().map_or(0.0, |s| s.force),
+                        kept: (state, None),
+                    };
                     continue;
                 }
-                Some((previous, state)) => {
+                Some(previous) => {
                     lowest = lowest.min(previous.force);
-                    recorded = Recorded {
+                    let (state, solution) = previous.kept;
+                    recorded = Probe {
                         depth: previous.depth,
                         force: previous.force,
-                        state,
+                        kept: (state, None),
                     };
-                    if !self.record(previous, Phase::Unloading, progress) {
-                        return Ok(false);
+                    if let Some(solution) = solution {
+                        if !self.record(solution, Phase::Unloading, progress) {
+                            return Ok(false);
+                        }
                     }
                 }
                 None => {}
             }
             if lost {
-                return Ok(self.record(solution, Phase::Unloading, progress));
+                let (_, solution) = current.kept;
+                return Ok(solution.is_some_and(|s| self.record(s, Phase::Unloading, progress)));
             }
-            pending = Some((solution, self.warm.clone()));
+            pending = Some(current);
         }
         Err(still_attached(limit, depth))
     }
 
-    /// Walks from `from` (recorded) to `to` in `2 REFINEMENT` steps,
-    /// solves the vertex of the lowest force, and records them in order.
-    /// Returns the lowest force, the depth, force and loss of contact of
-    /// the walk's last step (the runner's state is its), or `None` if a
-    /// contact reached the grid's edge.
-    fn refine(
+    /// Searches the least force of `bracket` (the last recorded step, the
+    /// turn and the step after it) and records every equilibrium after the
+    /// first, by falling depth. Returns the last one's state, whether it
+    /// lost contact and the least force, or `None` if a contact reached the
+    /// grid's edge.
+    fn search(
         &mut self,
-        from: &Recorded,
-        to: f64,
+        bracket: [Probe<Kept>; 3],
         progress: &mut dyn FnMut(&Step),
-    ) -> Result<Option<(f64, f64, f64, bool)>> {
-        let fine = (from.depth - to) / (2 * REFINEMENT) as f64;
-        self.warm = from.state.clone();
-        // The forces from `from` on, the solutions after it.
-        let mut forces = vec![from.force];
-        let mut walk: Vec<Solution> = Vec::with_capacity(2 * REFINEMENT + 1);
-        // The states before and at the lowest force of the walk.
-        let (mut before, mut at) = (None, None);
-        for k in 1..=2 * REFINEMENT {
-            let d = if k == 2 * REFINEMENT {
-                to
-            } else {
-                from.depth - k as f64 * fine
-            };
-            let previous = self.warm.clone();
-            let solution = self.solve(Control::Depth(d))?;
-            let lost = solution.contact_cells == 0;
-            if solution.force < forces.iter().copied().fold(f64::INFINITY, f64::min) {
-                (before, at) = (previous, self.warm.clone());
-            }
-            forces.push(solution.force);
-            walk.push(solution);
-            if lost {
-                break;
-            }
+    ) -> Result<Option<(Option<WarmStart>, bool, f64)>> {
+        let width = (bracket[0].depth - bracket[2].depth) / (2.0 * BRACKET);
+        let probes = least_force(bracket, width, |depth, from: &Probe<Kept>| {
+            self.warm = from.kept.0.clone();
+            let solution = self.solve(Control::Depth(depth))?;
+            Ok::<_, crate::Error>(Probe {
+                depth,
+                force: solution.force,
+                kept: (self.warm.clone(), Some(solution)),
+            })
+        })?;
+        let lowest = probes.iter().min_by(|a, b| a.force.total_cmp(&b.force));
+        let least = lowest.map_or(f64::INFINITY, |p| p.force);
+        if lowest
+            .and_then(|p| p.kept.0.as_ref())
+            .is_some_and(|state| self.solver.bonded_at_rim(state))
+        {
+            return Err(crate::solver::pinned_at_rim());
         }
-        let last = self.warm.take();
-        let j = (0..forces.len())
-            .min_by(|&a, &b| forces[a].total_cmp(&forces[b]))
-            .unwrap_or(0);
-        if let Some(state) = at.as_ref() {
-            if j > 0 && self.solver.bonded_at_rim(state) {
-                return Err(crate::solver::pinned_at_rim());
-            }
-        }
-        let mut lowest = forces[j];
-        if j > 0 && j + 1 < forces.len() {
-            let curvature = forces[j - 1] - 2.0 * forces[j] + forces[j + 1];
-            let shift = if curvature > 0.0 {
-                0.5 * (forces[j - 1] - forces[j + 1]) / curvature
-            } else {
-                0.0
-            };
-            if shift.abs() > VERTEX_MARGIN {
-                // From the solved step above the vertex.
-                self.warm = if shift > 0.0 { at } else { before };
-                let vertex = walk[j - 1].depth - shift * fine;
-                let solution = self.solve(Control::Depth(vertex))?;
-                lowest = lowest.min(solution.force);
-                let place = if shift > 0.0 { j } else { j - 1 };
-                walk.insert(place, solution);
-            }
-        }
-        let (depth, force, lost) = walk.last().map_or((from.depth, from.force, false), |s| {
-            (s.depth, s.force, s.contact_cells == 0)
-        });
-        for solution in walk {
+        let mut end = (None, false);
+        for probe in probes.into_iter().skip(1) {
+            let (state, solution) = probe.kept;
+            let Some(solution) = solution else { continue };
+            end = (state, solution.contact_cells == 0);
             if !self.record(solution, Phase::Unloading, progress) {
                 return Ok(None);
             }
         }
-        self.warm = last;
-        Ok(Some((lowest, depth, force, lost)))
+        Ok(Some((end.0, end.1, least)))
     }
 }

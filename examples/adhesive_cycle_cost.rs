@@ -1,0 +1,120 @@
+//! What a whole adhesive cycle costs, for `BENCHMARKS.md` ("Adhesive scene
+//! cycles: error and cost"): a paraboloid (R = 10 mm) tilted so that its
+//! contact centre moves by (0.3, 0.17) pull-off contact radii, on a rubber
+//! half-space (E = 1 MPa, nu = 0.48, dgamma = 0.05 J/m^2), loaded in 6
+//! steps to the JKR depth of 1.6 pull-off contact radii and unloaded to
+//! contact loss, with `N` cells across the pull-off contact. A tilted
+//! paraboloid is a paraboloid moved off the axis, so its pull-off is
+//! JKR's `-3 pi R dgamma / 2` exactly, while its contact lies off the
+//! cell centres.
+//!
+//! For each method (`cohesive`, `energy`, `mesh`) and `N` it prints the
+//! pull-off error, the steps, the conjugate-gradient iterations of the
+//! whole cycle, its time, and the cost in non-adhesive solves: the
+//! iterations of one cold non-adhesive solve at the peak depth on the same
+//! grid (its coarse-grid iterations counted at a quarter each, an upper
+//! bound of their cost).
+//!
+//! `cargo run --release --example adhesive_cycle_cost -- [method N...]...`,
+//! for example `-- cohesive 16 32 64 mesh 16 32`; `STEPS=1` prints every
+//! step (phase, depth, force, iterations, contact area).
+use std::f64::consts::PI;
+use std::time::Instant;
+
+use layered_contact::analytic::JkrSphere;
+use layered_contact::indenter::{Indenter, Paraboloid, Tilted};
+use layered_contact::scene::{
+    Adhesion, AdhesionMethod, IndenterSpec, Protocol, Resolution, Scene, SolverSettings,
+    SubstrateSpec, Tilt,
+};
+use layered_contact::{Material, Result};
+
+const E: f64 = 1e6;
+const NU: f64 = 0.48;
+const RADIUS: f64 = 0.01;
+const WORK: f64 = 0.05;
+
+fn main() -> Result<()> {
+    let rubber = Material::new(E, NU)?;
+    let jkr = JkrSphere::new(&rubber, RADIUS, WORK)?;
+    let a = jkr.pull_off_contact_radius();
+    let tilt = Tilt {
+        angle_y: (0.3 * a / RADIUS).atan(),
+        angle_x: (0.17 * a / RADIUS).atan(),
+    };
+    let exact = -1.5 * PI * RADIUS * WORK;
+    println!("method    N   error %   steps  iterations  time s  non-adhesive solves");
+    let mut method = AdhesionMethod::CohesiveZone;
+    for arg in std::env::args().skip(1) {
+        let Ok(n) = arg.parse::<usize>() else {
+            method = match arg.as_str() {
+                "energy" => AdhesionMethod::EnergyBalance,
+                "mesh" => AdhesionMethod::MeshCriterion,
+                _ => AdhesionMethod::CohesiveZone,
+            };
+            continue;
+        };
+        let scene = Scene {
+            substrate: SubstrateSpec::HalfSpace {
+                youngs_modulus: E,
+                poisson_ratio: NU,
+            },
+            indenter: IndenterSpec::Paraboloid { radius: RADIUS },
+            tilt: Some(tilt),
+            adhesion: Adhesion::Constant {
+                work_of_adhesion: WORK,
+            },
+            protocol: Protocol::Cycle {
+                max_depth: jkr.depth(1.6 * a),
+                steps: 6,
+            },
+            resolution: Resolution {
+                cells_across: n,
+                margin: 0.6,
+            },
+            solver: SolverSettings {
+                adhesion_method: method,
+                ..SolverSettings::default()
+            },
+            ..Scene::default()
+        };
+        let clock = Instant::now();
+        let mut solver = scene.solver()?;
+        let curve = scene.run_on(&mut solver, &mut |_| {})?;
+        let time = clock.elapsed().as_secs_f64();
+        if std::env::var("STEPS").is_ok() {
+            for s in &curve.steps {
+                println!(
+                    "  {:?} {:+.4e} {:+.5e} {:6} {}",
+                    s.phase, s.depth, s.force, s.iterations, s.contact_area
+                );
+            }
+        }
+        let iterations: usize = curve.steps.iter().map(|s| s.iterations).sum();
+        // One cold non-adhesive solve at the peak on the cycle's grid.
+        let mut plain = layered_contact::solver::ContactSolver::new(
+            &scene.substrate.build()?,
+            &curve.grid,
+            scene.boundary,
+            layered_contact::solver::SolverParams::default(),
+        )?;
+        let indenter = Tilted::new(Paraboloid::new(RADIUS)?, tilt.angle_y, tilt.angle_x)?;
+        let peak = jkr.depth(1.6 * a);
+        let one = plain
+            .solve_depth(&indenter as &dyn Indenter, peak, None, &mut ())?
+            .0;
+        let cost = one.iterations as f64 + one.coarse_iterations as f64 / 4.0;
+        println!(
+            "{:<8} {n:4} {:+9.4} {:7} {:11} {:7.2} {:8.1} (one solve: {} + {} coarse)",
+            format!("{method:?}"),
+            100.0 * (curve.pull_off().map_or(f64::NAN, |s| s.force) / exact - 1.0),
+            curve.steps.len(),
+            iterations,
+            time,
+            iterations as f64 / cost,
+            one.iterations,
+            one.coarse_iterations,
+        );
+    }
+    Ok(())
+}
