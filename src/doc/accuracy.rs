@@ -134,8 +134,9 @@
 //!
 //! | case | reference | 16 | 32 | 64 | 128 | order |
 //! |---|---|---|---|---|---|---|
-//! | JKR sphere, half-space | JKR pull-off | -6.39 % | -2.43 % | -0.66 % | -0.16 % | 2 |
-//! | JKR sphere, film `h = a` on glass | exact layered JKR | -8.67 % | -3.29 % | -1.00 % | | 1.7 |
+//! | JKR sphere, half-space | JKR pull-off | -6.39 % | -2.42 % | -0.66 % | -0.17 % | 2 |
+//! | JKR sphere, film `h = a` on glass | exact layered JKR | -8.70 % | -3.29 % | -0.99 % | | 1.7 |
+//! | JKR sphere, film `a/h = 2.93` on a rigid base (scene cycle, `examples/accuracy.rs`; magnitudes) | exact layered JKR | 8.8 % | 8.0 % | 0.24 % | 1.1 % | none (0.081 % at 256) |
 //! | Kendall's flat punch | Kendall (1971) | refused: pinned at the rim (-23 % at 64) | | | | |
 //!
 //! For the `1/N` quantities Richardson extrapolation of two resolutions

@@ -255,9 +255,10 @@ pub enum AdhesionMethod {
     /// contact shape, orientation and number of patches, on isolated and
     /// periodic grids, converging at second order (a sphere's pull-off
     /// -0.66 % at 64 cells across, [`doc::accuracy`](crate::doc::accuracy)).
-    /// The pull-off of a cycle is refined on steps eight times finer and a
-    /// parabola through the lowest forces. Displacement control only;
-    /// refuses contacts pinned at the rim of a face (flat punches).
+    /// The pull-off of a cycle is searched between the two steps around the
+    /// least force (golden sections to a sixteenth of a step, then the
+    /// parabola's vertex: about nine more solves). Displacement control
+    /// only; refuses contacts pinned at the rim of a face (flat punches).
     CohesiveZone,
 }
 

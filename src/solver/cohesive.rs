@@ -37,7 +37,7 @@ pub const COHESIVE_ZONE_CELLS: f64 = 8.0;
 /// The default first-order correction of the zone's bias on curved edges
 /// ([`CohesiveZone::with_curvature_correction`]): measured on the JKR
 /// sphere, whose pull-off error without it is `0.20 l / a` as the zone
-/// `l` shrinks against the contact radius `a` (+2.27, +4.04 % at `l / a`
+/// `l` shrinks against the contact radius `a` (+2.26, +4.06 % at `l / a`
 /// = 1/8, 1/4; Maugis-Dugdale theory gives `0.17 (c - a) / a`), the same
 /// on a layer (+4.06 % at 1/4), and zero on straight edges (Johnson's
 /// sinusoid: second order without it).
