@@ -7,16 +7,13 @@ use std::f64::consts::PI;
 
 use layered_contact::analytic::{JkrSinusoid, JkrSphere};
 use layered_contact::indenter::{HeightMap, Paraboloid};
-use layered_contact::scene::{
-    Adhesion, AdhesionMethod, Caveat, IndenterSpec, Protocol, Resolution, Scene, SubstrateSpec,
-    Tilt,
-};
+use layered_contact::scene::{AdhesionMethod, Caveat, IndenterSpec, Resolution, Scene, Tilt};
 use layered_contact::solver::{ContactSolver, Reach, EDGE_SHIFT};
 use layered_contact::{Boundary, Error, Grid};
 
 mod common;
 
-use common::rubber_sphere::{rubber, rubber_solver, E, NU, RADIUS, WORK};
+use common::rubber_sphere::{paraboloid_cycle, rubber, rubber_solver, RADIUS, WORK};
 
 /// `heights(x, y)` sampled at the cell centres of `grid`, and a solver for
 /// the rubber half-space on that grid.
@@ -89,26 +86,11 @@ fn axisymmetry_is_read_from_the_profile_not_the_type() {
 fn sphere_scene(tilt: Option<Tilt>) -> Scene {
     let jkr = JkrSphere::new(&rubber(), RADIUS, WORK).unwrap();
     let a = jkr.pull_off_contact_radius();
-    Scene {
-        substrate: SubstrateSpec::HalfSpace {
-            youngs_modulus: E,
-            poisson_ratio: NU,
-        },
-        indenter: IndenterSpec::Paraboloid { radius: RADIUS },
-        tilt,
-        adhesion: Adhesion::Constant {
-            work_of_adhesion: WORK,
-        },
-        protocol: Protocol::Cycle {
-            max_depth: (1.5 * a).powi(2) / RADIUS,
-            steps: 6,
-        },
-        resolution: Resolution {
-            cells_across: 16,
-            margin: 0.05,
-        },
-        ..Scene::default()
-    }
+    let resolution = Resolution {
+        cells_across: 16,
+        margin: 0.05,
+    };
+    paraboloid_cycle(tilt, (1.5 * a).powi(2) / RADIUS, 6, resolution)
 }
 
 #[test]

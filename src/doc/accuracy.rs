@@ -136,7 +136,7 @@
 //! |---|---|---|---|---|---|---|
 //! | JKR sphere, half-space | JKR pull-off | -6.39 % | -2.42 % | -0.66 % | -0.17 % | 2 |
 //! | JKR sphere, film `h = a` on glass | exact layered JKR | -8.70 % | -3.29 % | -0.99 % | | 1.7 |
-//! | JKR sphere, film `a/h = 2.93` on a rigid base (scene cycle, `examples/accuracy.rs`; magnitudes) | exact layered JKR | 8.8 % | 8.0 % | 0.24 % | 1.1 % | none (0.081 % at 256) |
+//! | JKR sphere, film `a/h = 2.93` on a rigid base (scene cycle, `examples/accuracy.rs`; magnitudes) | exact layered JKR | 8.8 % | 8.0 % | 0.020 % | 0.97 % | none |
 //! | Kendall's flat punch | Kendall (1971) | refused: pinned at the rim (-23 % at 64) | | | | |
 //!
 //! For the `1/N` quantities Richardson extrapolation of two resolutions

@@ -238,12 +238,10 @@ impl<'a> Runner<'a> {
         let mut increment = increment;
         let limit = unloading_steps(max_depth, increment);
         for _ in 0..limit {
-            if depth < -max_depth {
-                increment *= 2.0;
-            }
-            if depth < -MAX_PULL_DEPTHS * max_depth {
+            let Some(next) = next_increment(depth, increment, max_depth) else {
                 break;
-            }
+            };
+            increment = next;
             let before = self.warm.clone();
             let solution = self.solve(Control::Depth(depth - increment))?;
             let lost = solution.contact_cells == 0;
@@ -322,6 +320,18 @@ fn unloading_steps(max_depth: f64, increment: f64) -> usize {
             .ceil()
             .max(0.0) as usize
         + 2
+}
+
+/// The increment of the next unloading step from `depth`: doubled beyond
+/// `-max_depth`, none beyond `-MAX_PULL_DEPTHS max_depth`.
+fn next_increment(depth: f64, increment: f64, max_depth: f64) -> Option<f64> {
+    if depth < -MAX_PULL_DEPTHS * max_depth {
+        None
+    } else if depth < -max_depth {
+        Some(2.0 * increment)
+    } else {
+        Some(increment)
+    }
 }
 
 /// The error of an unloading that still holds at `-MAX_PULL_DEPTHS` loading

@@ -53,6 +53,15 @@ const STALL: usize = 25;
 /// The smallest damping of the plain steps.
 const MIN_DAMPING: f64 = 1.0 / 64.0;
 
+/// The largest change of the cells' curvature factors (as their square
+/// roots, weighted by the tensions they scale) between the contact a solve
+/// started from and the one it converged to that is left unread
+/// ([`ContactSolver::solve_depth_cohesive`]).
+const ROOT_TOLERANCE: f64 = 2e-3;
+
+/// Times one solve reads its curvature again from a converged contact.
+const MAX_REREADS: usize = 8;
+
 /// Fixed-point rounds of one cohesive solve before it gives up.
 const MAX_ROUNDS: usize = 2000;
 
@@ -122,7 +131,12 @@ impl CohesiveZone {
     /// (`c` = 0 leaves the law as it is; default [`CURVATURE_CORRECTION`]).
     /// The curvature is that of the contact's cells smoothed over the zone,
     /// taken at the first round of each solve (for a load step, the
-    /// contact of the last one, moved by the step).
+    /// contact of the last one, moved by the step) and held while the
+    /// fixed point converges; then read again from the converged contact,
+    /// and the fixed point resumed, while the factors (as their square
+    /// roots, weighted by the tensions they scale) move by more than 2e-3
+    /// (at most eight times): a long step that moves the edge by many
+    /// cells gets the curvature of the contact it reaches.
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] outside `[0, 1]`.
@@ -197,6 +211,26 @@ impl Law {
 }
 
 impl ContactSolver {
+    /// Each cell's curvature factor of `zone`'s law, as its square root,
+    /// from the contact of the compressive pressures `compressive`.
+    fn curvature_roots(&self, compressive: &[f64], zone: &CohesiveZone) -> Vec<f64> {
+        let contact: Vec<bool> = compressive.iter().map(|p| *p > 0.0).collect();
+        let grid = self.grid();
+        let bend = super::curvature::edge_curvature(
+            &contact,
+            grid.rows(),
+            grid.columns(),
+            self.operator.boundary() == crate::grid::Boundary::Periodic,
+            zone.zone_cells,
+        );
+        bend.iter()
+            .map(|kappa| {
+                let bias = zone.curvature_correction * kappa * zone.zone_cells;
+                (1.0 / (1.0 + bias.clamp(-0.5, 0.5))).sqrt()
+            })
+            .collect()
+    }
+
     /// Adhesive contact at `depth` (m) in the JKR limit by a cohesive zone
     /// resolved on the grid ([`CohesiveZone`]; the method is described in
     /// [`doc::adhesion`](crate::doc::adhesion)). Any contact shape, on
@@ -257,12 +291,15 @@ impl ContactSolver {
         let mut mixer = Anderson::new(MIXING_DEPTH);
         let mut mapped = vec![0.0; n];
         // Each cell's law as the square root of its curvature factor (the
-        // peak and the range scale with it), set at the first round.
+        // peak and the range scale with it), set at the first round and
+        // read again from converged contacts.
         let mut roots: Vec<f64> = Vec::new();
         let (mut best, mut stall, mut streak, mut damping) =
             (f64::INFINITY, 0usize, 0usize, 1.0f64);
         // Each cell's largest tension, Pa (its law's peak).
         let mut caps = vec![0.0; n];
+        // Curvatures read again from a converged contact.
+        let mut rereads = 0usize;
         for _ in 0..MAX_ROUNDS {
             self.check_interrupt("the cohesive zone's fixed point")?;
             self.operator.apply(&tension, &mut kt)?;
@@ -293,25 +330,11 @@ impl ContactSolver {
             let previous = change;
             change = 0.0;
             // The edge's curvature from the first round's contact, then
-            // held for the rest of the solve: the law does not change with
-            // the contact within a solve.
+            // held while the fixed point converges (the law does not change
+            // with the contact within those rounds); read again from the
+            // converged contact below.
             if zone.curvature_correction > 0.0 && roots.is_empty() {
-                let contact: Vec<bool> = compressive.iter().map(|p| *p > 0.0).collect();
-                let grid = self.grid();
-                let bend = super::curvature::edge_curvature(
-                    &contact,
-                    grid.rows(),
-                    grid.columns(),
-                    self.operator.boundary() == crate::grid::Boundary::Periodic,
-                    zone.zone_cells,
-                );
-                roots = bend
-                    .iter()
-                    .map(|kappa| {
-                        let bias = zone.curvature_correction * kappa * zone.zone_cells;
-                        (1.0 / (1.0 + bias.clamp(-0.5, 0.5))).sqrt()
-                    })
-                    .collect();
+                roots = self.curvature_roots(&compressive, zone);
             }
             let ws = &self.workspace;
             for c in 0..n {
@@ -333,7 +356,27 @@ impl ContactSolver {
                 caps[c] = law.peak;
                 change = f64::max(change, (mapped[c] - tension[c]).abs());
             }
-            if change <= tolerance * scale && inner <= tolerance {
+            let converged = change <= tolerance * scale && inner <= tolerance;
+            if converged && zone.curvature_correction > 0.0 && rereads < MAX_REREADS {
+                // A step that moved the contact far (a coarse protocol
+                // step) read its curvature from a contact unlike the
+                // converged one: read it again, and go on while it moves.
+                let fresh = self.curvature_roots(&compressive, zone);
+                // The change weighted by the tensions it scales.
+                let (mut moved, mut pull) = (0.0, 0.0);
+                for ((a, b), t) in fresh.iter().zip(&roots).zip(&mapped) {
+                    moved += (a - b).abs() * t.abs();
+                    pull += t.abs();
+                }
+                if moved > ROOT_TOLERANCE * pull {
+                    roots = fresh;
+                    rereads += 1;
+                    mixer.reset();
+                    best = f64::INFINITY;
+                    continue;
+                }
+            }
+            if converged {
                 // The solution of the tensions just solved for (the law's
                 // tensions at its gaps differ by at most `change`).
                 let contact: Vec<bool> = compressive.iter().map(|p| *p > 0.0).collect();

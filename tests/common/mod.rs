@@ -123,6 +123,32 @@ pub mod rubber_sphere {
         Material::new(E, NU).unwrap()
     }
 
+    /// A cycle of the rubber half-space under a paraboloid of [`RADIUS`]
+    /// with [`WORK`], tilted by `tilt`, to `max_depth` (m) in `steps`, on
+    /// `resolution`.
+    pub fn paraboloid_cycle(
+        tilt: Option<layered_contact::scene::Tilt>,
+        max_depth: f64,
+        steps: usize,
+        resolution: layered_contact::scene::Resolution,
+    ) -> layered_contact::scene::Scene {
+        use layered_contact::scene::{Adhesion, IndenterSpec, Protocol, Scene, SubstrateSpec};
+        Scene {
+            substrate: SubstrateSpec::HalfSpace {
+                youngs_modulus: E,
+                poisson_ratio: NU,
+            },
+            indenter: IndenterSpec::Paraboloid { radius: RADIUS },
+            tilt,
+            adhesion: Adhesion::Constant {
+                work_of_adhesion: WORK,
+            },
+            protocol: Protocol::Cycle { max_depth, steps },
+            resolution,
+            ..Scene::default()
+        }
+    }
+
     /// A solver for the rubber half-space on `grid`.
     pub fn rubber_solver(
         grid: &layered_contact::Grid,

@@ -7,8 +7,8 @@ use crate::error::Result;
 use crate::solver::least_force::{least_force, Probe};
 use crate::solver::{Solution, WarmStart};
 
-use super::super::{Phase, Step, MAX_PULL_DEPTHS};
-use super::{still_attached, unloading_steps, Control, Runner};
+use super::super::{Phase, Step};
+use super::{next_increment, still_attached, unloading_steps, Control, Runner};
 
 /// The least force's bracket is narrowed to this fraction of a step.
 const BRACKET: f64 = 16.0;
@@ -45,12 +45,10 @@ impl Runner<'_> {
         let mut pending: Option<Probe<Kept>> = None;
         let limit = unloading_steps(max_depth, increment);
         for _ in 0..limit {
-            if depth < -max_depth {
-                increment *= 2.0;
-            }
-            if depth < -MAX_PULL_DEPTHS * max_depth {
+            let Some(next) = next_increment(depth, increment, max_depth) else {
                 break;
-            }
+            };
+            increment = next;
             depth -= increment;
             let solution = self.solve(Control::Depth(depth))?;
             let lost = solution.contact_cells == 0;
