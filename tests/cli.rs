@@ -250,6 +250,28 @@ fn run_writes_the_stresses_below_a_coating() {
 }
 
 /// `check` prints the grid; `reference` the exact stiffness `2 E* a`.
+/// The tool says which adhesion method a scene took, and its curve is the
+/// library's: the rough film (`examples/scenes/rough_adhesive_film.toml`)
+/// names no method and gets the cohesive zone.
+#[test]
+fn run_says_which_adhesion_method_it_took() {
+    let dir = folder("adhesion_method");
+    let source = include_str!("../examples/scenes/rough_adhesive_film.toml");
+    std::fs::write(dir.join("rough.toml"), source).unwrap();
+    let out = tool(&["run", "rough.toml", "-o", "result"], &dir);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    assert!(
+        stdout.contains("adhesion: cohesive_zone (the automatic choice)"),
+        "{stdout}"
+    );
+    let scene: Scene = toml::from_str(source).unwrap();
+    let curve = scene.run(&mut |_| {}).unwrap();
+    let mut reader = csv::Reader::from_path(dir.join("result").join("curve.csv")).unwrap();
+    let rows: Vec<csv::StringRecord> = reader.records().map(Result::unwrap).collect();
+    assert_eq!(rows.len(), curve.steps.len());
+}
+
 #[test]
 fn check_and_reference() {
     let dir = folder("check");

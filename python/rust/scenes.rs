@@ -67,6 +67,10 @@ pub(crate) struct Curve {
     /// Known limits of the method behind these numbers, as sentences
     /// (empty when there are none): see `layered_contact::scene::Caveat`.
     caveats: Vec<String>,
+    /// The adhesion method the scene ran (`"energy_balance"`,
+    /// `"cohesive_zone"` or `"mesh_criterion"`: the automatic one
+    /// resolved), None without adhesion.
+    adhesion_method: Option<String>,
     /// The stresses below the surface at the most loaded step, when the
     /// scene's `outputs.stresses` asks for them (see `subsurface_stress`).
     stresses: Option<Py<PyDict>>,
@@ -97,6 +101,7 @@ impl Curve {
         state.set_item("grid", c.grid)?;
         state.set_item("peak", &c.peak)?;
         state.set_item("caveats", &c.caveats)?;
+        state.set_item("adhesion_method", &c.adhesion_method)?;
         state.set_item("stresses", &c.stresses)?;
         Ok((slf.get_type().getattr("_rebuild")?, (state,)))
     }
@@ -121,6 +126,7 @@ impl Curve {
             grid: get("grid")?.extract()?,
             peak: get("peak")?.extract()?,
             caveats: get("caveats")?.extract()?,
+            adhesion_method: get("adhesion_method")?.extract()?,
             stresses: get("stresses")?.extract()?,
         })
     }
@@ -239,6 +245,10 @@ pub(crate) fn run_scene(
         return Err(e);
     }
     let curve = curve.py_err()?;
+    let adhesion_method = scene
+        .adhesion
+        .works()
+        .map(|_| scene.resolved_adhesion_method().name().to_string());
     let steps = &curve.steps;
     let column = |f: fn(&lc::scene::Step) -> f64| array(py, steps.iter().map(f).collect());
     let pull_off = curve
@@ -266,6 +276,7 @@ pub(crate) fn run_scene(
         ),
         peak,
         caveats: curve.caveats.iter().map(ToString::to_string).collect(),
+        adhesion_method,
         stresses: curve
             .stresses
             .as_ref()

@@ -104,7 +104,9 @@ def test_caveats_say_when_adhesion_is_edge_averaged():
     # pull-off within its second-order error of JKR (-6.4 % at 16 cells
     # across, tests/cohesive.rs; the cap is the paraboloid to 0.1 %).
     zone = lc.run_scene(dict(cap, solver={}))
-    assert zone.caveats == []
+    assert zone.caveats == [] and zone.adhesion_method == "cohesive_zone"
+    assert curve.adhesion_method == "energy_balance"
+    assert lc.run_scene(PUNCH).adhesion_method is None
     assert zone.pull_off["force"] / curve.pull_off["force"] - 1 == pytest.approx(-0.064, abs=0.015)
     # The mesh-dependent criterion says what it is.
     mesh = lc.run_scene(dict(SPHERE, solver={"adhesion_method": "mesh_criterion"}))

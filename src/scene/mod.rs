@@ -262,6 +262,25 @@ pub enum AdhesionMethod {
     CohesiveZone,
 }
 
+impl AdhesionMethod {
+    /// Its name in scene files: `"auto"`, `"energy_balance"`,
+    /// `"mesh_criterion"` or `"cohesive_zone"`.
+    ///
+    /// ```
+    /// use layered_contact::scene::AdhesionMethod;
+    ///
+    /// assert_eq!(AdhesionMethod::CohesiveZone.name(), "cohesive_zone");
+    /// ```
+    pub fn name(&self) -> &'static str {
+        match self {
+            AdhesionMethod::Auto => "auto",
+            AdhesionMethod::EnergyBalance => "energy_balance",
+            AdhesionMethod::MeshCriterion => "mesh_criterion",
+            AdhesionMethod::CohesiveZone => "cohesive_zone",
+        }
+    }
+}
+
 impl Default for SolverSettings {
     fn default() -> Self {
         SolverSettings {

@@ -178,6 +178,7 @@ class Curve:
     grid: Tuple[int, int, float]
     peak: Optional[Solution]
     caveats: list[str]
+    adhesion_method: Optional[str]
     stresses: Optional[dict]
     def __len__(self) -> int: ...
 

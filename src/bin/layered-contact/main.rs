@@ -198,6 +198,15 @@ fn run_with(
         curve.grid.columns(),
         curve.grid.spacing()
     );
+    if scene.adhesion.works().is_some() {
+        let method = scene.resolved_adhesion_method();
+        let how = if scene.solver.adhesion_method == method {
+            "as the scene asks"
+        } else {
+            "the automatic choice"
+        };
+        say!("adhesion: {} ({how})", method.name());
+    }
     for caveat in &curve.caveats {
         say!("caveat: {caveat}");
     }
