@@ -207,8 +207,8 @@ pub struct SolverSettings {
 ///
 /// [`Auto`](AdhesionMethod::Auto), the default, takes the method that is
 /// exact for the scene ([`Scene::resolved_adhesion_method`]): the energy
-/// balance where the contact sets are discs about the axis, the cohesive
-/// zone for every other shape. `#[non_exhaustive]`: methods may be added
+/// balance where the contact sets are discs, the cohesive zone for every
+/// other shape. `#[non_exhaustive]`: methods may be added
 /// in minor releases.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[cfg_attr(
