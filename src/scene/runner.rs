@@ -70,32 +70,30 @@ impl<'a> Runner<'a> {
     /// against the unloading work of adhesion, in either phase.
     fn solve(&mut self, control: Control) -> Result<Solution> {
         let warm = self.warm.as_ref();
-        let (solution, warm) = match (control, self.scene.adhesion.works()) {
-            (Control::Depth(d), Some(_)) if self.cohesive.is_some() => {
-                let zone = self.cohesive.as_ref().ok_or(Error::Internal {
-                    what: "scene cohesive zone",
-                    detail: "no law".into(),
-                })?;
+        let (solution, warm) = match (control, self.scene.adhesion.works(), self.cohesive) {
+            (Control::Depth(d), Some(_), Some(zone)) => {
                 self.solver
-                    .solve_depth_cohesive(self.indenter, d, zone, warm, self.observer)?
+                    .solve_depth_cohesive(self.indenter, d, &zone, warm, self.observer)?
             }
-            (Control::Depth(d), None) => {
+            (Control::Depth(d), None, _) => {
                 self.solver
                     .solve_depth(self.indenter, d, warm, self.observer)?
             }
-            (Control::Force(f), None) => {
+            (Control::Force(f), None, _) => {
                 self.solver
                     .solve_force(self.indenter, f, warm, self.observer)?
             }
-            (Control::Depth(d), Some((loading, unloading))) => self.solver.solve_depth_hysteretic(
-                self.indenter,
-                d,
-                loading,
-                unloading,
-                warm,
-                self.observer,
-            )?,
-            (Control::Force(_), Some(_)) => {
+            (Control::Depth(d), Some((loading, unloading)), None) => {
+                self.solver.solve_depth_hysteretic(
+                    self.indenter,
+                    d,
+                    loading,
+                    unloading,
+                    warm,
+                    self.observer,
+                )?
+            }
+            (Control::Force(_), Some(_), _) => {
                 return Err(Error::Unsupported {
                     feature: "force control with the mesh-dependent adhesion criterion",
                     reason: "use the energy-balance method (the default)",

@@ -5,7 +5,7 @@
 use crate::error::{Error, Result};
 use crate::indenter::Indenter;
 
-use super::least_force::{least_force, Probe};
+use super::least_force::{least_force, Probe, STEP_FRACTION};
 use super::{check_finite, CohesiveZone, ContactSolver, Observer, WarmStart};
 
 /// The pull-off of an unloading under displacement control
@@ -26,20 +26,16 @@ pub struct CohesivePullOff {
 /// Unloading steps before [`ContactSolver::cohesive_pull_off`] gives up.
 const MAX_UNLOADING_STEPS: usize = 10_000;
 
-/// The least force's bracket is narrowed to this fraction of a step before
-/// the parabola's vertex is solved.
-const BRACKET: usize = 16;
-
 impl ContactSolver {
     /// The pull-off force under displacement control: from the equilibrium
     /// at `depth` (reached from `warm`, or cold), the indenter is withdrawn
     /// in steps of `step` (m) with [`solve_depth_cohesive`](Self::solve_depth_cohesive)
     /// until the force rises again or the contact is lost; the least force
     /// of the last two steps is then bracketed by golden sections to a
-    /// quarter of a step, each equilibrium reached from the nearest one
+    /// sixteenth of a step, each equilibrium reached from the nearest one
     /// above it, and solved at the vertex of the parabola through the
     /// least three (exact to third order in the bracket where the force is
-    /// smooth; about six more solves).
+    /// smooth; about nine more solves).
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for a step that is not positive and
@@ -60,11 +56,11 @@ impl ContactSolver {
     ) -> Result<CohesivePullOff> {
         let step = crate::error::positive_finite("unloading step", step)?;
         check_finite("depth", depth)?;
-        if depth - step / (16 * BRACKET) as f64 == depth {
+        if depth - STEP_FRACTION * step / 16.0 == depth {
             return Err(Error::InvalidParameter {
                 name: "unloading step (m)",
                 value: step,
-                expected: "at least 64 units in the last place of the depth (the search \
+                expected: "at least 256 units in the last place of the depth (the search \
                            for the least force divides it)",
             });
         }
@@ -125,7 +121,7 @@ impl ContactSolver {
             what: "cohesive pull-off",
             detail: "the walk ended with fewer than three steps".into(),
         })?;
-        let probes = least_force(bracket, step / BRACKET as f64, |d, from| {
+        let probes = least_force(bracket, STEP_FRACTION * step, |d, from| {
             let (force, _, kept) = solve(self, d, Some(&from.kept))?;
             Ok::<_, Error>(Probe {
                 depth: d,

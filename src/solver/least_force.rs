@@ -15,6 +15,10 @@ pub(crate) struct Probe<S> {
     pub(crate) kept: S,
 }
 
+/// The bracket a search narrows to, as a fraction of an unloading step
+/// (scenes and [`ContactSolver::cohesive_pull_off`](super::ContactSolver::cohesive_pull_off)).
+pub(crate) const STEP_FRACTION: f64 = 1.0 / 16.0;
+
 /// Equilibria solved by one search at most.
 pub(crate) const MAX_PROBES: usize = 24;
 

@@ -1,17 +1,14 @@
 //! The unloading of a cycle through the cohesive zone: steps of the
 //! protocol until the contact is lost, and the pull-off searched between
-//! the last two where the force turns (golden sections to a quarter of a
-//! step, then the parabola's vertex: `solver::least_force`).
+//! the last two where the force turns (golden sections to a sixteenth of
+//! a step, then the parabola's vertex: `solver::least_force`).
 
 use crate::error::Result;
-use crate::solver::least_force::{least_force, Probe};
+use crate::solver::least_force::{least_force, Probe, STEP_FRACTION};
 use crate::solver::{Solution, WarmStart};
 
 use super::super::{Phase, Step};
 use super::{next_increment, still_attached, unloading_steps, Control, Runner};
-
-/// The least force's bracket is narrowed to this fraction of a step.
-const BRACKET: f64 = 16.0;
 
 /// What a probe of the search keeps: its state, and its solution unless it
 /// is already recorded.
@@ -112,7 +109,8 @@ impl Runner<'_> {
         bracket: [Probe<Kept>; 3],
         progress: &mut dyn FnMut(&Step),
     ) -> Result<Option<(Option<WarmStart>, bool, f64)>> {
-        let width = (bracket[0].depth - bracket[2].depth) / (2.0 * BRACKET);
+        // The bracket spans two steps.
+        let width = STEP_FRACTION * 0.5 * (bracket[0].depth - bracket[2].depth);
         let probes = least_force(bracket, width, |depth, from: &Probe<Kept>| {
             self.warm = from.kept.0.clone();
             let solution = self.solve(Control::Depth(depth))?;
