@@ -8,42 +8,19 @@
 //! scene cycles: error and cost".
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
-use layered_contact::analytic::JkrSphere;
-use layered_contact::scene::{
-    Adhesion, AdhesionMethod, IndenterSpec, Protocol, Resolution, Scene, SubstrateSpec, Tilt,
-};
-use layered_contact::Material;
+use layered_contact::scene::{AdhesionMethod, IndenterSpec};
+
+#[path = "../examples/support/tilted_cycle.rs"]
+#[allow(dead_code)] // the bench uses only the scene
+mod tilted_cycle;
 
 fn bench_cycle(c: &mut Criterion) {
-    let (radius, work) = (0.01, 0.05);
-    let jkr = JkrSphere::new(&Material::new(1e6, 0.48).unwrap(), radius, work).unwrap();
-    let a = jkr.pull_off_contact_radius();
     let mut group = c.benchmark_group("adhesive scene cycle (tilted sphere, cohesive zone)");
     group.sample_size(10);
     for n in [64usize, 128] {
-        let scene = Scene {
-            substrate: SubstrateSpec::HalfSpace {
-                youngs_modulus: 1e6,
-                poisson_ratio: 0.48,
-            },
-            indenter: IndenterSpec::Sphere { radius },
-            tilt: Some(Tilt {
-                angle_y: (0.3 * a / radius).atan(),
-                angle_x: (0.17 * a / radius).atan(),
-            }),
-            adhesion: Adhesion::Constant {
-                work_of_adhesion: work,
-            },
-            protocol: Protocol::Cycle {
-                max_depth: jkr.depth(1.6 * a),
-                steps: 6,
-            },
-            resolution: Resolution {
-                cells_across: n,
-                margin: 0.6,
-            },
-            ..Scene::default()
-        };
+        let radius = tilted_cycle::RADIUS;
+        let scene =
+            tilted_cycle::scene(IndenterSpec::Sphere { radius }, n, AdhesionMethod::Auto).unwrap();
         assert_eq!(
             scene.resolved_adhesion_method(),
             AdhesionMethod::CohesiveZone

@@ -21,27 +21,18 @@
 use std::f64::consts::PI;
 use std::time::Instant;
 
-use layered_contact::analytic::JkrSphere;
 use layered_contact::indenter::{Indenter, Paraboloid, Tilted};
-use layered_contact::scene::{
-    Adhesion, AdhesionMethod, IndenterSpec, Protocol, Resolution, Scene, SolverSettings,
-    SubstrateSpec, Tilt,
-};
-use layered_contact::{Material, Result};
+use layered_contact::scene::{AdhesionMethod, IndenterSpec};
+use layered_contact::Result;
 
-const E: f64 = 1e6;
-const NU: f64 = 0.48;
-const RADIUS: f64 = 0.01;
-const WORK: f64 = 0.05;
+#[path = "support/tilted_cycle.rs"]
+mod tilted_cycle;
+use tilted_cycle::{jkr, RADIUS, WORK};
 
 fn main() -> Result<()> {
-    let rubber = Material::new(E, NU)?;
-    let jkr = JkrSphere::new(&rubber, RADIUS, WORK)?;
+    let jkr = jkr()?;
     let a = jkr.pull_off_contact_radius();
-    let tilt = Tilt {
-        angle_y: (0.3 * a / RADIUS).atan(),
-        angle_x: (0.17 * a / RADIUS).atan(),
-    };
+    let tilt = tilted_cycle::tilt()?;
     let exact = -1.5 * PI * RADIUS * WORK;
     println!("method    N   error %   steps  iterations  time s  non-adhesive solves");
     let mut method = AdhesionMethod::CohesiveZone;
@@ -54,30 +45,7 @@ fn main() -> Result<()> {
             };
             continue;
         };
-        let scene = Scene {
-            substrate: SubstrateSpec::HalfSpace {
-                youngs_modulus: E,
-                poisson_ratio: NU,
-            },
-            indenter: IndenterSpec::Paraboloid { radius: RADIUS },
-            tilt: Some(tilt),
-            adhesion: Adhesion::Constant {
-                work_of_adhesion: WORK,
-            },
-            protocol: Protocol::Cycle {
-                max_depth: jkr.depth(1.6 * a),
-                steps: 6,
-            },
-            resolution: Resolution {
-                cells_across: n,
-                margin: 0.6,
-            },
-            solver: SolverSettings {
-                adhesion_method: method,
-                ..SolverSettings::default()
-            },
-            ..Scene::default()
-        };
+        let scene = tilted_cycle::scene(IndenterSpec::Paraboloid { radius: RADIUS }, n, method)?;
         let clock = Instant::now();
         let mut solver = scene.solver()?;
         let curve = scene.run_on(&mut solver, &mut |_| {})?;

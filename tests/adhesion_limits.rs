@@ -70,6 +70,20 @@ fn axisymmetry_is_read_from_the_profile_not_the_type() {
         ball.height(x, y)
     });
     assert!((same / force - 1.0).abs() < 1e-12);
+    // The paraboloid moved off the axis by (0.37, -0.21) cells: discs about
+    // its apex, found from the profile (the solver reads the apex from the
+    // lowest cell's neighbours), and the same pull-off (JKR's for any apex;
+    // 0.5 % allowed as above).
+    let cell = 8.0
+        * JkrSphere::new(&rubber(), RADIUS, WORK)
+            .unwrap()
+            .pull_off_contact_radius()
+        / 64.0;
+    let (x0, y0) = (0.37 * cell, -0.21 * cell);
+    let (moved, exact, averaged) =
+        map_branches(|x, y| ((x - x0).powi(2) + (y - y0).powi(2)) / (2.0 * RADIUS));
+    assert!(!averaged);
+    assert!((moved / exact - 1.0).abs() < 5e-3, "{moved} vs {exact}");
     // An elliptic paraboloid (Ry = 2 Rx): its contacts are not discs, and
     // the result says so. Its pull-off is the sphere's of radius
     // sqrt(Rx Ry) to within a few per cent (Johnson & Greenwood 1997), so

@@ -220,6 +220,49 @@ fn operator_matches_dense_sum() {
     }
 }
 
+/// Above `KEEP_INFLUENCE_CELLS` an isolated operator drops its influence
+/// coefficients (8 bytes per cell) after building its spectrum, and
+/// applies the same kernel: one load's displacements on a 2048 x 2049
+/// half-space grid equal the coefficients of a small grid's table (the
+/// same closed form, Love 1929, at the same offsets) to 1e-12 of the
+/// largest; a 2048 x 2048 grid keeps its table.
+#[test]
+fn large_operators_drop_their_influence_table_and_apply_the_same_kernel() {
+    use layered_contact::kernel::KEEP_INFLUENCE_CELLS;
+    let body = Substrate::half_space(Material::new(1e6, 0.3).unwrap());
+    let kept = Grid::new(2048, 2048, 1e-6).unwrap();
+    assert_eq!(kept.len(), KEEP_INFLUENCE_CELLS);
+    let operator = ComplianceOperator::new(&body, &kept, Boundary::Isolated).unwrap();
+    assert!(operator.influence().is_some());
+    drop(operator);
+    let grid = Grid::new(2048, 2049, 1e-6).unwrap();
+    let mut operator = ComplianceOperator::new(&body, &grid, Boundary::Isolated).unwrap();
+    assert!(operator.influence().is_none());
+    let small = InfluenceCoefficients::isolated(&body, &Grid::new(40, 40, 1e-6).unwrap());
+    let (li, lj) = (1000, 1001);
+    let mut pressure = vec![0.0; grid.len()];
+    pressure[li * 2049 + lj] = 1.0;
+    let mut u = vec![0.0; grid.len()];
+    operator.apply(&pressure, &mut u).unwrap();
+    let scale = small.get(0, 0);
+    for (di, dj) in [
+        (0isize, 0isize),
+        (1, 0),
+        (0, -1),
+        (3, 7),
+        (-20, 39),
+        (39, -39),
+    ] {
+        let cell = (li as isize + di) as usize * 2049 + (lj as isize + dj) as usize;
+        let expected = small.get(di, dj);
+        assert!(
+            (u[cell] - expected).abs() <= 1e-12 * scale,
+            "offset ({di}, {dj}): {:e} vs {expected:e}",
+            u[cell]
+        );
+    }
+}
+
 /// The periodic operator: a sampled cosine is an eigenvector with eigenvalue
 /// `u_z(q) sinc(q_x Delta/2) sinc(q_y Delta/2)`; a uniform pressure on a
 /// rigid-base layer settles uniformly by the uniaxial compliance, and not at

@@ -182,16 +182,19 @@
 //! | 2048 | 12 | 2.9 s | 1.6 s | 444 MB |
 //! | 4096 | 11 | 12.6 s | 7.4 s | 1613 MB |
 //!
-//! A solver needs about 100 to 110 bytes per cell of the unpadded grid on
-//! an isolated grid from N = 2048 up: the
+//! A solver needs about 100 to 115 bytes per cell of the unpadded grid on
+//! an isolated grid from N = 2048 up, under 100 from 4096 on
+//! (`BENCHMARKS.md`, "Speed: rough contacts on large grids"): the
 //! operator's half-spectra of the grid's rows (16 bytes, one buffer, which
 //! the preconditioner's FFT borrows) and its kernel spectrum (8: it is
 //! even, and only its non-negative row wavenumbers are kept), the influence
-//! coefficients (8), the solver's per-cell vectors (about 70, one of which
+//! coefficients (8, kept for direct sums up to
+//! [`KEEP_INFLUENCE_CELLS`](crate::kernel::KEEP_INFLUENCE_CELLS) cells and
+//! dropped beyond), the solver's per-cell vectors (about 70, one of which
 //! holds the preconditioner's box while it is idle), and the box's
 //! multiplier; the coarser solvers of the multi-resolution start keep only
-//! their kernels and plans between starts and work in the finer solver's
-//! vectors. [`kernel::memory_estimate`](crate::kernel::memory_estimate)
+//! their kernels and plans between starts (no influence coefficients) and
+//! work in the finer solver's vectors. [`kernel::memory_estimate`](crate::kernel::memory_estimate)
 //! gives the estimate a solver reserves before allocating.
 //!
 //! Rough contacts (a self-affine surface of Hurst exponent 0.8 down to four

@@ -89,12 +89,15 @@
 //! therefore says which case it is in:
 //!
 //! * [`AdhesiveBranches::edge_averaged`](crate::solver::AdhesiveBranches::edge_averaged)
-//!   is false only when every set of the family is a digital disc about the
-//!   axis on an isolated grid, read from the sampled profile (along the
-//!   family the distance from the axis never decreases, cells at the same
-//!   distance have the same height, and every cell as near the axis as the
-//!   family's farthest belongs to it), so a height map of a sphere counts
-//!   as axisymmetric and a sphere tilted by any angle does not, nor does a
+//!   is false only when every set of the family is a digital disc on an
+//!   isolated grid, about the axis or about the apex of a paraboloid
+//!   anywhere on the grid (read from the lowest cell's neighbours), read
+//!   from the sampled profile (along the family the distance from the
+//!   centre never decreases, cells at the same distance have the same
+//!   height, and every cell as near the centre as the family's farthest
+//!   belongs to it), so a height map of a sphere, or of a paraboloid off
+//!   the axis (a tilted one), counts as axisymmetric and a sphere tilted
+//!   by any angle does not, nor does a
 //!   flat punch that is not round (its family is discs clipped by its face;
 //!   before 2026-11-24 a square or elliptical punch was reported as exact);
 //! * a scene built on such branches carries

@@ -24,5 +24,5 @@ pub use influence::{InfluenceCoefficients, MAX_TAIL_ERROR};
 pub(crate) use inverse::{BoxInverse, Residual};
 pub use operator::{
     check_film, distributed_memory_estimate, memory_estimate, ComplianceOperator,
-    DIRECT_LOADS_PER_LOG2, MIN_THICKNESS_OVER_SPACING,
+    DIRECT_LOADS_PER_LOG2, KEEP_INFLUENCE_CELLS, MIN_THICKNESS_OVER_SPACING,
 };

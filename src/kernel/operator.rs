@@ -90,7 +90,8 @@ pub(crate) struct ShareBuffer(pub(super) Vec<num_complex::Complex<f64>>);
 /// Bytes of the compliance operator's buffers and a solver's per-cell
 /// vectors on `grid`: the complex half-spectra of the grid's rows, the
 /// kernel's spectrum (and the preconditioner's, built on first use), the
-/// influence coefficients, a few FFT lines per thread, and ten per-cell
+/// influence coefficients (while the spectrum is built; kept up to
+/// [`KEEP_INFLUENCE_CELLS`]), a few FFT lines per thread, and ten per-cell
 /// solver vectors.
 pub fn memory_estimate(grid: &Grid, boundary: Boundary) -> usize {
     let size = fft_size(grid, boundary);
@@ -133,6 +134,15 @@ fn fft_size(grid: &Grid, boundary: Boundary) -> (usize, usize) {
         Boundary::Periodic => (grid.rows(), grid.columns()),
     }
 }
+
+/// The largest isolated grid (cells) whose operator keeps its influence
+/// coefficients after building its spectrum (for direct sums of a few
+/// loads, [`ComplianceOperator::direct_sum_is_cheaper`]): `2^22`, a 2048 x
+/// 2048 grid. Larger grids drop the table, 8 bytes per cell: on rough
+/// contacts at 512^2 to 2048^2 the direct sums saved no measurable time
+/// (the same iterations, times within the run-to-run noise; BENCHMARKS.md,
+/// "Speed: rough contacts on large grids").
+pub const KEEP_INFLUENCE_CELLS: usize = 1 << 22;
 
 /// Loaded cells per binary digit of the padded grid's cell count up to which
 /// a direct summation of their displacements beats an FFT convolution
@@ -341,7 +351,10 @@ impl ComplianceOperator {
                 check_tail(&influence, substrate)?;
                 let mut spectrum = operator.isolated_spectrum(&influence)?;
                 match slab {
-                    None => operator.influence = Some(influence),
+                    None if grid.len() <= KEEP_INFLUENCE_CELLS => {
+                        operator.influence = Some(influence)
+                    }
+                    None => {}
                     // Keep this rank's spectrum columns.
                     Some(_) => {
                         let distinct = size.0 / 2 + 1;
@@ -397,9 +410,18 @@ impl ComplianceOperator {
         self.layered
     }
 
-    /// The influence coefficients (isolated operators only).
+    /// The influence coefficients: on isolated operators of at most
+    /// [`KEEP_INFLUENCE_CELLS`] cells, not split across ranks (`None`
+    /// otherwise).
     pub fn influence(&self) -> Option<&InfluenceCoefficients> {
         self.influence.as_ref()
+    }
+
+    /// Drops the influence coefficients (a coarse level of a
+    /// multi-resolution start, whose loose solves gain nothing from direct
+    /// sums): the operator then corrects by convolution only.
+    pub(crate) fn drop_influence(&mut self) {
+        self.influence = None;
     }
 
     /// The spectrum of the coefficients placed on the padded grid in

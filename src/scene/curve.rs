@@ -89,8 +89,8 @@ pub struct Curve {
 pub enum Caveat {
     /// The energy-balance adhesion method balanced the energy release rate
     /// averaged over the contact edge, along contact sets that are level
-    /// sets of the profile but neither discs about the axis on an isolated
-    /// grid nor strips across a periodic one: the JKR-limit solution only
+    /// sets of the profile but neither discs (about the axis or a
+    /// paraboloid's apex) on an isolated grid nor strips across a periodic one: the JKR-limit solution only
     /// where the release is even along the edge. For a tilted, elliptic or
     /// rectangular indenter or a height map the forces may be off by several
     /// per cent ([`doc::adhesion`](crate::doc::adhesion));
@@ -114,8 +114,8 @@ impl std::fmt::Display for Caveat {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Caveat::EdgeAveragedAdhesion => f.write_str(
-                "edge-averaged adhesion: the contact sets are neither discs about the grid's \
-                 axis nor strips across a periodic grid, so the energy balance averages the \
+                "edge-averaged adhesion: the contact sets are neither discs (about the grid's \
+                 axis or a paraboloid's apex) nor strips across a periodic grid, so the energy balance averages the \
                  energy release rate over the edge and its forces may be off by several per \
                  cent (the JKR-limit solution only where the release is even along the edge)",
             ),

@@ -74,7 +74,8 @@ pub(super) fn run(
         solver,
         recorder.steps,
         peak_solution,
-        // A tilted paraboloid's sets are discs about another point.
+        // A tilted paraboloid's sets are discs about its apex (the solver
+        // finds them too; the scene knows it without reading the profile).
         branches.edge_averaged() && !scene.contact_sets_are_discs(),
     ))
 }

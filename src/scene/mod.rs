@@ -406,20 +406,20 @@ impl Scene {
             Protocol::Force { .. } | Protocol::ForceCycle { .. }
         );
         if self.adhesion != Adhesion::None && forced {
-            match method {
+            let feature = match method {
                 AdhesionMethod::MeshCriterion => {
-                    return Err(Error::Unsupported {
-                        feature: "force control with the mesh-dependent adhesion criterion",
-                        reason: "use the energy-balance method for adhesive force control",
-                    })
+                    Some("force control with the mesh-dependent adhesion criterion")
                 }
                 AdhesionMethod::CohesiveZone => {
-                    return Err(Error::Unsupported {
-                        feature: "force control with the cohesive-zone adhesion method",
-                        reason: "use the energy-balance method for adhesive force control",
-                    })
+                    Some("force control with the cohesive-zone adhesion method")
                 }
-                _ => {}
+                _ => None,
+            };
+            if let Some(feature) = feature {
+                return Err(Error::Unsupported {
+                    feature,
+                    reason: "use the energy-balance method for adhesive force control",
+                });
             }
         }
         if self.adhesion != Adhesion::None

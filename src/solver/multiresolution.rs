@@ -81,6 +81,12 @@ impl ContactSolver {
                     &slab.halved(rows),
                 ),
             });
+            // The coarse levels keep no influence coefficients: their loose
+            // solves gain nothing from direct sums (8 bytes a coarse cell).
+            let built = built.map(|mut coarse| {
+                coarse.operator.drop_influence();
+                coarse
+            });
             // Distributed, every rank has the coarse solver or none has.
             self.coarse = Some(self.agreed(built).ok().map(Box::new));
         }

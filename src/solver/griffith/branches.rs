@@ -272,7 +272,8 @@ impl AdhesiveBranches {
 
     /// Whether the balance is only the edge-averaged one, and so not the
     /// JKR-limit solution: true unless every set of the family is a digital
-    /// disc about the axis on an isolated grid (an axisymmetric profile) or
+    /// disc on an isolated grid, about the axis or about a paraboloid's apex
+    /// anywhere on the grid (an axisymmetric profile about its own axis), or
     /// a strip across a periodic grid (a profile invariant along the grid's
     /// rows, columns or diagonals), the cases where the energy release rate
     /// is the same all along the edge and the balance is exact. Elsewhere (a

@@ -14,6 +14,7 @@ use crate::indenter::Indenter;
 use super::{check_finite, ContactSolver, IterationInfo, Observer};
 
 mod branches;
+mod discs;
 mod material;
 mod periodic;
 mod release;
@@ -311,46 +312,6 @@ impl ContactSolver {
                 .then(a.1.total_cmp(&b.1))
         });
         order
-    }
-
-    /// Whether the family's sets are digital discs about the axis: along
-    /// `order` (sorted by height, then distance from the axis) the distance
-    /// never decreases, and cells at the same distance have the same height.
-    /// Then every set is the contact of an axisymmetric indenter and the
-    /// edge-averaged energy balance is the exact one.
-    fn family_is_discs(&self, order: &[(usize, f64)]) -> bool {
-        let delta2 = self.grid().cell_area();
-        let profile = &self.workspace.profile;
-        // The family holds only finite heights, sorted: the first is the
-        // lowest and the last the highest.
-        let range = match (order.first(), order.last()) {
-            (Some(&(low, _)), Some(&(high, _))) => profile[high] - profile[low],
-            _ => return true,
-        };
-        let tolerance = 1e-9 * range.max(f64::MIN_POSITIVE);
-        // A disc clipped by the indenter's footprint (a flat punch that is
-        // not round) is not a disc: every cell of the grid as near the axis
-        // as the family's farthest must belong to it.
-        let farthest = order.iter().map(|&(_, r2)| r2).fold(0.0, f64::max);
-        let grid = *self.grid();
-        let columns = grid.columns();
-        let within = (0..grid.len())
-            .filter(|&c| {
-                let (x, y) = grid.cell_centre(c / columns, c % columns);
-                x * x + y * y <= farthest
-            })
-            .count();
-        if within != order.len() {
-            return false;
-        }
-        order.windows(2).all(|w| {
-            let ((a, ra), (b, rb)) = (w[0], w[1]);
-            if (rb - ra).abs() <= 1e-9 * delta2 {
-                profile[b] - profile[a] <= tolerance
-            } else {
-                rb > ra
-            }
-        })
     }
 
     /// Solves the clamped flat-punch and shape problems on the sets of the
