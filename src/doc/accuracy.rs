@@ -193,8 +193,8 @@
 //! dropped beyond), the solver's per-cell vectors (about 70, one of which
 //! holds the preconditioner's box while it is idle), and the box's
 //! multiplier; the coarser solvers of the multi-resolution start keep only
-//! their kernels and plans between starts (no influence coefficients) and
-//! work in the finer solver's vectors. [`kernel::memory_estimate`](crate::kernel::memory_estimate)
+//! their kernels and plans between starts (no influence coefficients under
+//! a fine grid that keeps none) and work in the finer solver's vectors. [`kernel::memory_estimate`](crate::kernel::memory_estimate)
 //! gives the estimate a solver reserves before allocating.
 //!
 //! Rough contacts (a self-affine surface of Hurst exponent 0.8 down to four

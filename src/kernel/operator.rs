@@ -138,10 +138,11 @@ fn fft_size(grid: &Grid, boundary: Boundary) -> (usize, usize) {
 /// The largest isolated grid (cells) whose operator keeps its influence
 /// coefficients after building its spectrum (for direct sums of a few
 /// loads, [`ComplianceOperator::direct_sum_is_cheaper`]): `2^22`, a 2048 x
-/// 2048 grid. Larger grids drop the table, 8 bytes per cell: on rough
-/// contacts at 512^2 to 2048^2 the direct sums saved no measurable time
-/// (the same iterations, times within the run-to-run noise; BENCHMARKS.md,
-/// "Speed: rough contacts on large grids").
+/// 2048 grid. Larger grids drop the table, 8 bytes per cell (and so do the
+/// coarse levels of their multi-resolution start): on a rough contact at
+/// 4096^2 the direct sums' share of the time is within the run-to-run
+/// noise (the same iterations; BENCHMARKS.md, "Speed: rough contacts on
+/// large grids").
 pub const KEEP_INFLUENCE_CELLS: usize = 1 << 22;
 
 /// Loaded cells per binary digit of the padded grid's cell count up to which
@@ -418,8 +419,8 @@ impl ComplianceOperator {
     }
 
     /// Drops the influence coefficients (a coarse level of a
-    /// multi-resolution start, whose loose solves gain nothing from direct
-    /// sums): the operator then corrects by convolution only.
+    /// multi-resolution start under a fine grid that keeps none): the
+    /// operator then corrects by convolution only.
     pub(crate) fn drop_influence(&mut self) {
         self.influence = None;
     }

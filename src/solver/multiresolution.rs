@@ -81,10 +81,16 @@ impl ContactSolver {
                     &slab.halved(rows),
                 ),
             });
-            // The coarse levels keep no influence coefficients: their loose
-            // solves gain nothing from direct sums (8 bytes a coarse cell).
+            // Under a fine grid too large to keep its influence
+            // coefficients the coarse levels keep none either (8 bytes a
+            // coarse cell). Below, they keep them: a Hertzian contact's
+            // coarse solves clamp few cells, and their direct sums saved
+            // about a tenth of the solve at 2048^2 (BENCHMARKS.md).
+            let lean = self.operator.influence().is_none();
             let built = built.map(|mut coarse| {
-                coarse.operator.drop_influence();
+                if lean {
+                    coarse.operator.drop_influence();
+                }
                 coarse
             });
             // Distributed, every rank has the coarse solver or none has.
