@@ -7,6 +7,7 @@
 //! * `layer`: the same sphere on a rubber film on a rigid base as thick as
 //!   the half-space's pull-off contact radius, against the exact layered
 //!   JKR pull-off ([`Axisymmetric`](layered_contact::analytic::Axisymmetric));
+//!   `FILM_RATIO=r` in the environment makes the film `r` times thinner;
 //! * `punch`: Kendall's flat punch (1971), `N` cells across, against the
 //!   punch of the staircase's area;
 //! * `ellipse`: an elliptic paraboloid (radii 10 and 20 mm) on the
@@ -56,7 +57,12 @@ fn main() -> Result<()> {
                 let (substrate, exact) = if case == "sphere" {
                     (Substrate::half_space(rubber), jkr.pull_off_force())
                 } else {
-                    let film = Substrate::layer_on_rigid_base(rubber, a)?;
+                    // FILM_RATIO=r makes the film a / r thick (default 1).
+                    let ratio: f64 = std::env::var("FILM_RATIO")
+                        .ok()
+                        .and_then(|r| r.parse().ok())
+                        .unwrap_or(1.0);
+                    let film = Substrate::layer_on_rigid_base(rubber, a / ratio)?;
                     let body = Axisymmetric::up_to_contact_radius(&film, 4.0 * a)?;
                     let exact = body.paraboloid(RADIUS, WORK)?.pull_off()?.load_control;
                     (film, exact.force)

@@ -245,10 +245,7 @@ pub(crate) fn run_scene(
         return Err(e);
     }
     let curve = curve.py_err()?;
-    let adhesion_method = scene
-        .adhesion
-        .works()
-        .map(|_| scene.resolved_adhesion_method().name().to_string());
+    let adhesion_method = scene.adhesion_method_run().map(|m| m.name().to_string());
     let steps = &curve.steps;
     let column = |f: fn(&lc::scene::Step) -> f64| array(py, steps.iter().map(f).collect());
     let pull_off = curve

@@ -108,6 +108,15 @@ pub enum Caveat {
     /// reference method, not a converged JKR-limit answer
     /// ([`doc::adhesion`](crate::doc::adhesion)).
     MeshDependentAdhesion,
+    /// The cohesive zone ([`CohesiveZone`](crate::solver::CohesiveZone))
+    /// spans two cells, its fewest, and is still longer than a quarter of
+    /// the top layer's thickness (the layer is thinner than eight cells):
+    /// it then acts as a softer law than the JKR limit and the pull-off is
+    /// biased (-0.8 % with the zone half the thickness, -4.6 % with the
+    /// whole, on a sphere; see
+    /// [`ZONE_LAYER_FRACTION`](crate::solver::ZONE_LAYER_FRACTION)). A
+    /// finer grid resolves it.
+    CohesiveZoneLongAgainstLayer,
 }
 
 impl std::fmt::Display for Caveat {
@@ -125,6 +134,12 @@ impl std::fmt::Display for Caveat {
                  curved edge N cells across) and on how the contact edge lies on the grid (up \
                  to about 40 % too strong along a straight edge on the grid): a reference \
                  method, not a converged answer",
+            ),
+            Caveat::CohesiveZoneLongAgainstLayer => f.write_str(
+                "cohesive zone long against the layer: the top layer is thinner than eight \
+                 cells, so the two-cell zone is longer than a quarter of its thickness and \
+                 the pull-off may be off by per cents (-0.8 % with the zone half the \
+                 thickness, -4.6 % with the whole): refine the grid",
             ),
         }
     }

@@ -498,6 +498,27 @@ impl Scene {
         }
     }
 
+    /// The adhesion method this scene's adhesive steps run
+    /// ([`resolved_adhesion_method`](Self::resolved_adhesion_method)), or
+    /// `None` for a scene without adhesion: what the tool prints and
+    /// Python's `Curve.adhesion_method` gives.
+    ///
+    /// ```
+    /// use layered_contact::scene::{Adhesion, AdhesionMethod, Scene};
+    ///
+    /// assert_eq!(Scene::default().adhesion_method_run(), None);
+    /// let sticky = Scene {
+    ///     adhesion: Adhesion::Constant { work_of_adhesion: 0.05 },
+    ///     ..Scene::default()
+    /// };
+    /// assert_eq!(sticky.adhesion_method_run(), Some(AdhesionMethod::EnergyBalance));
+    /// ```
+    pub fn adhesion_method_run(&self) -> Option<AdhesionMethod> {
+        self.adhesion
+            .works()
+            .map(|_| self.resolved_adhesion_method())
+    }
+
     /// Whether the indenter's level sets are discs on an isolated grid, where
     /// the energy balance releases evenly along the edge and is exact: an
     /// untilted sphere, paraboloid, cone or flat punch, and a tilted

@@ -93,10 +93,15 @@ impl<'a> Runner<'a> {
                     self.observer,
                 )?
             }
-            (Control::Force(_), Some(_), _) => {
+            // `Scene::validate_settings` refuses both before any solve.
+            (Control::Force(_), Some(_), cohesive) => {
                 return Err(Error::Unsupported {
-                    feature: "force control with the mesh-dependent adhesion criterion",
-                    reason: "use the energy-balance method (the default)",
+                    feature: if cohesive.is_some() {
+                        "force control with the cohesive-zone adhesion method"
+                    } else {
+                        "force control with the mesh-dependent adhesion criterion"
+                    },
+                    reason: "use the energy-balance method for adhesive force control",
                 })
             }
         };
@@ -209,10 +214,17 @@ impl<'a> Runner<'a> {
             peak: self.peak,
             // The step-by-step runner's adhesion is the mesh-dependent
             // criterion's or the cohesive zone's.
-            caveats: if self.scene.adhesion.works().is_some() && self.cohesive.is_none() {
-                vec![super::Caveat::MeshDependentAdhesion]
-            } else {
-                Vec::new()
+            caveats: match (self.scene.adhesion.works(), self.cohesive) {
+                (Some(_), None) => vec![super::Caveat::MeshDependentAdhesion],
+                (Some(_), Some(zone))
+                    if !zone.resolves_layer(
+                        self.solver.grid().spacing(),
+                        self.solver.substrate().top_thickness(),
+                    ) =>
+                {
+                    vec![super::Caveat::CohesiveZoneLongAgainstLayer]
+                }
+                _ => Vec::new(),
             },
             stresses: None,
         })))

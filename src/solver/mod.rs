@@ -80,7 +80,7 @@ use crate::substrate::Substrate;
 
 use workspace::Workspace;
 
-pub use cohesive::{CohesiveZone, COHESIVE_ZONE_CELLS, CURVATURE_CORRECTION};
+pub use cohesive::{CohesiveZone, COHESIVE_ZONE_CELLS, CURVATURE_CORRECTION, ZONE_LAYER_FRACTION};
 pub(crate) use cohesive_pull_off::pinned_at_rim;
 pub use cohesive_pull_off::CohesivePullOff;
 pub use griffith::{
@@ -253,6 +253,11 @@ impl ContactSolver {
     /// The grid.
     pub fn grid(&self) -> &Grid {
         self.operator.grid()
+    }
+
+    /// The body this solver presses into.
+    pub fn substrate(&self) -> &Substrate {
+        &self.substrate
     }
 
     /// The grid rows this solver holds: all of them, or on a solver split

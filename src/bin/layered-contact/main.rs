@@ -173,9 +173,8 @@ fn run_with(
     progress.stage("solving");
     // The energy balance builds its family of contact sets before any step:
     // each set is reported as it is solved.
-    let family = scene.adhesion.works().is_some()
-        && scene.resolved_adhesion_method()
-            == layered_contact::scene::AdhesionMethod::EnergyBalance;
+    let family =
+        scene.adhesion_method_run() == Some(layered_contact::scene::AdhesionMethod::EnergyBalance);
     let progress = std::cell::RefCell::new(progress);
     let curve = scene.run_observed(
         &mut solver,
@@ -198,8 +197,7 @@ fn run_with(
         curve.grid.columns(),
         curve.grid.spacing()
     );
-    if scene.adhesion.works().is_some() {
-        let method = scene.resolved_adhesion_method();
+    if let Some(method) = scene.adhesion_method_run() {
         let how = if scene.solver.adhesion_method == method {
             "as the scene asks"
         } else {
