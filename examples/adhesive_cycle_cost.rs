@@ -17,7 +17,9 @@
 //!
 //! `cargo run --release --example adhesive_cycle_cost -- [method N...]...`,
 //! for example `-- cohesive 16 32 64 mesh 16 32`; `STEPS=1` prints every
-//! step (phase, depth, force, iterations, contact area).
+//! step (phase, depth, force, iterations, contact area); `FORCE=1` runs a
+//! force cycle instead, to twice the pull-off force in 6 steps and back by
+//! the same decrement to the jump-off (a grid sized for that peak).
 use std::f64::consts::PI;
 use std::time::Instant;
 
@@ -45,7 +47,14 @@ fn main() -> Result<()> {
             };
             continue;
         };
-        let scene = tilted_cycle::scene(IndenterSpec::Paraboloid { radius: RADIUS }, n, method)?;
+        let mut scene =
+            tilted_cycle::scene(IndenterSpec::Paraboloid { radius: RADIUS }, n, method)?;
+        if std::env::var("FORCE").is_ok() {
+            scene.protocol = layered_contact::scene::Protocol::ForceCycle {
+                max_force: -2.0 * jkr.pull_off_force(),
+                steps: 6,
+            };
+        }
         let clock = Instant::now();
         let mut solver = scene.solver()?;
         let curve = scene.run_on(&mut solver, &mut |_| {})?;

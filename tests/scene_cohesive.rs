@@ -100,7 +100,7 @@ fn a_tilted_paraboloid_takes_the_exact_energy_balance_and_a_tilted_cone_the_zone
 }
 
 #[test]
-fn the_cohesive_zone_refuses_what_it_cannot_represent() {
+fn the_cohesive_zone_refuses_what_it_cannot_represent_and_takes_force_control() {
     let mut punch = tilted_cycle(32);
     punch.indenter = IndenterSpec::FlatPunch { radius: 1e-3 };
     // Automatic: a punch takes the energy balance.
@@ -118,11 +118,23 @@ fn the_cohesive_zone_refuses_what_it_cannot_represent() {
         max_force: 1e-3,
         steps: 4,
     };
+    // A tilted paraboloid's sets are discs under force control too; a
+    // tilted cone's are not, and force control takes the cohesive zone
+    // (a_force_cycle_through_the_cohesive_zone_follows_jkr_and_jumps_off_at_the_pull_off).
     assert_eq!(
         forced.resolved_adhesion_method(),
         AdhesionMethod::EnergyBalance
     );
-    forced.solver.adhesion_method = AdhesionMethod::CohesiveZone;
+    forced.indenter = IndenterSpec::Cone {
+        half_angle: 1.2,
+        base_radius: 1e-3,
+    };
+    assert_eq!(
+        forced.resolved_adhesion_method(),
+        AdhesionMethod::CohesiveZone
+    );
+    forced.validate().unwrap();
+    forced.solver.adhesion_method = AdhesionMethod::MeshCriterion;
     assert!(matches!(forced.validate(), Err(Error::Unsupported { .. })));
 }
 
@@ -196,4 +208,68 @@ fn a_film_thinner_than_eight_cells_is_reported_and_a_thicker_one_converges() {
             assert!(error.abs() < 0.015, "{error}");
         }
     }
+}
+
+#[test]
+fn a_force_cycle_through_the_cohesive_zone_follows_jkr_and_jumps_off_at_the_pull_off() {
+    // Force control: each step's depth is searched along the
+    // displacement-controlled path, so each force is the one asked (to
+    // 1e-6 of the largest), the depth at each force is JKR's (Johnson,
+    // Kendall & Roberts 1971) to the zone's error, and the unloading ends
+    // at the load-controlled pull-off, -3 pi R dgamma / 2, then a step
+    // without contact.
+    let jkr = JkrSphere::new(&rubber(), RADIUS, WORK).unwrap();
+    let max_force = -2.0 * jkr.pull_off_force();
+    let mut scene = tilted_cycle(32);
+    scene.protocol = Protocol::ForceCycle {
+        max_force,
+        steps: 4,
+    };
+    assert_eq!(
+        scene.resolved_adhesion_method(),
+        AdhesionMethod::EnergyBalance
+    );
+    scene.solver.adhesion_method = AdhesionMethod::CohesiveZone;
+    let curve = scene.run(&mut |_| {}).unwrap();
+    // The tilted paraboloid's depths are its apex's, lowered by R tan(t)^2 / 2.
+    let tilt = scene.tilt.unwrap();
+    let (tx, ty) = (tilt.angle_x.tan(), tilt.angle_y.tan());
+    let lowered = 0.5 * RADIUS * (tx * tx + ty * ty);
+    let loading: Vec<_> = curve.phase(Phase::Loading).collect();
+    assert_eq!(loading.len(), 5);
+    for (k, step) in loading.iter().enumerate() {
+        let force = k as f64 * max_force / 4.0;
+        assert!(
+            (step.force - force).abs() <= 1e-6 * max_force,
+            "{force} {step:?}"
+        );
+        let radius = jkr.contact_radius_at_force(force).unwrap();
+        let depth = jkr.depth(radius);
+        let error = (step.depth + lowered - depth) / jkr.critical_depth().abs();
+        // Measured -1.56 % at zero force to -0.89 % at the peak: the
+        // zone's error at 32 cells across.
+        println!("{k} {error}");
+        assert!(error.abs() < 0.025, "{k} {error}");
+    }
+    let pull_off = curve.pull_off().unwrap();
+    let error = pull_off.force / (-1.5 * PI * RADIUS * WORK) - 1.0;
+    println!("pull-off {error}");
+    // The displacement-controlled cycle of this scene: -2.40 %.
+    assert!((error + 0.024).abs() < 0.003, "{error}");
+    let last = curve.steps.last().unwrap();
+    assert!(last.contact_area == 0.0 && last.force == 0.0 && last.depth == pull_off.depth);
+    // One step of force control: the peak's force, at JKR's depth (the
+    // cycle's peak: -0.89 % of the critical depth).
+    scene.protocol = Protocol::Force { force: max_force };
+    let curve = scene.run(&mut |_| {}).unwrap();
+    assert_eq!(curve.steps.len(), 1);
+    let step = curve.steps[0];
+    assert!(
+        (step.force - max_force).abs() <= 1e-6 * max_force,
+        "{step:?}"
+    );
+    let depth = jkr.depth(jkr.contact_radius_at_force(max_force).unwrap());
+    let error = (step.depth + lowered - depth) / jkr.critical_depth().abs();
+    println!("force {error}");
+    assert!(error.abs() < 0.025, "{error}");
 }

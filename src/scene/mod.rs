@@ -102,8 +102,8 @@ pub enum Protocol {
         steps: usize,
     },
     /// Force control: up to `max_force` in `steps` increments and back down
-    /// to zero. With adhesion (energy-balance method) the contact jumps in at
-    /// zero force, follows the advancing branch up, stays pinned and then
+    /// to zero. With adhesion (energy balance or cohesive zone) the contact
+    /// jumps in at zero force, follows the advancing branch up, stays pinned and then
     /// recedes on the way down, and the unloading goes on into tension with
     /// the same increment until the pull-off force, which is added as an
     /// exact step (the jump-off under load control), followed by a step
@@ -223,10 +223,10 @@ pub enum AdhesionMethod {
     /// on an isolated grid (their contact sets are discs: exact, and a whole
     /// cycle for the price of one family of contact sets), for any flat
     /// punch (its contact is pinned at the
-    /// rim, which the cohesive zone does not represent) and for force
-    /// control; the cohesive zone for every other scene (tilted curved
-    /// indenters, height maps, rough surfaces, custom indenters, periodic
-    /// grids).
+    /// rim, which the cohesive zone does not represent); the cohesive zone
+    /// for every other scene (tilted curved indenters, height maps, rough
+    /// surfaces, custom indenters, periodic grids), under displacement or
+    /// force control.
     #[default]
     Auto,
     /// The energy (Griffith) balance over the contact edge along a family of
@@ -257,8 +257,11 @@ pub enum AdhesionMethod {
     /// -0.66 % at 64 cells across, [`doc::accuracy`](crate::doc::accuracy)).
     /// The pull-off of a cycle is searched between the two steps around the
     /// least force (golden sections to a sixteenth of a step, then the
-    /// parabola's vertex: about nine more solves). Displacement control
-    /// only; refuses contacts pinned at the rim of a face (flat punches).
+    /// parabola's vertex: about nine more solves). Under force control
+    /// each step is a search of the depth along the displacement-controlled
+    /// path (regula falsi, to 1e-6 of the largest force), the contact jumps
+    /// in at zero force and off at the least force the unloading holds.
+    /// Refuses contacts pinned at the rim of a face (flat punches).
     CohesiveZone,
 }
 
@@ -405,22 +408,11 @@ impl Scene {
             self.protocol,
             Protocol::Force { .. } | Protocol::ForceCycle { .. }
         );
-        if self.adhesion != Adhesion::None && forced {
-            let feature = match method {
-                AdhesionMethod::MeshCriterion => {
-                    Some("force control with the mesh-dependent adhesion criterion")
-                }
-                AdhesionMethod::CohesiveZone => {
-                    Some("force control with the cohesive-zone adhesion method")
-                }
-                _ => None,
-            };
-            if let Some(feature) = feature {
-                return Err(Error::Unsupported {
-                    feature,
-                    reason: "use the energy-balance method for adhesive force control",
-                });
-            }
+        if self.adhesion != Adhesion::None && forced && method == AdhesionMethod::MeshCriterion {
+            return Err(Error::Unsupported {
+                feature: "force control with the mesh-dependent adhesion criterion",
+                reason: "use the energy balance or the cohesive zone for adhesive force control",
+            });
         }
         if self.adhesion != Adhesion::None
             && method == AdhesionMethod::CohesiveZone
@@ -463,9 +455,9 @@ impl Scene {
     /// [`SolverSettings::adhesion_method`], with
     /// [`Auto`](AdhesionMethod::Auto) resolved to the energy balance for an
     /// untilted flat punch, sphere or cone and any paraboloid (a tilted one
-    /// is a paraboloid moved off the axis) on an isolated grid, for any flat
-    /// punch and for force control, and to the cohesive zone for every
-    /// other scene (never `Auto`).
+    /// is a paraboloid moved off the axis) on an isolated grid and for any
+    /// flat punch, and to the cohesive zone for every other scene, under
+    /// displacement or force control (never `Auto`).
     ///
     /// ```
     /// use layered_contact::scene::{AdhesionMethod, IndenterSpec, Scene, Tilt};
@@ -487,11 +479,7 @@ impl Scene {
             return self.solver.adhesion_method;
         }
         let punch = matches!(self.indenter, IndenterSpec::FlatPunch { .. });
-        let forced = matches!(
-            self.protocol,
-            Protocol::Force { .. } | Protocol::ForceCycle { .. }
-        );
-        if self.contact_sets_are_discs() || punch || forced {
+        if self.contact_sets_are_discs() || punch {
             AdhesionMethod::EnergyBalance
         } else {
             AdhesionMethod::CohesiveZone

@@ -10,6 +10,7 @@ use crate::solver::{
 };
 
 mod cohesive;
+mod cohesive_force;
 
 use super::{AdhesionMethod, Curve, IndenterSpec, Phase, Protocol, Scene, Step, MAX_PULL_DEPTHS};
 
@@ -93,15 +94,17 @@ impl<'a> Runner<'a> {
                     self.observer,
                 )?
             }
-            // `Scene::validate_settings` refuses both before any solve.
+            // `Scene::validate_settings` refuses the mesh criterion before
+            // any solve; the cohesive zone's force steps are depth searches
+            // (`force_cohesive`).
             (Control::Force(_), Some(_), cohesive) => {
                 return Err(Error::Unsupported {
                     feature: if cohesive.is_some() {
-                        "force control with the cohesive-zone adhesion method"
+                        "one force-controlled solve through the cohesive zone"
                     } else {
                         "force control with the mesh-dependent adhesion criterion"
                     },
-                    reason: "use the energy-balance method for adhesive force control",
+                    reason: "use the energy-balance method or the cohesive zone's force protocols",
                 })
             }
         };
@@ -146,6 +149,16 @@ impl<'a> Runner<'a> {
             Protocol::Depth { depth } => {
                 let s = self.solve_peak(Control::Depth(depth))?;
                 if !self.record(s, Phase::Loading, progress) {
+                    return Ok(Outcome::ReachedEdge);
+                }
+            }
+            Protocol::Force { force } if self.cohesive.is_some() => {
+                if !self.force_cohesive(force, 1, false, progress)? {
+                    return Ok(Outcome::ReachedEdge);
+                }
+            }
+            Protocol::ForceCycle { max_force, steps } if self.cohesive.is_some() => {
+                if !self.force_cohesive(max_force, steps, true, progress)? {
                     return Ok(Outcome::ReachedEdge);
                 }
             }
