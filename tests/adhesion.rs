@@ -150,7 +150,11 @@ fn sphere_pull_off_on_layers() {
         let (scene, reference) = sphere_cycle(substrate.clone(), &exact, 64);
         let curve = scene.run(&mut |_| {}).unwrap();
         let error = pull_off(&curve) / reference - 1.0;
-        assert!(error.abs() < 0.005, "{substrate:?}: {error}");
+        // Measured 2.6e-5 and 1.1e-4; within the staircase noise (about
+        // 1e-4). The family of the half-space's spacing and fits gave
+        // 6.7e-4 on the film on the rigid base: its bias on a layer.
+        println!("{error:e}");
+        assert!(error.abs() < 3e-4, "{substrate:?}: {error}");
     }
 }
 

@@ -8,7 +8,7 @@ use std::f64::consts::PI;
 use crate::error::{Error, Result};
 use crate::solver::check_finite;
 
-use super::{FIT_RELATIVE_WINDOW, FIT_WINDOW};
+use super::FIT_WINDOW;
 
 /// Bisection steps locating the contact area between two sets (the
 /// bracket shrinks by `2^-50`).
@@ -203,7 +203,7 @@ impl AdhesiveBranches {
     pub(super) fn new(
         raw: &[Raw],
         delta: f64,
-        relative: bool,
+        relative_window: f64,
         capped: bool,
         lowest: f64,
         advancing: f64,
@@ -211,9 +211,8 @@ impl AdhesiveBranches {
     ) -> Result<Self> {
         let mut nodes = Vec::with_capacity(raw.len());
         for r in raw {
-            let relative_width = if relative { FIT_RELATIVE_WINDOW } else { 0.0 };
-            let mut half_width = (FIT_WINDOW * delta).max(relative_width * r.radius);
-            if !relative {
+            let mut half_width = (FIT_WINDOW * delta).max(relative_window * r.radius);
+            if relative_window == 0.0 {
                 // Strips: their narrowest sets lie further apart in
                 // equal-area radius than the window; each fit takes at
                 // least its four nearest sets.
