@@ -215,10 +215,21 @@ impl CohesiveZone {
     /// longer than a quarter of it and the pull-off biased, by -0.8 % at
     /// half the thickness and -4.6 % at the whole, measured as in
     /// [`ZONE_LAYER_FRACTION`]).
+    ///
+    /// ```
+    /// use layered_contact::solver::CohesiveZone;
+    ///
+    /// let zone = CohesiveZone::new(0.05, 0.05)?;
+    /// assert!(zone.resolves_layer(1.9182e-5, None));
+    /// // A zone of exactly a quarter of the film (2.6 cells) resolves it.
+    /// assert!(zone.resolves_layer(1.9182e-5, Some(2e-4)));
+    /// assert!(!zone.resolves_layer(1.9182e-5, Some(1.5e-4)));
+    /// Ok::<(), layered_contact::Error>(())
+    /// ```
     pub fn resolves_layer(&self, spacing: f64, top_thickness: Option<f64>) -> bool {
-        top_thickness.is_none_or(|h| {
-            self.cells_on(spacing, top_thickness) * spacing <= ZONE_LAYER_FRACTION * h
-        })
+        // In cells, as `cells_on` compares: a zone of `cells_on` cells is
+        // within the quarter unless that quarter is under the fewest cells.
+        top_thickness.is_none_or(|h| ZONE_LAYER_FRACTION * h / spacing >= MIN_ZONE_CELLS)
     }
 
     /// The law's range `rho = 2 sqrt(dgamma k Delta / E*)` (m) for a work
