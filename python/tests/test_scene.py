@@ -231,3 +231,21 @@ def test_plot_field_draws_the_peak_pressure():
         lc.plot_field(curve.peak, "displacement")
     with pytest.raises(ValueError, match="expected one of"):
         lc.plot_field(curve.peak, "stress")
+
+
+def test_force_control_of_a_tilted_cap_runs_through_the_cohesive_zone():
+    # Force control of a shape whose contact sets are not discs takes the
+    # cohesive zone (it took the edge-averaged energy balance): every force
+    # as asked (to 1e-6 of the largest), the pull-off at the zone's own
+    # error at 16 cells across (-6.4 % under displacement control,
+    # tests/cohesive.rs), then a step without contact.
+    jkr = -1.5 * 3.141592653589793 * 0.05 * 0.01
+    cap = dict(SPHERE, tilt={"angle_y": 0.05, "angle_x": 0.0},
+               indenter={"kind": "sphere", "radius": 0.01},
+               protocol={"kind": "force_cycle", "max_force": -2 * jkr, "steps": 4})
+    curve = lc.run_scene(cap)
+    assert curve.adhesion_method == "cohesive_zone" and curve.caveats == []
+    asked = [k * -2 * jkr / 4 for k in range(5)]
+    assert list(curve.force[:5]) == pytest.approx(asked, abs=1e-6 * -2 * jkr)
+    assert curve.pull_off["force"] / jkr - 1 == pytest.approx(-0.064, abs=0.015)
+    assert curve.force[-1] == 0.0 and curve.contact_area[-1] == 0.0
