@@ -131,17 +131,28 @@ impl<'a> Runner<'a> {
     /// [`Runner::solve`] at the most loaded point: keeps the requested fields
     /// of this very solve as the curve's peak.
     fn solve_peak(&mut self, control: Control) -> Result<Solution> {
+        let (solution, kept) = self.with_kept_fields(|runner| runner.solve(control))?;
+        if kept {
+            self.peak = Some(solution.clone());
+        }
+        Ok(solution)
+    }
+
+    /// `work` with the solver keeping the fields the scene's outputs ask
+    /// for (its parameters restored after), and whether it asks for any.
+    fn with_kept_fields<T>(
+        &mut self,
+        work: impl FnOnce(&mut Self) -> Result<T>,
+    ) -> Result<(T, bool)> {
         let fields = self.scene.outputs.kept_fields();
         if fields == Fields::default() {
-            return self.solve(control);
+            return Ok((work(self)?, false));
         }
         let params = *self.solver.params();
         self.solver.set_params(SolverParams { fields, ..params });
-        let result = self.solve(control);
+        let result = work(self);
         self.solver.set_params(params);
-        let solution = result?;
-        self.peak = Some(solution.clone());
-        Ok(solution)
+        Ok((result?, true))
     }
 
     pub(super) fn run(mut self, progress: &mut dyn FnMut(&Step)) -> Result<Outcome> {

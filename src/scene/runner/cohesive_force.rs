@@ -13,7 +13,7 @@
 
 use crate::error::{Error, Result};
 use crate::solver::least_force::{least_force, Probe, STEP_FRACTION};
-use crate::solver::{Fields, Solution, SolverParams, WarmStart};
+use crate::solver::{Solution, WarmStart};
 
 use super::super::{Phase, Step, MAX_PROTOCOL_STEPS};
 use super::{Control, Runner};
@@ -23,7 +23,7 @@ const MAX_TRIALS: usize = 100;
 
 /// How close a step's force comes to the prescribed one, relative to the
 /// protocol's largest force (or, at zero force, the pull at first touch).
-pub(crate) const FORCE_TOLERANCE: f64 = 1e-6;
+const FORCE_TOLERANCE: f64 = 1e-6;
 
 /// An equilibrium of the path: its state and its solution.
 type Kept = (Option<WarmStart>, Solution);
@@ -184,16 +184,11 @@ impl Runner<'_> {
     /// [`Runner::seek`], keeping the requested fields of every trial at the
     /// most loaded step (the one accepted becomes the curve's peak).
     fn seek_kept(&mut self, path: &mut Path, aim: Aim, step: f64, peak: bool) -> Result<Reached> {
-        let fields = self.scene.outputs.kept_fields();
-        if !peak || fields == Fields::default() {
+        if !peak {
             return self.seek(path, aim, step);
         }
-        let params = *self.solver.params();
-        self.solver.set_params(SolverParams { fields, ..params });
-        let reached = self.seek(path, aim, step);
-        self.solver.set_params(params);
-        let reached = reached?;
-        if let Reached::At(at) = &reached {
+        let (reached, kept) = self.with_kept_fields(|runner| runner.seek(path, aim, step))?;
+        if let (true, Reached::At(at)) = (kept, &reached) {
             self.peak = Some(at.kept.1.clone());
         }
         Ok(reached)

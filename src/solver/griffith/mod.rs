@@ -84,6 +84,9 @@ struct Shape {
     /// ends, and the sets are one cell of radius apart (other families, a
     /// tenth of the radius where that is more).
     strip: Option<f64>,
+    /// The sets' spacing as a fraction of the radius (at least one cell):
+    /// zero for strips, else the first of `family_fractions`.
+    relative_spacing: f64,
 }
 
 /// The fewest sets a strip family must keep when its narrowest strips fall
@@ -169,6 +172,17 @@ impl ContactSolver {
         let delta = self.grid().spacing();
         let periodic = self.operator.boundary() == crate::grid::Boundary::Periodic;
         let strip = self.strip_tolerance();
+        // The sets' relative spacing and the fits' relative window, for
+        // every widening (the profile does not change).
+        let (relative_spacing, window) = if strip.is_none() {
+            self.family_fractions()
+        } else {
+            (0.0, 0.0)
+        };
+        let shape = Shape {
+            strip,
+            relative_spacing,
+        };
         for _ in 0..=MAX_WIDENINGS {
             let top = order.partition_point(|&(c, _)| self.workspace.profile[c] - lowest <= level);
             let (usable, kept) = self.usable_prefix(&order, top, strip);
@@ -183,12 +197,7 @@ impl ContactSolver {
             }
             let capped = kept && usable == order.len();
             let (raw, iterations, residual) =
-                self.solve_family(&order, usable, lowest, Shape { strip }, observer)?;
-            let window = if strip.is_none() {
-                self.family_fractions().1
-            } else {
-                0.0
-            };
+                self.solve_family(&order, usable, lowest, shape, observer)?;
             let mut branches = match AdhesiveBranches::new(
                 &raw, delta, window, capped, lowest, advancing, receding,
             ) {
@@ -360,7 +369,10 @@ impl ContactSolver {
     ) -> Result<(Vec<Raw>, usize, f64)> {
         let (mut iterations, mut residual) = (0, 0.0f64);
         let grid = *self.grid();
-        let Shape { strip } = shape;
+        let Shape {
+            strip,
+            relative_spacing,
+        } = shape;
         let periodic = self.operator.boundary() == crate::grid::Boundary::Periodic;
         let (n, area) = (grid.len(), grid.cell_area());
         let columns = grid.columns();
@@ -369,11 +381,6 @@ impl ContactSolver {
         // the end of its tie (so that symmetric cells enter together).
         let mut sizes = Vec::new();
         let mut radius = 0.0f64;
-        let relative_spacing = if strip.is_some() {
-            0.0
-        } else {
-            self.family_fractions().0
-        };
         loop {
             radius += NODE_SPACING.max(relative_spacing * radius);
             let mut m = (std::f64::consts::PI * radius * radius).round() as usize;
