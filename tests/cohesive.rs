@@ -37,9 +37,7 @@ fn sphere_pull_off_from(n: usize, zone: &CohesiveZone, film: Option<f64>, start:
     } else {
         (Substrate::half_space(rubber()), jkr.pull_off_force())
     };
-    let delta = 2.0 * a / n as f64;
-    let cells = 2 * (4.0 * a / delta).ceil() as usize;
-    let grid = Grid::square_of_side(cells, cells as f64 * delta).unwrap();
+    let (_, grid) = sphere_grid(a, n);
     let mut solver = ContactSolver::new(
         &substrate,
         &grid,
@@ -55,22 +53,36 @@ fn sphere_pull_off_from(n: usize, zone: &CohesiveZone, film: Option<f64>, start:
     p.force / exact - 1.0
 }
 
+/// The cell size and the square isolated grid with `n` cells across a
+/// contact of radius `a`, four radii each way from its centre.
+fn sphere_grid(a: f64, n: usize) -> (f64, Grid) {
+    let delta = 2.0 * a / n as f64;
+    let cells = 2 * (4.0 * a / delta).ceil() as usize;
+    (
+        delta,
+        Grid::square_of_side(cells, cells as f64 * delta).unwrap(),
+    )
+}
+
 #[test]
 fn sphere_pull_off_converges_at_second_order_with_the_curvature_correction() {
     // Without the correction a finite zone pulls harder than the JKR limit
     // (Maugis 1992: towards 2 pi dgamma R as the zone widens), by 0.20 l/a
     // as l/a falls: +9.83 % and +6.49 % at 16 and 32 cells across (zone of
     // 8 cells, l/a = 1 and 1/2), +4.16 % at 32 with a zone of 4 (l/a =
-    // 1/4, as 8 cells at 64: +4.06 %). With it: -6.39, -2.42, -0.66 % at
-    // 16, 32, 64 cells (ratios 2.6, 3.7).
+    // 1/4, as 8 cells at 64: +4.06 %). With it and the default zone of 4
+    // cells: -1.95, -0.61, -0.13 % at 16, 32, 64 cells (ratios 3.2, 4.7;
+    // the zone of 8 cells gave -6.39, -2.42, -0.66 %).
     let plain = CohesiveZone::new(WORK, WORK)
         .unwrap()
         .with_curvature_correction(0.0)
         .unwrap();
-    let coarse = sphere_pull_off(16, &plain, None);
-    let fine = sphere_pull_off(32, &plain, None);
-    let narrow = sphere_pull_off(32, &plain.with_zone_cells(4.0).unwrap(), None);
+    let wide = plain.with_zone_cells(8.0).unwrap();
+    let coarse = sphere_pull_off(16, &wide, None);
+    let fine = sphere_pull_off(32, &wide, None);
+    let narrow = sphere_pull_off(32, &plain, None);
     println!("plain {coarse} {fine} {narrow}");
+    assert_eq!(plain.zone_cells(), 4.0);
     assert!((coarse - 0.0983).abs() < 2e-3, "{coarse}");
     assert!((fine - 0.0649).abs() < 2e-3, "{fine}");
     assert!((narrow - 0.0416).abs() < 2e-3, "{narrow}");
@@ -78,8 +90,10 @@ fn sphere_pull_off_converges_at_second_order_with_the_curvature_correction() {
     let coarse = sphere_pull_off(16, &corrected, None);
     let fine = sphere_pull_off(32, &corrected, None);
     println!("corrected {coarse} {fine}");
-    assert!((coarse + 0.0639).abs() < 2e-3, "{coarse}");
-    assert!((fine + 0.0242).abs() < 2e-3, "{fine}");
+    assert!((coarse + 0.0195).abs() < 1e-3, "{coarse}");
+    assert!((fine + 0.0061).abs() < 1e-3, "{fine}");
+    // Second order: the error falls at least 2.5 times per halving.
+    assert!(coarse / fine > 2.5, "{coarse} {fine}");
 }
 
 #[test]
@@ -159,8 +173,8 @@ fn zero_work_of_adhesion_is_the_non_adhesive_contact() {
 }
 
 /// The pull-off error of Johnson's sinusoid (alpha = 0.3) with the wave
-/// vector `wave` on `cells x cells` periodic cells, zone of 8 cells.
-fn sinusoid_pull_off(cells: usize, wave: (usize, usize)) -> f64 {
+/// vector `wave` on `cells x cells` periodic cells, a zone of `zone` cells.
+fn sinusoid_pull_off(cells: usize, wave: (usize, usize), zone: f64) -> f64 {
     let delta = 1e-5;
     let side = cells as f64 * delta;
     let wavelength = side / ((wave.0 * wave.0 + wave.1 * wave.1) as f64).sqrt();
@@ -183,7 +197,10 @@ fn sinusoid_pull_off(cells: usize, wave: (usize, usize)) -> f64 {
         SolverParams::default(),
     )
     .unwrap();
-    let zone = CohesiveZone::new(WORK, WORK).unwrap();
+    let zone = CohesiveZone::new(WORK, WORK)
+        .unwrap()
+        .with_zone_cells(zone)
+        .unwrap();
     let p = solver
         .cohesive_pull_off(
             &map,
@@ -201,36 +218,43 @@ fn sinusoid_pull_off(cells: usize, wave: (usize, usize)) -> f64 {
 #[test]
 fn johnson_sinusoid_the_same_along_the_grid_and_at_45_degrees() {
     // 128 cells per wavelength: along the grid on 128^2 cells, at 45
-    // degrees on 181^2 (wavelength 127.99 cells). Measured -1.662 % and
-    // -1.752 %; at 256 cells per wavelength -0.489 % along the grid (order
-    // 1.8), and at 181 / 362 cells -0.910 / -0.229 % along, -0.893 /
-    // -0.321 % at 45 degrees: the orientations within 0.09 % (BENCHMARKS.md,
-    // "Adhesion through a resolved cohesive zone").
-    let along = sinusoid_pull_off(128, (1, 0));
-    let diagonal = sinusoid_pull_off(181, (1, 1));
+    // degrees on 181^2 (wavelength 127.99 cells). With a zone of 8 cells:
+    // measured -1.662 % and -1.752 %; at 256 cells per wavelength -0.489 %
+    // along the grid (order 1.8), and at 181 / 362 cells -0.910 / -0.229 %
+    // along, -0.893 / -0.321 % at 45 degrees: the orientations within 0.09
+    // % (BENCHMARKS.md, "Adhesion through a resolved cohesive zone").
+    let along = sinusoid_pull_off(128, (1, 0), 8.0);
+    let diagonal = sinusoid_pull_off(181, (1, 1), 8.0);
     println!("{along} {diagonal}");
     assert!((along + 0.01662).abs() < 5e-4, "{along}");
     assert!((along - diagonal).abs() < 2e-3, "{along} {diagonal}");
-    let finer = sinusoid_pull_off(256, (1, 0));
+    let finer = sinusoid_pull_off(256, (1, 0), 8.0);
     assert!(along / finer > 3.0, "{along} {finer}");
+    // The default zone of 4 cells, a quarter of the pull-off contact's 15
+    // cells here: closer to the limit, +0.343 % and -0.613 %, less smooth
+    // (the zone's few cells are trapped by the lattice as it moves; at 256
+    // cells per wavelength -0.020 % and +0.119 %).
+    let along = sinusoid_pull_off(128, (1, 0), 4.0);
+    let diagonal = sinusoid_pull_off(181, (1, 1), 4.0);
+    println!("{along} {diagonal}");
+    assert!((along - 0.00343).abs() < 5e-4, "{along}");
+    assert!((diagonal + 0.00613).abs() < 5e-4, "{diagonal}");
 }
 
 #[test]
 fn a_sphere_off_the_cell_centres_pulls_off_as_on_them() {
     // The JKR sphere moved by (0.3, 0.45) cells from the grid's centre (a
     // height map of the exact sphere at the cell centres), 32 cells across
-    // the pull-off contact: the same error as on the centre, -2.42 %
-    // (measured -2.411 % moved; the staircase changes, the edge's release
-    // does not).
+    // the pull-off contact: the same error as on the centre, -0.61 %
+    // (measured -0.670 % moved; with the zone of 8 cells -2.411 % moved
+    // against -2.42 %: the staircase changes, the edge's release does not).
     let jkr = JkrSphere::new(&rubber(), RADIUS, WORK).unwrap();
     let a = jkr.pull_off_contact_radius();
-    let delta = 2.0 * a / 32.0;
-    let cells = 2 * (4.0 * a / delta).ceil() as usize;
-    let grid = Grid::square_of_side(cells, cells as f64 * delta).unwrap();
+    let (delta, grid) = sphere_grid(a, 32);
     let (x0, y0) = (0.3 * delta, 0.45 * delta);
     let values = (0..grid.len())
         .map(|c| {
-            let (x, y) = grid.cell_centre(c / cells, c % cells);
+            let (x, y) = grid.cell_centre(c / grid.columns(), c % grid.columns());
             let r2 = (x - x0).powi(2) + (y - y0).powi(2);
             RADIUS - (RADIUS * RADIUS - r2).max(0.0).sqrt()
         })
@@ -245,7 +269,7 @@ fn a_sphere_off_the_cell_centres_pulls_off_as_on_them() {
     let moved = p.force / jkr.pull_off_force() - 1.0;
     println!("{moved}");
     // Within the staircase noise of the edge at 32 cells (about 1e-3).
-    assert!((moved + 0.0242).abs() < 1e-3, "{moved}");
+    assert!((moved + 0.0061).abs() < 1e-3, "{moved}");
 }
 
 #[test]
@@ -257,12 +281,13 @@ fn with_hysteresis_the_pull_off_is_the_receding_work_s() {
     // remember the loading. Pressed to the JKR depth of 2.4 pull-off radii
     // (the loaded contact then holds the whole zone at the pull-off, which
     // spans half the radius at 32 cells across; from 1.6 radii its outer
-    // part lay on cells never bonded, pulling with dgamma0: -3.58 %).
-    // Measured -2.423 %, as without hysteresis.
+    // part lay on cells never bonded, pulling with dgamma0: -3.58 % with
+    // the zone of 8 cells). Measured -0.620 %, as without hysteresis
+    // (-0.615 %; with the zone of 8 cells -2.423 % and -2.42 %).
     let zone = CohesiveZone::new(WORK / 5.0, WORK).unwrap();
     let error = sphere_pull_off_from(32, &zone, None, 2.4);
     println!("{error}");
-    assert!((error + 0.0242).abs() < 1e-3, "{error}");
+    assert!((error + 0.0061).abs() < 1e-3, "{error}");
 }
 
 #[test]
@@ -309,4 +334,40 @@ fn bad_input_is_a_typed_error_never_a_nan() {
             "{step}: {r:?}"
         );
     }
+}
+
+#[test]
+fn a_cold_start_at_first_touch_zips_in_to_the_jkr_contact() {
+    // At the depth of first touch the JKR contact is finite (Johnson,
+    // Kendall & Roberts 1971: d = a^2/R - sqrt(2 pi dgamma a / E*) = 0 at
+    // a0 = (2 pi dgamma R^2 / E*)^(1/3), 1.21 pull-off radii). From a cold
+    // start the first round has no contact: the law pulls the cells within
+    // its range in, and the edge zips out over some 38 cells, a few a
+    // round, while the largest change of the tensions stays at the front's.
+    // Measured at 64 cells across the pull-off contact: the force -0.23 %
+    // off JKR's at this depth, in 345 CG iterations; the closed contact's
+    // radius 1.9 cells inside JKR's (the zone, 4 cells, lies outside it).
+    let jkr = JkrSphere::new(&rubber(), RADIUS, WORK).unwrap();
+    let a = jkr.pull_off_contact_radius();
+    let (delta, grid) = sphere_grid(a, 64);
+    let mut solver = rubber_solver(&grid, Boundary::Isolated);
+    let zone = CohesiveZone::new(WORK, WORK).unwrap();
+    let sphere = Sphere::new(RADIUS).unwrap();
+    let (solution, _) = solver
+        .solve_depth_cohesive(&sphere, 0.0, &zone, None, &mut ())
+        .unwrap();
+    let radius = jkr.contact_radius_at_depth(0.0).unwrap();
+    let estar = rubber().contact_modulus();
+    let expected = (2.0 * PI * WORK * RADIUS * RADIUS / estar).cbrt();
+    assert!((radius / expected - 1.0).abs() < 1e-12);
+    let error = solution.force / jkr.force(radius) - 1.0;
+    println!(
+        "{error} {} {} {}",
+        solution.contact_radius / radius - 1.0,
+        solution.iterations,
+        radius / a
+    );
+    assert!(error.abs() < 5e-3, "{error}");
+    let inside = (radius - solution.contact_radius) / delta;
+    assert!((0.0..4.0).contains(&inside), "{inside} cells: {solution:?}");
 }

@@ -44,11 +44,12 @@ fn a_tilted_sphere_cycle_through_the_cohesive_zone_has_its_jkr_pull_off() {
     let exact = -1.5 * PI * RADIUS * WORK;
     let pull_off = curve.pull_off().unwrap();
     let error = pull_off.force / exact - 1.0;
-    // The sphere centred on the grid at 32 cells across: -2.42 % (the
+    // The sphere centred on the grid at 32 cells across: -0.61 % (the
     // cohesive zone's second-order error, tests/cohesive.rs); moved off
-    // the cell centres by a fraction of a cell, -2.41 %; this scene's
-    // paraboloid, -2.40 %.
-    assert!((error + 0.0243).abs() < 0.003, "{error}");
+    // the cell centres by a fraction of a cell, -0.67 %; this scene's
+    // paraboloid, -0.688 % (with the zone of 8 cells -2.42, -2.41 and
+    // -2.40 %).
+    assert!((error + 0.0069).abs() < 0.002, "{error}");
     // The pull-off is the parabola's vertex, a minimum of the recorded
     // steps, in the unloading, and the contact is lost at its end.
     assert_eq!(pull_off.phase, Phase::Unloading);
@@ -141,10 +142,11 @@ fn the_cohesive_zone_refuses_what_it_cannot_represent_and_takes_force_control() 
 /// Protocol steps twice as long as the JKR sphere's critical depth move
 /// the contact by many cells in one solve: each solve reads the edge's
 /// curvature again from the contact it converges to, so the pull-off is
-/// the zone's own (a tilted sphere at 16 cells across: -6.74 %, against
-/// -6.39 % centred, `tests/cohesive.rs`). Read only once, from the first
-/// round's contact, the correction took the wrong curvature on such steps
-/// and the pull-off came out +9.3 % (the uncorrected zone's bias).
+/// the zone's own (a tilted sphere at 16 cells across: -2.88 %, against
+/// -1.95 % centred, `tests/cohesive.rs`; with the zone of 8 cells -6.74
+/// and -6.39 %). Read only once, from the first round's contact, the
+/// correction took the wrong curvature on such steps and the pull-off
+/// came out +9.3 % with the zone of 8 cells (the uncorrected zone's bias).
 #[test]
 fn coarse_protocol_steps_keep_the_zone_s_pull_off() {
     let tilt = Tilt {
@@ -165,7 +167,7 @@ fn coarse_protocol_steps_keep_the_zone_s_pull_off() {
     );
     let curve = scene.run(&mut |_| {}).unwrap();
     let error = curve.pull_off().unwrap().force / (-1.5 * PI * RADIUS * WORK) - 1.0;
-    assert!((error + 0.0674).abs() < 0.01, "{error}");
+    assert!((error + 0.0288).abs() < 0.005, "{error}");
 }
 
 #[test]
@@ -237,35 +239,45 @@ fn a_force_cycle_through_the_cohesive_zone_follows_jkr_and_jumps_off_at_the_pull
     let lowered = 0.5 * RADIUS * (tx * tx + ty * ty);
     let loading: Vec<_> = curve.phase(Phase::Loading).collect();
     assert_eq!(loading.len(), 5);
+    let mut snapped = 0;
     for (k, step) in loading.iter().enumerate() {
         let force = k as f64 * max_force / 4.0;
-        assert!(
-            (step.force - force).abs() <= 1e-6 * max_force,
-            "{force} {step:?}"
-        );
+        // Each force as asked to 1e-6 of the largest, or, where the path's
+        // force snaps across it (a cell joining the zone), the nearer side
+        // of the snap: measured 9.6e-5 of the largest at the peak.
+        let off = (step.force - force).abs() / max_force;
+        println!("{k} off {off:e}");
+        if off > 1e-6 {
+            snapped += 1;
+            assert!(off <= 1e-3, "{force} {step:?}");
+        }
         let radius = jkr.contact_radius_at_force(force).unwrap();
         let depth = jkr.depth(radius);
         let error = (step.depth + lowered - depth) / jkr.critical_depth().abs();
-        // Measured -1.56 % at zero force to -0.89 % at the peak: the
-        // zone's error at 32 cells across.
+        // Measured -0.52 % at zero force to -0.30 % at the peak: the
+        // zone's error at 32 cells across (-1.56 % to -0.89 % with the
+        // zone of 8 cells).
         println!("{k} {error}");
         assert!(error.abs() < 0.025, "{k} {error}");
     }
+    assert!(snapped <= 1, "{snapped} steps off by more than 1e-6");
     let pull_off = curve.pull_off().unwrap();
     let error = pull_off.force / (-1.5 * PI * RADIUS * WORK) - 1.0;
     println!("pull-off {error}");
-    // The displacement-controlled cycle of this scene: -2.40 %.
-    assert!((error + 0.024).abs() < 0.003, "{error}");
+    // The displacement-controlled cycle of this scene: -0.688 %; measured
+    // -0.694 % (with the zone of 8 cells -2.40 % both ways).
+    assert!((error + 0.0069).abs() < 0.002, "{error}");
     let last = curve.steps.last().unwrap();
     assert!(last.contact_area == 0.0 && last.force == 0.0 && last.depth == pull_off.depth);
-    // One step of force control: the peak's force, at JKR's depth (the
-    // cycle's peak: -0.89 % of the critical depth).
+    // One step of force control: the peak's force (or the nearer side of
+    // a snap, as above), at JKR's depth (the cycle's peak: -0.30 % of the
+    // critical depth).
     scene.protocol = Protocol::Force { force: max_force };
     let curve = scene.run(&mut |_| {}).unwrap();
     assert_eq!(curve.steps.len(), 1);
     let step = curve.steps[0];
     assert!(
-        (step.force - max_force).abs() <= 1e-6 * max_force,
+        (step.force - max_force).abs() <= 1e-3 * max_force,
         "{step:?}"
     );
     let depth = jkr.depth(jkr.contact_radius_at_force(max_force).unwrap());

@@ -101,13 +101,14 @@ def test_caveats_say_when_adhesion_is_edge_averaged():
     averaged = lc.run_scene(cap)
     assert len(averaged.caveats) == 1 and "edge-averaged" in averaged.caveats[0]
     # Automatically the tilted cap takes the cohesive zone: no caveat, and a
-    # pull-off within its second-order error of JKR (-6.4 % at 16 cells
-    # across, tests/cohesive.rs; the cap is the paraboloid to 0.1 %).
+    # pull-off within its second-order error of JKR (-1.95 % centred at 16
+    # cells across, tests/cohesive.rs; this cap -2.89 %, as the same scene in
+    # tests/scene_cohesive.rs; the cap is the paraboloid to 0.1 %).
     zone = lc.run_scene(dict(cap, solver={}))
     assert zone.caveats == [] and zone.adhesion_method == "cohesive_zone"
     assert curve.adhesion_method == "energy_balance"
     assert lc.run_scene(PUNCH).adhesion_method is None
-    assert zone.pull_off["force"] / curve.pull_off["force"] - 1 == pytest.approx(-0.064, abs=0.015)
+    assert zone.pull_off["force"] / curve.pull_off["force"] - 1 == pytest.approx(-0.029, abs=0.005)
     # The mesh-dependent criterion says what it is.
     mesh = lc.run_scene(dict(SPHERE, solver={"adhesion_method": "mesh_criterion"}))
     assert len(mesh.caveats) == 1 and "mesh-dependent" in mesh.caveats[0]
@@ -236,9 +237,10 @@ def test_plot_field_draws_the_peak_pressure():
 def test_force_control_of_a_tilted_cap_runs_through_the_cohesive_zone():
     # Force control of a shape whose contact sets are not discs takes the
     # cohesive zone (it took the edge-averaged energy balance): every force
-    # as asked (to 1e-6 of the largest), the pull-off at the zone's own
-    # error at 16 cells across (-6.4 % under displacement control,
-    # tests/cohesive.rs), then a step without contact.
+    # as asked (to 1e-6 of the largest, or the nearer side of a snap of the
+    # path as a cell joins the zone: at most one step, within 1e-3), the
+    # pull-off at the zone's own error at 16 cells across (-2.52 %; -2.89 %
+    # under displacement control), then a step without contact.
     jkr = -1.5 * 3.141592653589793 * 0.05 * 0.01
     cap = dict(SPHERE, tilt={"angle_y": 0.05, "angle_x": 0.0},
                indenter={"kind": "sphere", "radius": 0.01},
@@ -246,6 +248,7 @@ def test_force_control_of_a_tilted_cap_runs_through_the_cohesive_zone():
     curve = lc.run_scene(cap)
     assert curve.adhesion_method == "cohesive_zone" and curve.caveats == []
     asked = [k * -2 * jkr / 4 for k in range(5)]
-    assert list(curve.force[:5]) == pytest.approx(asked, abs=1e-6 * -2 * jkr)
-    assert curve.pull_off["force"] / jkr - 1 == pytest.approx(-0.064, abs=0.015)
+    off = [abs(f - a) / (-2 * jkr) for f, a in zip(curve.force[:5], asked)]
+    assert max(off) <= 1e-3 and sum(o > 1e-6 for o in off) <= 1, off
+    assert curve.pull_off["force"] / jkr - 1 == pytest.approx(-0.025, abs=0.005)
     assert curve.force[-1] == 0.0 and curve.contact_area[-1] == 0.0

@@ -115,8 +115,10 @@
 //! | wavy surface, crests along the grid, energy balance | Johnson (1995) pull-off | -1.16 % | -0.46 % | -0.19 % | 1.3 |
 //! | wavy surface, crests at 45 degrees, energy balance | Johnson (1995) pull-off | -1.09 % | -0.46 % | -0.19 % | 1.2 |
 //! | wavy surface, crests along two cells by one, energy balance | Johnson (1995) pull-off | | -0.46 % | -0.20 % | 1.2 |
-//! | wavy surface, crests along the grid, cohesive zone | Johnson (1995) pull-off | -4.27 % | -1.64 % | -0.43 % | 1.9 |
-//! | wavy surface, crests at 45 degrees, cohesive zone | Johnson (1995) pull-off | -4.15 % | -1.57 % | -0.51 % | 1.6 |
+//! | wavy surface, crests along the grid, cohesive zone of 8 cells | Johnson (1995) pull-off | -4.27 % | -1.64 % | -0.43 % | 1.9 |
+//! | wavy surface, crests at 45 degrees, cohesive zone of 8 cells | Johnson (1995) pull-off | -4.15 % | -1.57 % | -0.51 % | 1.6 |
+//! | wavy surface, crests along the grid, cohesive zone of 4 cells (default) | Johnson (1995) pull-off | -1.78 % | +0.34 % | -0.02 % | lattice-trapped |
+//! | wavy surface, crests at 45 degrees, cohesive zone of 4 cells (default) | Johnson (1995) pull-off | -1.77 % | -0.61 % | +0.12 % | lattice-trapped |
 //!
 //! (`N` = lines of cells per wavelength, `alpha = 0.3`: 30 cells across the
 //! pull-off contact at 256 along the grid; -0.087 % at 512 along two cells
@@ -132,13 +134,14 @@
 //!
 //! The cohesive zone on compact contacts (default curvature correction;
 //! `N` cells across the pull-off contact; `BENCHMARKS.md`, "Adhesion
-//! through a resolved cohesive zone"):
+//! through a resolved cohesive zone" and "The cohesive zone's width"):
 //!
 //! | case | reference | 16 | 32 | 64 | 128 | order |
 //! |---|---|---|---|---|---|---|
-//! | JKR sphere, half-space | JKR pull-off | -6.39 % | -2.42 % | -0.66 % | -0.17 % | 2 |
-//! | JKR sphere, film `h = a` on glass (zone within a quarter of the film: 2, 4, 8 cells) | exact layered JKR | -1.08 % | -1.09 % | -0.99 % | | 2 from 64 |
-//! | JKR sphere, film `a/h = 2.93` on a rigid base (scene cycle, `examples/accuracy.rs`; magnitudes) | exact layered JKR | 2.4 % | 0.25 % | 0.035 % | 0.37 % | none yet |
+//! | JKR sphere, half-space | JKR pull-off | -1.95 % | -0.61 % | -0.13 % | -0.0037 % | 2 |
+//! | JKR sphere, half-space, zone of 8 cells (the default until 2026-11-27) | JKR pull-off | -6.39 % | -2.42 % | -0.66 % | -0.17 % | 2 |
+//! | JKR sphere, film `h = a` on glass (zone within a quarter of the film: 2, 4, 4 cells) | exact layered JKR | -1.08 % | -1.09 % | -0.24 % | | |
+//! | JKR sphere, film `a/h = 2.93` on a rigid base (scene cycle, `examples/accuracy.rs`; magnitudes; zone of two cells to 64 cells across, 4 at 128) | exact layered JKR | 2.4 % | 0.25 % | 0.035 % | 0.015 % | none yet |
 //! | Kendall's flat punch | Kendall (1971) | refused: pinned at the rim (-23 % at 64) | | | | |
 //!
 //! For the `1/N` quantities Richardson extrapolation of two resolutions

@@ -255,7 +255,7 @@
 //! adhesive law, energy `-dgamma (1 - g/rho)^2` for gaps `g < rho`, whose
 //! range shrinks with the cell, `rho = 2 sqrt(dgamma k Delta / E*)`, so that
 //! its cohesive zone (`E* rho^2 / (4 dgamma)` long) spans `k` cells
-//! (default 8). The JKR limit is the zone's vanishing width (Maugis 1992,
+//! (default 4, [`COHESIVE_ZONE_CELLS`](crate::solver::COHESIVE_ZONE_CELLS)). The JKR limit is the zone's vanishing width (Maugis 1992,
 //! J. Colloid Interface Sci. 150, 243): the law holds `G = dgamma` at
 //! every point of every edge, whatever its shape, orientation or number of
 //! patches, on isolated and periodic grids. Each equilibrium is a fixed
@@ -265,7 +265,14 @@
 //! fixed point is mixed by Anderson acceleration (Walker & Ni 2011, SIAM J.
 //! Numer. Anal. 49, 1715) and each inner solve is only as tight as the
 //! fixed point has come: about ten rounds and 35 conjugate-gradient
-//! iterations a solve. A cell that touches bonds and holds with the
+//! iterations a solve. Where the mixing makes no progress for 25 rounds
+//! (contact sets flipping) the fixed point takes damped plain steps; a
+//! contact that grows or shrinks six rounds in a row (an edge zipping in or
+//! peeling off cell by cell on a rough surface, the quasi-static jump
+//! resolved) and damped rounds whose change grows eight times in a row (an
+//! unstable equilibrium being left) count as progress and double the
+//! damping back towards full steps: damped to 1/64, a rough film's cycle
+//! at 256^2 crept at a few cells a round and gave up. A cell that touches bonds and holds with the
 //! receding work of adhesion until its gap passes the receding range; an
 //! unbonded cell pulls with the advancing one (adhesion hysteresis).
 //! Tension inside a bonded area opens it only past the law's peak,
@@ -288,9 +295,8 @@
 //! curvature of the contact's edge near it (the level-set curvature of its
 //! cells smoothed over the zone, `div n`), `c` =
 //! [`CURVATURE_CORRECTION`](crate::solver::CURVATURE_CORRECTION) `= 0.2`
-//! measured on the sphere: the sphere's error becomes -6.4, -2.4, -0.66 %
-//! at 16, 32, 64 cells (order 1.4 then 1.9), the film's -1.1, -1.1, -0.99 %
-//! (its zone held within a quarter of the film, below),
+//! measured on the sphere: with a zone of 8 cells the sphere's error
+//! becomes -6.4, -2.4, -0.66 % at 16, 32, 64 cells (order 1.4 then 1.9),
 //! and straight edges are untouched (`kappa = 0`). The curvature is read
 //! from the first round's contact, held while the fixed point converges,
 //! and read again from the converged contact while it moves (a protocol
@@ -299,6 +305,21 @@
 //! within `[-0.5, 0.5]`: on patches smaller than the zone (a rough
 //! surface's smallest contacts) the correction is outside its asymptotic
 //! range and only bounded.
+//!
+//! The zone's width. Since the error is a function of `l / a`, a narrower
+//! zone is a finer grid for it, until the lattice traps the few cells that
+//! carry the zone (the force then snaps by a little as a cell joins or
+//! leaves it). Measured (`BENCHMARKS.md`, "The cohesive zone's width"),
+//! the sphere at 16, 32, 64 cells across: -6.39, -2.42, -0.66 % with 8
+//! cells, -1.95, -0.61, -0.13 % with 4; Johnson's sinusoid, worst of the
+//! two orientations at 128, 181, 256 cells per wavelength: 1.75, 0.91,
+//! 0.57 % with 8, 0.61, 0.34, 0.12 % with 4 (the orientations differ by up
+//! to 0.95 % at 128 with 4, 0.09 % with 8: each nearer the limit, less
+//! smoothly). The default is 4 cells, within 0.5 % of the JKR pull-off at
+//! 64 cells across; about 1.5 times the iterations of 8 cells on the
+//! sphere there. On a film the zone is also held within a quarter of the
+//! film (below): the film as thick as the contact's radius gives -1.08,
+//! -1.09 % at 16, 32 cells across (zones of 2 and 4 cells).
 //!
 //! What it does not represent: an edge pinned at the rim of the indenter's
 //! face (a flat punch). The zone would lie beyond the rim, where there is
@@ -350,7 +371,7 @@
 //!   sections to a sixteenth of a step and solves the parabola's vertex
 //!   through the least three (about nine solves), so that
 //!   [`Curve::pull_off`](crate::scene::Curve::pull_off) is the curve's
-//!   minimum (a paraboloid moved off the axis at 32 cells across: -2.40 %,
+//!   minimum (a paraboloid moved off the axis at 32 cells across: -0.69 %,
 //!   the zone's own error there, `tests/scene_cohesive.rs`).
 //!
 //! On a layered body the JKR limit needs the zone short against the top
@@ -365,10 +386,11 @@
 //! 0.12 % (magnitudes) at 16 to 256 cells across; held within a quarter
 //! of the film, 2.4, 0.25, 0.035, 0.37, 0.12 %, and on a base ten times
 //! stiffer 1.6, 0.044, 0.0092, 0.037, 0.048 %. That is not yet a steady
-//! order (at 64 and 128 cells the zone is 2.7 and 5.5 cells, the same
+//! order (at 64 and 128 cells the zone was 2.7 and 5.5 cells, the same
 //! length against film and contact, and the coarser zone's own error
 //! cancels part of the bias), so Richardson extrapolation does not apply
-//! there. Where the film is thinner than eight cells the two-cell zone is
+//! there. With the default zone of 4 cells (two cells up to 64 cells
+//! across here) the 128-cell errors are 0.015 % and 0.061 %. Where the film is thinner than eight cells the two-cell zone is
 //! longer than a quarter of it: scenes report
 //! [`Caveat::CohesiveZoneLongAgainstLayer`](crate::scene::Caveat::CohesiveZoneLongAgainstLayer)
 //! (-0.8 % measured with the zone half the film, -4.6 % with the whole).
@@ -386,11 +408,15 @@
 //! force comes down to the one asked, the least force of the walk is
 //! searched as in a displacement-controlled cycle and recorded as the
 //! pull-off (the jump-off under load control), followed by a step without
-//! contact, as the energy balance's force cycle does. The tilted
-//! paraboloid at 32 cells across: pull-off -2.40 % under force control,
-//! the same as under displacement control, and each loading step's depth
-//! within 1.6 % of the critical depth of JKR's
-//! (`tests/scene_cohesive.rs`).
+//! contact, as the energy balance's force cycle does. Where the force
+//! asked lies inside a snap of the path (a cell joining or leaving the
+//! zone: up to 4e-4 of the largest force measured), no equilibrium has
+//! it: the step is the equilibrium on the nearer side of the snap,
+//! recorded with its own force. The tilted paraboloid at 32 cells across:
+//! pull-off -0.69 % under force control, as under displacement control,
+//! each loading step's depth within 0.52 % of the critical depth of JKR's,
+//! and one of five forces 2.4e-5 of the largest off the one asked (a snap;
+//! the others within 5e-8) (`tests/scene_cohesive.rs`).
 //!
 //! `solver.adhesion_method` in a scene file names any method explicitly;
 //! the cohesive zone refuses flat punches and the mesh criterion force

@@ -254,14 +254,16 @@ pub enum AdhesionMethod {
     /// [`CohesiveZone`](crate::solver::CohesiveZone)): the JKR limit for any
     /// contact shape, orientation and number of patches, on isolated and
     /// periodic grids, converging at second order (a sphere's pull-off
-    /// -0.66 % at 64 cells across, [`doc::accuracy`](crate::doc::accuracy)).
+    /// -0.13 % at 64 cells across, [`doc::accuracy`](crate::doc::accuracy)).
     /// The pull-off of a cycle is searched between the two steps around the
     /// least force (golden sections to a sixteenth of a step, then the
     /// parabola's vertex: about nine more solves). Under force control
     /// each step is a search of the depth along the displacement-controlled
-    /// path (regula falsi, to 1e-6 of the largest force), the contact jumps
-    /// in at zero force and off at the least force the unloading holds.
-    /// Refuses contacts pinned at the rim of a face (flat punches).
+    /// path (regula falsi, to 1e-6 of the largest force, or to the nearer
+    /// side where the path's force snaps across the one asked as a cell joins
+    /// or leaves the zone), the contact jumps in at zero force and off at the
+    /// least force the unloading holds. Refuses contacts pinned at the rim of
+    /// a face (flat punches).
     CohesiveZone,
 }
 

@@ -32,7 +32,23 @@ use super::polonsky_keer::Control;
 use super::{check_finite, ContactSolver, Observer, Solution, WarmStart};
 
 /// The default width of the cohesive zone, in cells.
-pub const COHESIVE_ZONE_CELLS: f64 = 8.0;
+///
+/// Chosen by measurement (`examples/cohesive_convergence`, default
+/// curvature correction; `BENCHMARKS.md`, "The cohesive zone's width"): the
+/// pull-off error is a function of the zone's length against the contact,
+/// so a narrower zone is a finer grid, until the lattice traps the few
+/// cells that carry it. JKR sphere on a half-space at 16, 32, 64 cells
+/// across the pull-off contact: -6.39, -2.42, -0.66 % with 8 cells, -4.17,
+/// -1.43, -0.39 % with 6, -3.37, -1.12, -0.27 % with 5, -1.95, -0.61,
+/// -0.13 % with 4. Johnson's sinusoid at 128, 181, 256 cells per
+/// wavelength, along the grid / at 45 degrees, worst of the two: 1.75,
+/// 0.91, 0.57 % with 8, 0.61, 0.34, 0.12 % with 4 (the two orientations
+/// then differ by up to 0.95 % at 128, against 0.09 % with 8: lattice
+/// trapping, but each nearer the limit). An elliptic paraboloid against
+/// the energy balance at 16, 32, 64 cells: -4.58, -1.41, -0.37 % with 8,
+/// -1.55, -0.25, -0.049 % with 4. About 1.5 times the iterations of 8
+/// cells on the sphere at 64 cells across.
+pub const COHESIVE_ZONE_CELLS: f64 = 4.0;
 
 /// The default first-order correction of the zone's bias on curved edges
 /// ([`CohesiveZone::with_curvature_correction`]): measured on the JKR
@@ -64,6 +80,14 @@ const MIXING_DEPTH: usize = 5;
 /// Rounds without a new smallest change of the tensions before the
 /// fixed point turns to damped plain steps (and halves their damping).
 const STALL: usize = 25;
+
+/// Damped rounds in a row whose change grows before the fixed point takes
+/// full steps again (it is leaving an unstable equilibrium).
+const DEPARTING: usize = 8;
+
+/// Rounds in a row whose contact grew (or shrank) that count as progress:
+/// an edge zipping in (or peeling off) cell by cell.
+const ZIPPING: usize = 6;
 
 /// The smallest damping of the plain steps.
 const MIN_DAMPING: f64 = 1.0 / 64.0;
@@ -194,9 +218,9 @@ impl CohesiveZone {
     /// use layered_contact::solver::CohesiveZone;
     ///
     /// let zone = CohesiveZone::new(0.05, 0.05)?;
-    /// assert_eq!(zone.cells_on(1e-6, None), 8.0);
-    /// assert_eq!(zone.cells_on(1e-6, Some(1e-4)), 8.0);
-    /// assert!((zone.cells_on(1e-6, Some(2e-5)) - 5.0).abs() < 1e-12);
+    /// assert_eq!(zone.cells_on(1e-6, None), 4.0);
+    /// assert_eq!(zone.cells_on(1e-6, Some(1e-4)), 4.0);
+    /// assert!((zone.cells_on(1e-6, Some(1.2e-5)) - 3.0).abs() < 1e-12);
     /// assert_eq!(zone.cells_on(1e-6, Some(2e-6)), 2.0);
     /// Ok::<(), layered_contact::Error>(())
     /// ```
@@ -372,6 +396,11 @@ impl ContactSolver {
         let mut caps = vec![0.0; n];
         // Curvatures read again from a converged contact.
         let mut rereads = 0usize;
+        // The contact's size at the last round and its last change.
+        let (mut last_contact, mut last_trend) = (usize::MAX, std::cmp::Ordering::Equal);
+        // Damped rounds in a row whose change grew; rounds in a row whose
+        // contact moved the same way.
+        let (mut growing, mut zip) = (0usize, 0usize);
         for _ in 0..MAX_ROUNDS {
             self.check_interrupt("the cohesive zone's fixed point")?;
             self.operator.apply(&tension, &mut kt)?;
@@ -482,7 +511,32 @@ impl ContactSolver {
             // steps, damped by half at every further stall and undamped
             // again, step by step, while they make progress (back to the
             // mixing at full steps).
-            if change < best {
+            // A contact that keeps growing (or shrinking) round after round
+            // is an edge zipping in (or peeling off) cell by cell, the
+            // quasi-static jump resolved: progress, though the largest
+            // change of the tensions stays that of the cells at the front.
+            let contact_cells = compressive.iter().filter(|p| **p > 0.0).count();
+            let trend = contact_cells.cmp(&last_contact);
+            if trend != std::cmp::Ordering::Equal {
+                zip = if trend == last_trend { zip + 1 } else { 0 };
+                last_trend = trend;
+            }
+            let zipping = zip >= ZIPPING;
+            last_contact = contact_cells;
+            // Damped steps whose change grows round after round are leaving
+            // an unstable equilibrium (a patch peeling off or snapping in):
+            // undamped, the iteration walks to the next one, as the
+            // quasi-static jump does.
+            if change > previous && damping < 1.0 {
+                growing += 1;
+            } else {
+                growing = 0;
+            }
+            if zipping || growing >= DEPARTING {
+                stall = 0;
+                growing = 0;
+                damping = (2.0 * damping).min(1.0);
+            } else if change < best {
                 (best, stall) = (change, 0);
                 streak += 1;
                 if streak >= STALL / 2 && damping < 1.0 {
