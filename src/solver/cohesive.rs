@@ -81,12 +81,14 @@ const MIXING_DEPTH: usize = 5;
 /// fixed point turns to damped plain steps (and halves their damping).
 const STALL: usize = 25;
 
-/// Damped rounds in a row whose change grows before the fixed point takes
-/// full steps again (it is leaving an unstable equilibrium).
+/// Damped rounds in a row whose change grows (the fixed point is leaving an
+/// unstable equilibrium) before each further one doubles the damping back
+/// towards full steps.
 const DEPARTING: usize = 8;
 
-/// Rounds in a row whose contact grew (or shrank) that count as progress:
-/// an edge zipping in (or peeling off) cell by cell.
+/// Rounds in a row whose contact grew (or shrank) before each further one
+/// counts as progress and doubles the damping back towards full steps: an
+/// edge zipping in (or peeling off) cell by cell.
 const ZIPPING: usize = 6;
 
 /// The smallest damping of the plain steps.
@@ -525,7 +527,7 @@ impl ContactSolver {
             last_contact = contact_cells;
             // Damped steps whose change grows round after round are leaving
             // an unstable equilibrium (a patch peeling off or snapping in):
-            // undamped, the iteration walks to the next one, as the
+            // at fuller steps the iteration walks to the next one, as the
             // quasi-static jump does.
             if change > previous && damping < 1.0 {
                 growing += 1;
