@@ -440,8 +440,10 @@ impl ContactSolver {
                 roots = self.curvature_roots(&compressive, zone);
             }
             let ws = &self.workspace;
+            let mut contact_cells = 0usize;
             for c in 0..n {
                 let touching = compressive[c] > 0.0;
+                contact_cells += usize::from(touching);
                 let g = if touching {
                     0.0
                 } else {
@@ -517,7 +519,6 @@ impl ContactSolver {
             // is an edge zipping in (or peeling off) cell by cell, the
             // quasi-static jump resolved: progress, though the largest
             // change of the tensions stays that of the cells at the front.
-            let contact_cells = compressive.iter().filter(|p| **p > 0.0).count();
             let trend = contact_cells.cmp(&last_contact);
             if trend != std::cmp::Ordering::Equal {
                 zip = if trend == last_trend { zip + 1 } else { 0 };
