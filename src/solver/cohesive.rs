@@ -27,7 +27,7 @@ use std::borrow::Cow;
 use crate::error::{Error, Result};
 use crate::indenter::Indenter;
 
-use super::anderson::Anderson;
+use super::cohesive_steps::Stepper;
 use super::polonsky_keer::Control;
 use super::{check_finite, ContactSolver, Observer, Solution, WarmStart};
 
@@ -73,26 +73,6 @@ pub const ZONE_LAYER_FRACTION: f64 = 0.25;
 
 /// The fewest cells a cohesive zone may span.
 const MIN_ZONE_CELLS: f64 = 2.0;
-
-/// Differences kept by the Anderson mixing of the tensions.
-const MIXING_DEPTH: usize = 5;
-
-/// Rounds without a new smallest change of the tensions before the
-/// fixed point turns to damped plain steps (and halves their damping).
-const STALL: usize = 25;
-
-/// Damped rounds in a row whose change grows (the fixed point is leaving an
-/// unstable equilibrium) before each further one doubles the damping back
-/// towards full steps.
-const DEPARTING: usize = 8;
-
-/// Rounds in a row whose contact grew (or shrank) before each further one
-/// counts as progress and doubles the damping back towards full steps: an
-/// edge zipping in (or peeling off) cell by cell.
-const ZIPPING: usize = 6;
-
-/// The smallest damping of the plain steps.
-const MIN_DAMPING: f64 = 1.0 / 64.0;
 
 /// The largest change of the cells' curvature factors (as their square
 /// roots, weighted by the tensions they scale) between the contact a solve
@@ -301,12 +281,11 @@ impl Law {
 
 impl ContactSolver {
     /// Each cell's curvature factor of `zone`'s law, as its square root,
-    /// from the contact of the compressive pressures `compressive`.
-    fn curvature_roots(&self, compressive: &[f64], zone: &CohesiveZone) -> Vec<f64> {
-        let contact: Vec<bool> = compressive.iter().map(|p| *p > 0.0).collect();
+    /// from the cells in `contact`.
+    fn curvature_roots(&self, contact: &[bool], zone: &CohesiveZone) -> Vec<f64> {
         let grid = self.grid();
         let bend = super::curvature::edge_curvature(
-            &contact,
+            contact,
             grid.rows(),
             grid.columns(),
             self.operator.boundary() == crate::grid::Boundary::Periodic,
@@ -386,23 +365,16 @@ impl ContactSolver {
         let tolerance = outer.max(1e-13);
         let mut iterations = 0usize;
         let mut change = f64::INFINITY;
-        let mut mixer = Anderson::new(MIXING_DEPTH);
+        let mut stepper = Stepper::new();
         let mut mapped = vec![0.0; n];
         // Each cell's law as the square root of its curvature factor (the
         // peak and the range scale with it), set at the first round and
         // read again from converged contacts.
         let mut roots: Vec<f64> = Vec::new();
-        let (mut best, mut stall, mut streak, mut damping) =
-            (f64::INFINITY, 0usize, 0usize, 1.0f64);
         // Each cell's largest tension, Pa (its law's peak).
         let mut caps = vec![0.0; n];
         // Curvatures read again from a converged contact.
         let mut rereads = 0usize;
-        // The contact's size at the last round and its last change.
-        let (mut last_contact, mut last_trend) = (usize::MAX, std::cmp::Ordering::Equal);
-        // Damped rounds in a row whose change grew; rounds in a row whose
-        // contact moved the same way.
-        let (mut growing, mut zip) = (0usize, 0usize);
         for _ in 0..MAX_ROUNDS {
             self.check_interrupt("the cohesive zone's fixed point")?;
             self.operator.apply(&tension, &mut kt)?;
@@ -437,7 +409,8 @@ impl ContactSolver {
             // with the contact within those rounds); read again from the
             // converged contact below.
             if zone.curvature_correction > 0.0 && roots.is_empty() {
-                roots = self.curvature_roots(&compressive, zone);
+                let contact: Vec<bool> = compressive.iter().map(|p| *p > 0.0).collect();
+                roots = self.curvature_roots(&contact, zone);
             }
             let ws = &self.workspace;
             let mut contact_cells = 0usize;
@@ -462,11 +435,16 @@ impl ContactSolver {
                 change = f64::max(change, (mapped[c] - tension[c]).abs());
             }
             let converged = change <= tolerance * scale && inner <= tolerance;
+            // The converged contact, for the curvature and the solution.
+            let contact: Vec<bool> = match converged {
+                true => compressive.iter().map(|p| *p > 0.0).collect(),
+                false => Vec::new(),
+            };
             if converged && zone.curvature_correction > 0.0 && rereads < MAX_REREADS {
                 // A step that moved the contact far (a coarse protocol
                 // step) read its curvature from a contact unlike the
                 // converged one: read it again, and go on while it moves.
-                let fresh = self.curvature_roots(&compressive, zone);
+                let fresh = self.curvature_roots(&contact, zone);
                 // The change weighted by the tensions it scales.
                 let (mut moved, mut pull) = (0.0, 0.0);
                 for ((a, b), t) in fresh.iter().zip(&roots).zip(&mapped) {
@@ -476,15 +454,13 @@ impl ContactSolver {
                 if moved > ROOT_TOLERANCE * pull {
                     roots = fresh;
                     rereads += 1;
-                    mixer.reset();
-                    best = f64::INFINITY;
+                    stepper.law_changed();
                     continue;
                 }
             }
             if converged {
                 // The solution of the tensions just solved for (the law's
                 // tensions at its gaps differ by at most `change`).
-                let contact: Vec<bool> = compressive.iter().map(|p| *p > 0.0).collect();
                 for c in 0..n {
                     total[c] = compressive[c] + tension[c];
                 }
@@ -504,69 +480,14 @@ impl ContactSolver {
                     },
                 ));
             }
-            // A round that made the residual grow (a contact set or a bond
-            // changed) restarts the mixing from the plain step.
-            if change > previous {
-                mixer.reset();
-            }
-            // Where the contact sets keep changing the mixing can settle
-            // into a cycle (a rough film at 256^2 repeated twelve rounds):
-            // after STALL rounds without a new smallest change, plain
-            // steps, damped by half at every further stall and undamped
-            // again, step by step, while they make progress (back to the
-            // mixing at full steps).
-            // A contact that keeps growing (or shrinking) round after round
-            // is an edge zipping in (or peeling off) cell by cell, the
-            // quasi-static jump resolved: progress, though the largest
-            // change of the tensions stays that of the cells at the front.
-            let trend = contact_cells.cmp(&last_contact);
-            if trend != std::cmp::Ordering::Equal {
-                zip = if trend == last_trend { zip + 1 } else { 0 };
-                last_trend = trend;
-            }
-            let zipping = zip >= ZIPPING;
-            last_contact = contact_cells;
-            // Damped steps whose change grows round after round are leaving
-            // an unstable equilibrium (a patch peeling off or snapping in):
-            // at fuller steps the iteration walks to the next one, as the
-            // quasi-static jump does.
-            if change > previous && damping < 1.0 {
-                growing += 1;
-            } else {
-                growing = 0;
-            }
-            if zipping || growing >= DEPARTING {
-                stall = 0;
-                growing = 0;
-                damping = (2.0 * damping).min(1.0);
-            } else if change < best {
-                (best, stall) = (change, 0);
-                streak += 1;
-                if streak >= STALL / 2 && damping < 1.0 {
-                    damping = (2.0 * damping).min(1.0);
-                    streak = 0;
-                }
-            } else {
-                stall += 1;
-                streak = 0;
-                if stall >= STALL {
-                    damping = (0.5 * damping).max(MIN_DAMPING);
-                    stall = 0;
-                    mixer.reset();
-                }
-            }
-            if damping < 1.0 {
-                for (t, m) in tension.iter_mut().zip(&mapped) {
-                    *t += damping * (m - *t);
-                }
-            } else {
-                mixer.next(&mut tension, &mapped);
-            }
-            for ((t, m), cap) in tension.iter_mut().zip(&mapped).zip(&caps) {
-                // Mixed tensions stay within the law's values (and zero
-                // where the law gives zero: cells out of reach).
-                *t = if *m == 0.0 { 0.0 } else { t.clamp(-cap, 0.0) };
-            }
+            stepper.next(
+                change,
+                previous,
+                contact_cells,
+                &mut tension,
+                &mapped,
+                &caps,
+            );
             // The compressive part keeps the total pressure of the cells.
             for c in 0..n {
                 if compressive[c] > 0.0 {

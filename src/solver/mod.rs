@@ -59,6 +59,7 @@ mod anderson;
 mod cg_ends;
 mod cohesive;
 mod cohesive_pull_off;
+mod cohesive_steps;
 mod curvature;
 mod griffith;
 pub(crate) mod least_force;

@@ -1,0 +1,153 @@
+//! How the cohesive zone's fixed point steps from one round's tensions to
+//! the next: Anderson mixing at full steps while it makes progress, damped
+//! plain steps where the mixing stalls, and the rules that read an edge
+//! zipping in (or a patch leaving an unstable equilibrium) as progress.
+//! Used by [`solve_depth_cohesive`](super::ContactSolver::solve_depth_cohesive).
+
+use std::cmp::Ordering;
+
+use super::anderson::Anderson;
+
+/// Differences kept by the Anderson mixing of the tensions.
+const MIXING_DEPTH: usize = 5;
+
+/// Rounds without a new smallest change of the tensions before the
+/// fixed point turns to damped plain steps (and halves their damping).
+const STALL: usize = 25;
+
+/// Damped rounds in a row whose change grows (the fixed point is leaving an
+/// unstable equilibrium) before each further one doubles the damping back
+/// towards full steps.
+const DEPARTING: usize = 8;
+
+/// Rounds in a row whose contact grew (or shrank) before each further one
+/// counts as progress and doubles the damping back towards full steps: an
+/// edge zipping in (or peeling off) cell by cell.
+const ZIPPING: usize = 6;
+
+/// The smallest damping of the plain steps.
+const MIN_DAMPING: f64 = 1.0 / 64.0;
+
+/// The fixed point's stepping state across its rounds.
+pub(super) struct Stepper {
+    mixer: Anderson,
+    /// The smallest change of the tensions since the last stall.
+    best: f64,
+    /// Rounds without a new smallest change.
+    stall: usize,
+    /// Rounds in a row with a new smallest change.
+    streak: usize,
+    /// The plain steps' damping (1: mixed full steps).
+    damping: f64,
+    /// The contact's size at the last round and its last change.
+    last_contact: usize,
+    last_trend: Ordering,
+    /// Damped rounds in a row whose change grew.
+    growing: usize,
+    /// Rounds in a row whose contact moved the same way.
+    zip: usize,
+}
+
+impl Stepper {
+    pub(super) fn new() -> Self {
+        Stepper {
+            mixer: Anderson::new(MIXING_DEPTH),
+            best: f64::INFINITY,
+            stall: 0,
+            streak: 0,
+            damping: 1.0,
+            last_contact: usize::MAX,
+            last_trend: Ordering::Equal,
+            growing: 0,
+            zip: 0,
+        }
+    }
+
+    /// The law changed (its curvature read again): the mixing's history
+    /// and the smallest change no longer apply.
+    pub(super) fn law_changed(&mut self) {
+        self.mixer.reset();
+        self.best = f64::INFINITY;
+    }
+
+    /// The next round's `tension` from this round's and the law's values
+    /// `mapped` at its gaps, each within `[-cap, 0]` (zero where the law
+    /// gives zero); `change` is the round's largest change of the tensions,
+    /// `previous` the last round's, `contact_cells` the round's contact.
+    pub(super) fn next(
+        &mut self,
+        change: f64,
+        previous: f64,
+        contact_cells: usize,
+        tension: &mut [f64],
+        mapped: &[f64],
+        caps: &[f64],
+    ) {
+        // A round that made the residual grow (a contact set or a bond
+        // changed) restarts the mixing from the plain step.
+        if change > previous {
+            self.mixer.reset();
+        }
+        // Where the contact sets keep changing the mixing can settle into a
+        // cycle (a rough film at 256^2 repeated twelve rounds): after STALL
+        // rounds without a new smallest change, plain steps, damped by half
+        // at every further stall and undamped again, step by step, while
+        // they make progress (back to the mixing at full steps).
+        // A contact that keeps growing (or shrinking) round after round is
+        // an edge zipping in (or peeling off) cell by cell, the quasi-static
+        // jump resolved: progress, though the largest change of the
+        // tensions stays that of the cells at the front.
+        let trend = contact_cells.cmp(&self.last_contact);
+        if trend != Ordering::Equal {
+            self.zip = if trend == self.last_trend {
+                self.zip + 1
+            } else {
+                0
+            };
+            self.last_trend = trend;
+        }
+        let zipping = self.zip >= ZIPPING;
+        self.last_contact = contact_cells;
+        // Damped steps whose change grows round after round are leaving an
+        // unstable equilibrium (a patch peeling off or snapping in): at
+        // fuller steps the iteration walks to the next one, as the
+        // quasi-static jump does.
+        if change > previous && self.damping < 1.0 {
+            self.growing += 1;
+        } else {
+            self.growing = 0;
+        }
+        if zipping || self.growing >= DEPARTING {
+            self.stall = 0;
+            self.growing = 0;
+            self.damping = (2.0 * self.damping).min(1.0);
+        } else if change < self.best {
+            (self.best, self.stall) = (change, 0);
+            self.streak += 1;
+            if self.streak >= STALL / 2 && self.damping < 1.0 {
+                self.damping = (2.0 * self.damping).min(1.0);
+                self.streak = 0;
+            }
+        } else {
+            self.stall += 1;
+            self.streak = 0;
+            if self.stall >= STALL {
+                self.damping = (0.5 * self.damping).max(MIN_DAMPING);
+                self.stall = 0;
+                self.mixer.reset();
+            }
+        }
+        if self.damping < 1.0 {
+            for (t, m) in tension.iter_mut().zip(mapped) {
+                *t += self.damping * (m - *t);
+            }
+        } else {
+            self.mixer.next(tension, mapped);
+        }
+        for ((t, m), cap) in tension.iter_mut().zip(mapped).zip(caps) {
+            // Mixed tensions stay within the law's values (and zero where
+            // the law gives zero: cells out of reach).
+            *t = if *m == 0.0 { 0.0 } else { t.clamp(-cap, 0.0) };
+        }
+    }
+}
