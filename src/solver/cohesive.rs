@@ -375,6 +375,8 @@ impl ContactSolver {
         let mut caps = vec![0.0; n];
         // Curvatures read again from a converged contact.
         let mut rereads = 0usize;
+        // The round's contact: the cells carrying compressive pressure.
+        let mut contact = vec![false; n];
         for _ in 0..MAX_ROUNDS {
             self.check_interrupt("the cohesive zone's fixed point")?;
             self.operator.apply(&tension, &mut kt)?;
@@ -404,18 +406,20 @@ impl ContactSolver {
             // The tensions the law gives at the gaps of this solution.
             let previous = change;
             change = 0.0;
+            for (k, p) in contact.iter_mut().zip(&compressive) {
+                *k = *p > 0.0;
+            }
             // The edge's curvature from the first round's contact, then
             // held while the fixed point converges (the law does not change
             // with the contact within those rounds); read again from the
             // converged contact below.
             if zone.curvature_correction > 0.0 && roots.is_empty() {
-                let contact: Vec<bool> = compressive.iter().map(|p| *p > 0.0).collect();
                 roots = self.curvature_roots(&contact, zone);
             }
             let ws = &self.workspace;
             let mut contact_cells = 0usize;
             for c in 0..n {
-                let touching = compressive[c] > 0.0;
+                let touching = contact[c];
                 contact_cells += usize::from(touching);
                 let g = if touching {
                     0.0
@@ -435,11 +439,6 @@ impl ContactSolver {
                 change = f64::max(change, (mapped[c] - tension[c]).abs());
             }
             let converged = change <= tolerance * scale && inner <= tolerance;
-            // The converged contact, for the curvature and the solution.
-            let contact: Vec<bool> = match converged {
-                true => compressive.iter().map(|p| *p > 0.0).collect(),
-                false => Vec::new(),
-            };
             if converged && zone.curvature_correction > 0.0 && rereads < MAX_REREADS {
                 // A step that moved the contact far (a coarse protocol
                 // step) read its curvature from a contact unlike the
