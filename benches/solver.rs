@@ -8,7 +8,7 @@
 //! pull-off contact; the cohesive-zone pull-off of Johnson's sinusoid with
 //! its crests at 45 degrees to the grid (64 and 128 cells per wavelength);
 //! a rough periodic contact (the surface of
-//! `benches/peers/rough.py`, N = 256 and 512); the cost of one CG iteration
+//! `benches/peers/rough.py`, N = 256, 512 and 1024); the cost of one CG iteration
 //! against a padded FFT round trip.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
@@ -37,7 +37,7 @@ fn bench_rough(c: &mut Criterion) {
     let half = Substrate::half_space(Material::new(0.75, 0.5).unwrap());
     let mut group = c.benchmark_group("rough periodic solve (half-space, 0.01 E*)");
     group.sample_size(10);
-    for n in [256usize, 512] {
+    for n in [256usize, 512, 1024] {
         let grid = Grid::new(n, n, 1.0 / n as f64).unwrap();
         let surface = SelfAffine {
             hurst: 0.8,

@@ -71,9 +71,13 @@ fn union(a: Option<Bounds>, b: Option<Bounds>) -> Option<Bounds> {
 /// `(sum of profile + u, count)` over the cells that carry pressure.
 pub(super) fn contact_sum(profile: &[f64], displacement: &[f64], pressure: &[f64]) -> (f64, usize) {
     map_chunks(pressure.len(), |r| {
-        r.filter(|&c| pressure[c] > 0.0)
-            .fold((0.0, 0), |(s, k), c| {
-                (s + profile[c] + displacement[c], k + 1)
+        let cells = profile[r.clone()].iter().zip(&displacement[r.clone()]);
+        cells
+            .zip(&pressure[r])
+            .fold((0.0, 0), |(s, k), ((h, u), p)| {
+                // A select, not a branch: contacts are patchy.
+                let inside = *p > 0.0;
+                (if inside { s + h + u } else { s }, k + usize::from(inside))
             })
     })
     .into_iter()
@@ -97,25 +101,30 @@ pub(super) fn gaps_and_working_set(
     let pass = |(k, (gap, working)): (usize, (&mut [f64], &mut [bool]))| {
         let mut set = WorkingSet::default();
         let first = k * CHUNK;
-        // The row and column of cell `c`, kept by counting.
+        let cells = first..first + gap.len();
+        let inputs = profile[cells.clone()]
+            .iter()
+            .zip(&displacement[cells.clone()])
+            .zip(pressure[cells.clone()].iter().zip(&reachable[cells]));
+        // The row and column of cell `c`, kept by counting. Selects, not
+        // branches, where the set decides: rough contacts are patchy.
         let (mut row, mut column) = (first / columns, first % columns);
         let (mut rows, mut cols) = ((usize::MAX, 0), (usize::MAX, 0));
-        for (i, (g, w)) in gap.iter_mut().zip(working.iter_mut()).enumerate() {
-            let c = first + i;
-            *g = if reachable[c] {
-                profile[c] - reference + displacement[c]
+        for ((g, w), ((h, u), (p, &reach))) in gap.iter_mut().zip(working.iter_mut()).zip(inputs) {
+            *g = if reach { h - reference + u } else { 0.0 };
+            let open = *p == 0.0;
+            *w = reach && (!open || *g < 0.0);
+            let member = *w;
+            set.members += usize::from(member);
+            // Adding +0.0 leaves the sum as it was (it starts at +0.0).
+            set.gap_sum += if member { *g } else { 0.0 };
+            set.overlap |= member && open;
+            rows = if member { (rows.0.min(row), row) } else { rows };
+            cols = if member {
+                (cols.0.min(column), cols.1.max(column))
             } else {
-                0.0
+                cols
             };
-            let open = pressure[c] == 0.0;
-            *w = reachable[c] && (!open || *g < 0.0);
-            if *w {
-                set.members += 1;
-                set.gap_sum += *g;
-                set.overlap |= open;
-                rows = (rows.0.min(row), row);
-                cols = (cols.0.min(column), cols.1.max(column));
-            }
             column += 1;
             if column == columns {
                 column = 0;
@@ -143,8 +152,17 @@ pub(super) fn gaps_and_working_set(
 /// `(sum a, sum a b)` over the working set.
 pub(super) fn sum_and_dot(working: &[bool], a: &[f64], b: &[f64]) -> (f64, f64) {
     map_chunks(a.len(), |r| {
-        r.filter(|&c| working[c])
-            .fold((0.0, 0.0), |(s, d), c| (s + a[c], d + a[c] * b[c]))
+        let cells = working[r.clone()].iter().zip(&a[r.clone()]).zip(&b[r]);
+        cells.fold(
+            (0.0, 0.0),
+            |(s, d), ((w, a), b)| {
+                if *w {
+                    (s + a, d + a * b)
+                } else {
+                    (s, d)
+                }
+            },
+        )
     })
     .into_iter()
     .fold((0.0, 0.0), |(s, d), (x, y)| (s + x, d + y))
@@ -153,8 +171,16 @@ pub(super) fn sum_and_dot(working: &[bool], a: &[f64], b: &[f64]) -> (f64, f64) 
 /// `[sum a t, sum b t, sum t]` over the working set.
 pub(super) fn two_dots(working: &[bool], a: &[f64], b: &[f64], t: &[f64]) -> [f64; 3] {
     map_chunks(t.len(), |r| {
-        r.filter(|&c| working[c]).fold([0.0; 3], |[x, y, z], c| {
-            [x + a[c] * t[c], y + b[c] * t[c], z + t[c]]
+        let cells = working[r.clone()]
+            .iter()
+            .zip(&t[r.clone()])
+            .zip(a[r.clone()].iter().zip(&b[r]));
+        cells.fold([0.0; 3], |[x, y, z], ((w, t), (a, b))| {
+            if *w {
+                [x + a * t, y + b * t, z + t]
+            } else {
+                [x, y, z]
+            }
         })
     })
     .into_iter()
@@ -170,13 +196,13 @@ pub(super) fn update_direction(
     direction: &mut [f64],
 ) {
     let pass = |(k, direction): (usize, &mut [f64])| {
-        for (i, t) in direction.iter_mut().enumerate() {
-            let c = k * CHUNK + i;
-            *t = if working[c] {
-                z[c] - shift + beta * *t
-            } else {
-                0.0
-            };
+        let cells = k * CHUNK..k * CHUNK + direction.len();
+        for ((t, w), z) in direction
+            .iter_mut()
+            .zip(&working[cells.clone()])
+            .zip(&z[cells])
+        {
+            *t = if *w { z - shift + beta * *t } else { 0.0 };
         }
     };
     chunks_mut!(direction).enumerate().for_each(pass);
@@ -238,20 +264,25 @@ pub(super) fn step(
     );
     let pass = |(k, (((p, u), corr), prev)): Chunk<'_>| {
         let mut s = Step::default();
-        for i in 0..p.len() {
-            let c = k * CHUNK + i;
-            let old = p[i];
-            prev[i] = old;
-            let stepped = if working[c] {
-                old - step * direction[c]
-            } else {
-                old
-            };
+        let cells = k * CHUNK..k * CHUNK + p.len();
+        let inputs = working[cells.clone()]
+            .iter()
+            .zip(&direction[cells.clone()])
+            .zip(&response[cells]);
+        let outputs = p
+            .iter_mut()
+            .zip(u.iter_mut())
+            .zip(corr.iter_mut())
+            .zip(prev);
+        for ((((p, u), corr), prev), ((w, t), kt)) in outputs.zip(inputs) {
+            let old = *p;
+            *prev = old;
+            let stepped = if *w { old - step * t } else { old };
             let new = stepped.max(0.0);
-            p[i] = new;
-            u[i] -= step * response[c];
-            corr[i] = new - stepped;
-            s.corrected += usize::from(corr[i] != 0.0);
+            *p = new;
+            *u -= step * kt;
+            *corr = new - stepped;
+            s.corrected += usize::from(*corr != 0.0);
             s.change += (new - old).abs();
             s.size += new;
             s.contact += usize::from(new > 0.0);
@@ -286,8 +317,9 @@ pub(super) fn nonzeros(values: &[f64], first: usize) -> Vec<(usize, f64)> {
 /// `values += factor * add`.
 pub(super) fn axpy(values: &mut [f64], factor: f64, add: &[f64]) {
     let pass = |(k, values): (usize, &mut [f64])| {
-        for (i, v) in values.iter_mut().enumerate() {
-            *v += factor * add[k * CHUNK + i];
+        let add = &add[k * CHUNK..k * CHUNK + values.len()];
+        for (v, a) in values.iter_mut().zip(add) {
+            *v += factor * a;
         }
     };
     chunks_mut!(values).enumerate().for_each(pass);
@@ -325,8 +357,9 @@ pub(super) fn rescale(
             Some(add) => {
                 let add = &add[outside.clone()];
                 let pass = |(k, values): (usize, &mut [f64])| {
-                    for (i, v) in values.iter_mut().enumerate() {
-                        *v = factor * (*v + add[k * CHUNK + i]);
+                    let add = &add[k * CHUNK..k * CHUNK + values.len()];
+                    for (v, a) in values.iter_mut().zip(add) {
+                        *v = factor * (*v + a);
                     }
                 };
                 chunks_mut!(displacement[outside])
@@ -342,17 +375,18 @@ pub(super) fn rescale(
     let displacement = &mut displacement[cells];
     let pass = |(k, (p, u)): (usize, (&mut [f64], &mut [f64]))| {
         let mut sums = [0.0; 4];
-        for i in 0..p.len() {
-            let c = k * CHUNK + i;
-            p[i] *= factor;
-            u[i] = factor * (u[i] + add.map_or(0.0, |a| a[c]));
-            sums[0] += (p[i] - previous[c]).abs();
-            sums[1] += p[i];
-            if p[i] > 0.0 {
-                // In the order of `contact_sum`.
-                sums[2] = sums[2] + profile[c] + u[i];
-                sums[3] += 1.0;
-            }
+        let cells = k * CHUNK..k * CHUNK + p.len();
+        let inputs = previous[cells.clone()].iter().zip(&profile[cells.clone()]);
+        let add = add.map(|a| &a[cells]);
+        for (i, ((p, u), (old, h))) in p.iter_mut().zip(u.iter_mut()).zip(inputs).enumerate() {
+            *p *= factor;
+            *u = factor * (*u + add.map_or(0.0, |a| a[i]));
+            sums[0] += (*p - old).abs();
+            sums[1] += *p;
+            // In the order of `contact_sum`; a select, not a branch.
+            let inside = *p > 0.0;
+            sums[2] = if inside { sums[2] + h + *u } else { sums[2] };
+            sums[3] += if inside { 1.0 } else { 0.0 };
         }
         sums
     };
