@@ -20,6 +20,14 @@
 //! height or rms slope (the slope from the spectrum, `sqrt(sum q^2
 //! |h_q|^2)`). The surface is periodic on its grid.
 //!
+//! The random numbers are drawn per wavevector of the grid, so a new grid
+//! draws a new surface. For a convergence study in the grid, synthesise
+//! once on the coarsest grid (its short cut-off at least two cells) and
+//! interpolate onto the finer ones with
+//! [`HeightMap::refined`](crate::indenter::HeightMap::refined): the
+//! surface is band-limited, and the finer grids then carry the same
+//! continuous surface.
+//!
 //! ```
 //! use layered_contact::topography::{Amplitude, SelfAffine};
 //! use layered_contact::Grid;

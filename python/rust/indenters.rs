@@ -165,6 +165,31 @@ pub(crate) fn rough_surface_heights(
     Ok(PyArray2::from_owned_array(py, array).unbind())
 }
 
+/// `heights` (a periodic map, rows x columns) on a grid `factor` times finer
+/// each way over the same extent, by trigonometric interpolation through
+/// the cell centres (the crate's `HeightMap::refined`): a surface whose
+/// shortest wavelength is at least two cells is the same continuous
+/// surface on the finer grid, for convergence studies. The finer cells are
+/// `spacing / factor`.
+#[pyfunction]
+pub(crate) fn refine_heights(
+    py: Python<'_>,
+    heights: PyReadonlyArray2<'_, f64>,
+    factor: usize,
+) -> PyResult<Py<PyArray2<f64>>> {
+    let shape = heights.shape();
+    let (rows, columns) = (shape[0], shape[1]);
+    // The spacing does not enter the interpolation.
+    let grid = lc::Grid::new(rows, columns, 1.0).py_err()?;
+    let values: Vec<f64> = heights.as_array().iter().copied().collect();
+    let map = lc::indenter::HeightMap::new(grid, values).py_err()?;
+    let fine = py.detach(|| map.refined(factor)).py_err()?;
+    let (m0, m1) = (fine.grid().rows(), fine.grid().columns());
+    let array = ndarray::Array2::from_shape_vec((m0, m1), fine.heights().to_vec())
+        .map_err(|e| InvalidInputError::new_err(e.to_string()))?;
+    Ok(PyArray2::from_owned_array(py, array).unbind())
+}
+
 /// A shared indenter as a library indenter.
 pub(crate) struct Shared(pub(crate) Arc<dyn lc::indenter::Indenter + Send + Sync>);
 

@@ -130,6 +130,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Curve>()?;
     m.add_function(wrap_pyfunction!(run_scene, m)?)?;
     m.add_function(wrap_pyfunction!(indenters::rough_surface_heights, m)?)?;
+    m.add_function(wrap_pyfunction!(indenters::refine_heights, m)?)?;
     m.add_function(wrap_pyfunction!(stresses::subsurface_stress, m)?)?;
     m.add_function(wrap_pyfunction!(check_scene, m)?)?;
     m.add_function(wrap_pyfunction!(scene_reference, m)?)?;

@@ -183,3 +183,26 @@ def test_rough_surfaces_are_the_scenes_own():
         lc.Indenter.rough_surface(**args)
     with pytest.raises(lc.InvalidInputError, match="cells"):
         lc.rough_surface_heights(**dict(args, cells=1), rms_slope=0.1)
+
+
+def test_refined_heights_sample_the_same_surface():
+    # A band-limited surface (two modes below the coarse Nyquist) sampled at
+    # the centres of 6 x 8 cells, refined 3 times: the same surface at the
+    # centres of the finer cells, to the FFTs' rounding (1e-13 of the
+    # amplitude); the coarse heights come back at the middle fine cells.
+    import numpy as np
+    import pytest
+
+    def sampled(rows, columns):
+        x = (np.arange(rows) + 0.5) / rows
+        y = (np.arange(columns) + 0.5) / columns
+        x, y = np.meshgrid(x, y, indexing="ij")
+        return 1e-6 * (np.cos(2 * np.pi * (x + 2 * y) + 0.4) + 0.5 * np.sin(2 * np.pi * 2 * x))
+
+    coarse = sampled(6, 8)
+    fine = lc.refine_heights(coarse, 3)
+    assert fine.shape == (18, 24)
+    np.testing.assert_allclose(fine, sampled(18, 24), rtol=0, atol=1e-19)
+    np.testing.assert_allclose(fine[1::3, 1::3], coarse, rtol=0, atol=1e-19)
+    with pytest.raises(lc.InvalidInputError, match="refinement factor"):
+        lc.refine_heights(coarse, 0)

@@ -9,6 +9,8 @@ use crate::grid::Grid;
 
 use super::Indenter;
 
+mod refine;
+
 /// An indenter given by its heights at the cell centres of a grid, centred on
 /// the axis: the value of cell `(i, j)` is the height at
 /// `x = (i + 1/2 - rows/2) Delta`, `y = (j + 1/2 - columns/2) Delta`, and

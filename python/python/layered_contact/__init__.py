@@ -25,7 +25,7 @@ import os
 from typing import Any, Callable, Mapping, Optional, Union
 
 from . import analytic
-from ._native import rough_surface_heights, subsurface_stress
+from ._native import refine_heights, rough_surface_heights, subsurface_stress
 from .rough import interface_curve
 from .stress import plot_section
 from ._native import (
@@ -67,6 +67,7 @@ __all__ = [
     "plot_curve",
     "plot_field",
     "plot_section",
+    "refine_heights",
     "rough_surface_heights",
     "run_scene",
     "scene_reference",

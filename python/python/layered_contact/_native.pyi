@@ -33,6 +33,7 @@ __all__ = [
     "paraboloid_pull_off_force",
     "paraboloid_series",
     "paraboloid_state",
+    "refine_heights",
     "rough_surface_heights",
     "run_scene",
     "scene_reference",
@@ -188,6 +189,9 @@ def run_scene(
     indenter: Optional[Indenter] = None,
     iteration: Optional[Callable[[dict], None]] = None,
 ) -> Curve: ...
+def refine_heights(
+    heights: npt.NDArray[np.float64], factor: int
+) -> npt.NDArray[np.float64]: ...
 def rough_surface_heights(
     hurst: float,
     long_cutoff: float,
