@@ -354,10 +354,14 @@
 //! the law's range, a Maugis-Dugdale interaction (Maugis 1992, J. Colloid
 //! Interface Sci. 150, 243) of that length, and a result should be read as
 //! such (set it with [`CohesiveZone::with_zone_cells`](crate::solver::CohesiveZone::with_zone_cells);
-//! its default of four cells shortens it with the cell). No caveat flags
-//! this yet: a measure of the bonded region's mean radius against the
-//! zone (tried) was 3.6 and 11.6 zone lengths on this cycle at 64^2 and
-//! 128^2, large where the pull-off still moved by 25 %.
+//! its default of four cells shortens it with the cell). A scene's curve
+//! of a synthesised rough surface through the zone carries
+//! [`Caveat::CohesiveZoneOnRoughSurface`](crate::scene::Caveat::CohesiveZoneOnRoughSurface),
+//! which says so; a height map read from a file is not flagged (the scene
+//! cannot tell a rough map from a smooth one). A measure of the bonded
+//! region's mean radius against the zone, tried as the flag, was 3.6 and
+//! 11.6 zone lengths on this cycle at 64^2 and 128^2: large where the
+//! pull-off still moved by 25 %, so not kept.
 //!
 //! So the cohesive zone is the method that converges to the JKR limit for
 //! any shape and orientation, with patches, on any body; at 64 cells

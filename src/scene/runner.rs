@@ -240,13 +240,19 @@ impl<'a> Runner<'a> {
             // criterion's or the cohesive zone's.
             caveats: match (self.scene.adhesion.works(), self.cohesive) {
                 (Some(_), None) => vec![super::Caveat::MeshDependentAdhesion],
-                (Some(_), Some(zone))
-                    if !zone.resolves_layer(
+                (Some(_), Some(zone)) => {
+                    let thin = !zone.resolves_layer(
                         self.solver.grid().spacing(),
                         self.solver.substrate().top_thickness(),
-                    ) =>
-                {
-                    vec![super::Caveat::CohesiveZoneLongAgainstLayer]
+                    );
+                    let rough = matches!(self.scene.indenter, IndenterSpec::RoughSurface { .. });
+                    [
+                        (thin, super::Caveat::CohesiveZoneLongAgainstLayer),
+                        (rough, super::Caveat::CohesiveZoneOnRoughSurface),
+                    ]
+                    .into_iter()
+                    .filter_map(|(applies, caveat)| applies.then_some(caveat))
+                    .collect()
                 }
                 _ => Vec::new(),
             },
