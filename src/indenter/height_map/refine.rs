@@ -31,8 +31,8 @@ impl HeightMap {
     ///
     /// Meant for periodic grids: on an isolated grid the map is still
     /// treated as periodic, and a map whose edges do not meet overshoots
-    /// near them (Gibbs). Memory: 24 bytes per fine cell besides the
-    /// result.
+    /// near them (Gibbs). Memory: 16 bytes per fine cell (its spectrum)
+    /// besides the result's 8.
     ///
     /// ```
     /// use layered_contact::indenter::HeightMap;
@@ -57,7 +57,9 @@ impl HeightMap {
     /// `+inf` height (a point that cannot touch has no interpolant);
     /// [`Error::InvalidGrid`] if the finer grid exceeds [`Grid::new`]'s
     /// limits; [`Error::Unsupported`] for a distributed run's band of rows;
-    /// [`Error::OutOfMemory`] if its buffers cannot be allocated.
+    /// [`Error::NonFinite`] where heights near `f64`'s limit overflow in
+    /// the transforms; [`Error::OutOfMemory`] if its buffers cannot be
+    /// allocated.
     pub fn refined(&self, factor: usize) -> Result<HeightMap> {
         if factor == 0 {
             return Err(Error::InvalidParameter {
@@ -110,6 +112,8 @@ impl HeightMap {
         for (h, v) in heights.iter_mut().zip(&values) {
             *h = v.re * scale;
         }
+        // Heights near f64's limit overflow in the transforms.
+        crate::solver::all_finite("refining a height map (heights near f64's limit)", &heights)?;
         HeightMap::new(fine, heights)
     }
 }
@@ -267,6 +271,8 @@ mod tests {
             map.refined(1 << 14),
             Err(Error::InvalidGrid { rows: 65536, .. })
         ));
+        let huge = HeightMap::new(grid, vec![1e308, -1e308, 1e308, -1e308].repeat(4)).unwrap();
+        assert!(huge.refined(2).is_err());
         let mut heights = vec![0.0; 16];
         heights[5] = f64::INFINITY;
         let map = HeightMap::new(grid, heights).unwrap();
