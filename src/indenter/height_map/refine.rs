@@ -271,7 +271,7 @@ mod tests {
             map.refined(1 << 14),
             Err(Error::InvalidGrid { rows: 65536, .. })
         ));
-        let huge = HeightMap::new(grid, vec![1e308, -1e308, 1e308, -1e308].repeat(4)).unwrap();
+        let huge = HeightMap::new(grid, [1e308, -1e308, 1e308, -1e308].repeat(4)).unwrap();
         assert!(huge.refined(2).is_err());
         let mut heights = vec![0.0; 16];
         heights[5] = f64::INFINITY;
