@@ -122,9 +122,9 @@ pub enum Caveat {
     /// established. Measured on the same surface refined from 64^2 to
     /// 512^2 cells (`BENCHMARKS.md`, "Adhesion through a resolved cohesive
     /// zone"): at a fixed zone the cycle converges in the grid (0.036 %
-    /// between the two finest), but the converged pull-off grew by 8 and
-    /// 25 % as the zone halved from the surface's shortest wavelength to a
-    /// quarter of it. Read the forces as those of a cohesive
+    /// between the two finest), but the converged pull-off moved by +8,
+    /// +25 and -16 % as the zone halved from the surface's shortest
+    /// wavelength to an eighth of it. Read the forces as those of a cohesive
     /// (Maugis-Dugdale) law of the zone's length
     /// ([`CohesiveZone::with_zone_cells`](crate::solver::CohesiveZone::with_zone_cells));
     /// `doc::adhesion`.
@@ -154,7 +154,11 @@ impl std::fmt::Display for Caveat {
                  thickness, -4.6 % with the whole): refine the grid",
             ),
             Caveat::CohesiveZoneOnRoughSurface => f.write_str(
-                "cohesive zone on a rough surface: the forces depend on the zone's length and                  their JKR limit is not established (measured on a rough film, converged in                  the grid at a fixed zone, the pull-off grew by 8 and 25 % as the zone halved                  from the shortest wavelength to a quarter of it): read them as a cohesive                  law's of the zone's length",
+                "cohesive zone on a rough surface: the forces depend on the zone's length and \
+                 their JKR limit is not established (measured on a rough film, converged in \
+                 the grid at a fixed zone, the pull-off moved by +8, +25 and -16 % as the zone \
+                 halved from the shortest wavelength to an eighth of it): read them as a \
+                 cohesive law's of the zone's length",
             ),
         }
     }
