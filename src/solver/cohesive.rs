@@ -27,52 +27,12 @@ use std::borrow::Cow;
 use crate::error::{Error, Result};
 use crate::indenter::Indenter;
 
+#[cfg(doc)]
+use super::cohesive_law::ZONE_LAYER_FRACTION;
+use super::cohesive_law::{CohesiveZone, Law};
 use super::cohesive_steps::Stepper;
 use super::polonsky_keer::Control;
 use super::{check_finite, ContactSolver, Observer, Solution, WarmStart};
-
-/// The default width of the cohesive zone, in cells.
-///
-/// Chosen by measurement (`examples/cohesive_convergence`, default
-/// curvature correction; `BENCHMARKS.md`, "The cohesive zone's width"): the
-/// pull-off error is a function of the zone's length against the contact,
-/// so a narrower zone is a finer grid, until the lattice traps the few
-/// cells that carry it. JKR sphere on a half-space at 16, 32, 64 cells
-/// across the pull-off contact: -6.39, -2.42, -0.66 % with 8 cells, -4.17,
-/// -1.43, -0.39 % with 6, -3.37, -1.12, -0.27 % with 5, -1.95, -0.61,
-/// -0.13 % with 4. Johnson's sinusoid at 128, 181, 256 cells per
-/// wavelength, along the grid / at 45 degrees, worst of the two: 1.75,
-/// 0.91, 0.57 % with 8, 0.61, 0.34, 0.12 % with 4 (the two orientations
-/// then differ by up to 0.95 % at 128, against 0.09 % with 8: lattice
-/// trapping, but each nearer the limit). An elliptic paraboloid against
-/// the energy balance at 16, 32, 64 cells: -4.58, -1.41, -0.37 % with 8,
-/// -1.55, -0.25, -0.049 % with 4. About 1.5 times the iterations of 8
-/// cells on the sphere at 64 cells across.
-pub const COHESIVE_ZONE_CELLS: f64 = 4.0;
-
-/// The default first-order correction of the zone's bias on curved edges
-/// ([`CohesiveZone::with_curvature_correction`]): measured on the JKR
-/// sphere, whose pull-off error without it is `0.20 l / a` as the zone
-/// `l` shrinks against the contact radius `a` (+2.26, +4.06 % at `l / a`
-/// = 1/8, 1/4; Maugis-Dugdale theory gives `0.17 (c - a) / a`), the same
-/// on a layer (+4.06 % at 1/4), and zero on straight edges (Johnson's
-/// sinusoid: second order without it).
-pub const CURVATURE_CORRECTION: f64 = 0.2;
-
-/// The longest cohesive zone on a layer, as a fraction of the top layer's
-/// thickness ([`CohesiveZone::cells_on`]): the JKR limit needs the zone
-/// short against every length of the body, and a zone of [`COHESIVE_ZONE_CELLS`]
-/// cells as long as the thickness of the film under it behaves as a softer
-/// (Maugis-Dugdale) law. Measured on the sphere on a film on a rigid base a
-/// quarter of the half-space's pull-off radius thick, `N` = 64 and 128
-/// cells across that radius's contact (the film 8 and 16 cells thick),
-/// pull-off errors against the zone's length `l`: -2.28 % at `l = h`,
-/// +0.22 % and +0.95 % at `h/2`, +0.060 % and +0.014 % at `h/4`, and
-/// +0.054 % at `h/8` (a zone of two cells, coarse in its own right).
-pub const ZONE_LAYER_FRACTION: f64 = 0.25;
-
-/// The fewest cells a cohesive zone may span.
-const MIN_ZONE_CELLS: f64 = 2.0;
 
 /// The largest change of the cells' curvature factors (as their square
 /// roots, weighted by the tensions they scale) between the contact a solve
@@ -80,204 +40,22 @@ const MIN_ZONE_CELLS: f64 = 2.0;
 /// ([`ContactSolver::solve_depth_cohesive`]).
 const ROOT_TOLERANCE: f64 = 2e-3;
 
-/// Times one solve reads its curvature again from a converged contact.
+/// The change of the tensions (over the law's peak) below which the
+/// contact counts as settled and its curvature is read again, before the
+/// fixed point converges to its tolerance: the rounds that converge the
+/// last digits then run once, with the law of that contact. Measured on
+/// the tilted paraboloid's cycle (`examples/adhesive_cycle_cost`,
+/// `BENCHMARKS.md`, "Adhesive scene cycles: error and cost"): 1679 / 2263
+/// / 3223 CG iterations at 16 / 32 / 64 cells across, against 1934 / 2787
+/// / 4162 reading only the converged contact; 1767 / 2334 / 3627 at 1e-2.
+const SETTLED_CHANGE: f64 = 1e-3;
+
+/// Times one solve reads its curvature again (from a settled or a
+/// converged contact) and finds it changed.
 const MAX_REREADS: usize = 8;
 
 /// Fixed-point rounds of one cohesive solve before it gives up.
 const MAX_ROUNDS: usize = 2000;
-
-/// A short-range adhesive law whose range shrinks with the cell: the JKR
-/// limit for any contact shape ([`ContactSolver::solve_depth_cohesive`]).
-///
-/// ```
-/// use layered_contact::solver::CohesiveZone;
-///
-/// let law = CohesiveZone::new(0.05, 0.05)?.with_zone_cells(8.0)?;
-/// // On 1 um cells of a rubber of E* = 1 MPa: rho = 2 sqrt(dgamma k Delta / E*).
-/// let rho = law.range(0.05, 1e-6, 1e6);
-/// assert!((rho - 2.0 * (0.05 * 8.0 * 1e-6 / 1e6f64).sqrt()).abs() < 1e-18);
-/// Ok::<(), layered_contact::Error>(())
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct CohesiveZone {
-    advancing: f64,
-    receding: f64,
-    zone_cells: f64,
-    curvature_correction: f64,
-}
-
-impl CohesiveZone {
-    /// The law for the advancing (loading, `dgamma0`) and receding
-    /// (unloading, `dgamma1 >= dgamma0`) works of adhesion, J/m^2, with a
-    /// zone of [`COHESIVE_ZONE_CELLS`] cells and the curvature correction
-    /// [`CURVATURE_CORRECTION`]. A cell bonds when it touches
-    /// and then holds with `dgamma1` until its gap exceeds the receding
-    /// range; a cell that has not touched pulls with `dgamma0`.
-    ///
-    /// # Errors
-    /// [`Error::InvalidParameter`] for a negative or non-finite work of
-    /// adhesion or `advancing > receding`.
-    pub fn new(advancing: f64, receding: f64) -> Result<Self> {
-        let (advancing, receding) = crate::error::works_of_adhesion(advancing, receding)?;
-        Ok(CohesiveZone {
-            advancing,
-            receding,
-            zone_cells: COHESIVE_ZONE_CELLS,
-            curvature_correction: CURVATURE_CORRECTION,
-        })
-    }
-
-    /// The same law with a zone of `cells` cells (2 to 256): wider zones
-    /// leave less lattice trapping and converge later.
-    ///
-    /// # Errors
-    /// [`Error::InvalidParameter`] outside `[2, 256]`.
-    pub fn with_zone_cells(self, cells: f64) -> Result<Self> {
-        if !(2.0..=256.0).contains(&cells) {
-            return Err(Error::InvalidParameter {
-                name: "cohesive zone width (cells)",
-                value: cells,
-                expected: "in [2, 256]",
-            });
-        }
-        Ok(CohesiveZone {
-            zone_cells: cells,
-            ..self
-        })
-    }
-
-    /// The same law with the zone's first-order bias on curved edges taken
-    /// out: each cell pulls with `dgamma / (1 + c kappa l)`, `kappa` the
-    /// curvature of the contact's edge near it and `l` the zone's length
-    /// (`c` = 0 leaves the law as it is; default [`CURVATURE_CORRECTION`]).
-    /// The curvature is that of the contact's cells smoothed over the zone,
-    /// taken at the first round of each solve (for a load step, the
-    /// contact of the last one, moved by the step) and held while the
-    /// fixed point converges; then read again from the converged contact,
-    /// and the fixed point resumed, while the factors (as their square
-    /// roots, weighted by the tensions they scale) move by more than 2e-3
-    /// (at most eight times): a long step that moves the edge by many
-    /// cells gets the curvature of the contact it reaches.
-    ///
-    /// # Errors
-    /// [`Error::InvalidParameter`] outside `[0, 1]`.
-    pub fn with_curvature_correction(self, c: f64) -> Result<Self> {
-        if !(0.0..=1.0).contains(&c) {
-            return Err(Error::InvalidParameter {
-                name: "cohesive zone curvature correction",
-                value: c,
-                expected: "in [0, 1]",
-            });
-        }
-        Ok(CohesiveZone {
-            curvature_correction: c,
-            ..self
-        })
-    }
-
-    /// The advancing work of adhesion, J/m^2.
-    pub fn advancing(&self) -> f64 {
-        self.advancing
-    }
-
-    /// The receding work of adhesion, J/m^2.
-    pub fn receding(&self) -> f64 {
-        self.receding
-    }
-
-    /// The zone's width in cells.
-    pub fn zone_cells(&self) -> f64 {
-        self.zone_cells
-    }
-
-    /// The zone's width in cells on a grid of `spacing` (m) over a body
-    /// whose top layer is `top_thickness` (m) thick (`None`: a half-space):
-    /// [`zone_cells`](Self::zone_cells), but no longer than
-    /// [`ZONE_LAYER_FRACTION`] of the layer and no shorter than two cells.
-    /// [`ContactSolver::solve_depth_cohesive`] solves with this width.
-    ///
-    /// ```
-    /// use layered_contact::solver::CohesiveZone;
-    ///
-    /// let zone = CohesiveZone::new(0.05, 0.05)?;
-    /// assert_eq!(zone.cells_on(1e-6, None), 4.0);
-    /// assert_eq!(zone.cells_on(1e-6, Some(1e-4)), 4.0);
-    /// assert!((zone.cells_on(1e-6, Some(1.2e-5)) - 3.0).abs() < 1e-12);
-    /// assert_eq!(zone.cells_on(1e-6, Some(2e-6)), 2.0);
-    /// Ok::<(), layered_contact::Error>(())
-    /// ```
-    pub fn cells_on(&self, spacing: f64, top_thickness: Option<f64>) -> f64 {
-        match top_thickness {
-            Some(h) => self
-                .zone_cells
-                .min((ZONE_LAYER_FRACTION * h / spacing).max(MIN_ZONE_CELLS)),
-            None => self.zone_cells,
-        }
-    }
-
-    /// Whether a zone of [`cells_on`](Self::cells_on) cells is within
-    /// [`ZONE_LAYER_FRACTION`] of the top layer's thickness: false when
-    /// the layer is thinner than eight cells (the zone of two cells is then
-    /// longer than a quarter of it and the pull-off biased, by -0.8 % at
-    /// half the thickness and -4.6 % at the whole, measured as in
-    /// [`ZONE_LAYER_FRACTION`]).
-    ///
-    /// ```
-    /// use layered_contact::solver::CohesiveZone;
-    ///
-    /// let zone = CohesiveZone::new(0.05, 0.05)?;
-    /// assert!(zone.resolves_layer(1.9182e-5, None));
-    /// // A zone of exactly a quarter of the film (2.6 cells) resolves it.
-    /// assert!(zone.resolves_layer(1.9182e-5, Some(2e-4)));
-    /// assert!(!zone.resolves_layer(1.9182e-5, Some(1.5e-4)));
-    /// Ok::<(), layered_contact::Error>(())
-    /// ```
-    pub fn resolves_layer(&self, spacing: f64, top_thickness: Option<f64>) -> bool {
-        // In cells, as `cells_on` compares: a zone of `cells_on` cells is
-        // within the quarter unless that quarter is under the fewest cells.
-        top_thickness.is_none_or(|h| ZONE_LAYER_FRACTION * h / spacing >= MIN_ZONE_CELLS)
-    }
-
-    /// The law's range `rho = 2 sqrt(dgamma k Delta / E*)` (m) for a work
-    /// of adhesion `work` on cells of `spacing` (m) of a surface of contact
-    /// modulus `contact_modulus` (Pa).
-    pub fn range(&self, work: f64, spacing: f64, contact_modulus: f64) -> f64 {
-        2.0 * (work * self.zone_cells * spacing / contact_modulus).sqrt()
-    }
-}
-
-/// One work of adhesion's law on this grid: the peak tension and the range.
-#[derive(Clone, Copy)]
-struct Law {
-    peak: f64,
-    range: f64,
-}
-
-impl Law {
-    fn new(zone: &CohesiveZone, work: f64, spacing: f64, modulus: f64) -> Self {
-        let range = zone.range(work, spacing, modulus);
-        let peak = if range > 0.0 { 2.0 * work / range } else { 0.0 };
-        Law { peak, range }
-    }
-
-    /// The law of `root^2` times the work of adhesion over the same zone
-    /// (its peak and range scale with `root`).
-    fn scaled(&self, root: f64) -> Law {
-        Law {
-            peak: self.peak * root,
-            range: self.range * root,
-        }
-    }
-
-    /// The tension (Pa, `<= 0`) at a gap `g >= 0`.
-    fn tension(&self, g: f64) -> f64 {
-        if g < self.range {
-            -self.peak * (1.0 - g / self.range)
-        } else {
-            0.0
-        }
-    }
-}
 
 impl ContactSolver {
     /// Each cell's curvature factor of `zone`'s law, as its square root,
@@ -373,8 +151,11 @@ impl ContactSolver {
         let mut roots: Vec<f64> = Vec::new();
         // Each cell's largest tension, Pa (its law's peak).
         let mut caps = vec![0.0; n];
-        // Curvatures read again from a converged contact.
+        // Curvatures read again and found changed.
         let mut rereads = 0usize;
+        // Whether the curvature was read since the tensions settled (or
+        // the law last changed).
+        let mut checked = false;
         // The round's contact: the cells carrying compressive pressure.
         let mut contact = vec![false; n];
         for _ in 0..MAX_ROUNDS {
@@ -439,10 +220,18 @@ impl ContactSolver {
                 change = f64::max(change, (mapped[c] - tension[c]).abs());
             }
             let converged = change <= tolerance * scale && inner <= tolerance;
-            if converged && zone.curvature_correction > 0.0 && rereads < MAX_REREADS {
+            let settled = change <= SETTLED_CHANGE.max(tolerance) * scale;
+            if (converged || (settled && !checked))
+                && zone.curvature_correction > 0.0
+                && rereads < MAX_REREADS
+            {
                 // A step that moved the contact far (a coarse protocol
                 // step) read its curvature from a contact unlike the
                 // converged one: read it again, and go on while it moves.
+                // Read first once the tensions have settled (the contact
+                // no longer moves), so that the rounds that converge the
+                // last digits run once, with the law of that contact.
+                checked = true;
                 let fresh = self.curvature_roots(&contact, zone);
                 // The change weighted by the tensions it scales.
                 let (mut moved, mut pull) = (0.0, 0.0);
@@ -454,7 +243,10 @@ impl ContactSolver {
                     roots = fresh;
                     rereads += 1;
                     stepper.law_changed();
-                    continue;
+                    checked = false;
+                    if converged {
+                        continue;
+                    }
                 }
             }
             if converged {

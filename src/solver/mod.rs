@@ -58,6 +58,7 @@ mod adhesive;
 mod anderson;
 mod cg_ends;
 mod cohesive;
+mod cohesive_law;
 mod cohesive_pull_off;
 mod cohesive_steps;
 mod curvature;
@@ -81,7 +82,9 @@ use crate::substrate::Substrate;
 
 use workspace::Workspace;
 
-pub use cohesive::{CohesiveZone, COHESIVE_ZONE_CELLS, CURVATURE_CORRECTION, ZONE_LAYER_FRACTION};
+pub use cohesive_law::{
+    CohesiveZone, COHESIVE_ZONE_CELLS, CURVATURE_CORRECTION, ZONE_LAYER_FRACTION,
+};
 pub(crate) use cohesive_pull_off::pinned_at_rim;
 pub use cohesive_pull_off::CohesivePullOff;
 pub use griffith::{
