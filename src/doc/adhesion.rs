@@ -299,7 +299,8 @@
 //! becomes -6.4, -2.4, -0.66 % at 16, 32, 64 cells (order 1.4 then 1.9),
 //! and straight edges are untouched (`kappa = 0`). The curvature is read
 //! from the first round's contact, held while the fixed point converges,
-//! and read again from the converged contact while it moves (a protocol
+//! and read again once the tensions have settled (a change below `1e-3` of
+//! the law's peak) and from the converged contact, while it moves (a protocol
 //! step twice the sphere's critical depth, read only once, gave the
 //! uncorrected +9.3 % at 16 cells instead of -6.7 %), and `c kappa l` is held
 //! within `[-0.5, 0.5]`: on patches smaller than the zone (a rough
