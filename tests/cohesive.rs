@@ -9,7 +9,8 @@ use std::f64::consts::PI;
 
 use layered_contact::analytic::{Axisymmetric, JkrSinusoid, JkrSphere};
 use layered_contact::indenter::{FlatPunch, HeightMap, Sphere};
-use layered_contact::solver::{CohesiveZone, ContactSolver, SolverParams};
+use layered_contact::kernel::ComplianceOperator;
+use layered_contact::solver::{CohesiveZone, ContactSolver, Fields, SolverParams};
 use layered_contact::{Boundary, Error, Grid, Substrate};
 
 mod common;
@@ -370,4 +371,50 @@ fn a_cold_start_at_first_touch_zips_in_to_the_jkr_contact() {
     assert!(error.abs() < 5e-3, "{error}");
     let inside = (radius - solution.contact_radius) / delta;
     assert!((0.0..4.0).contains(&inside), "{inside} cells: {solution:?}");
+}
+
+#[test]
+fn the_displacement_is_the_response_to_the_total_pressure() {
+    // Between fresh rounds the fixed point moves the profile by one
+    // operator application to the change of the total pressure and keeps
+    // the inner solve's displacement: the displacement it reports must
+    // still be K (tensions + pressures). A load step and an unloading step
+    // (warm, the bonded cells holding with the receding work), checked
+    // against the operator applied afresh (a wrong offset is off by the
+    // response to a round's change, a few per cent of the peak).
+    let jkr = JkrSphere::new(&rubber(), RADIUS, WORK).unwrap();
+    let a = jkr.pull_off_contact_radius();
+    let grid = Grid::square_of_side(48, 4.0 * a).unwrap();
+    let params = SolverParams {
+        fields: Fields::all(),
+        ..SolverParams::default()
+    };
+    let body = Substrate::half_space(rubber());
+    let mut solver = ContactSolver::new(&body, &grid, Boundary::Isolated, params).unwrap();
+    let mut operator = ComplianceOperator::new(&body, &grid, Boundary::Isolated).unwrap();
+    let sphere = Sphere::new(RADIUS).unwrap();
+    let zone = CohesiveZone::new(WORK, WORK).unwrap();
+    let mut warm = None;
+    for depth in [jkr.depth(1.5 * a), jkr.depth(a)] {
+        let (solution, next) = solver
+            .solve_depth_cohesive(&sphere, depth, &zone, warm.as_ref(), &mut ())
+            .unwrap();
+        let pressure = solution.pressure.unwrap();
+        let displacement = solution.displacement.unwrap();
+        let pressure: Vec<f64> = pressure.iter().copied().collect();
+        let mut fresh = vec![0.0; pressure.len()];
+        operator.apply(&pressure, &mut fresh).unwrap();
+        let largest = fresh.iter().fold(0.0f64, |m, u| m.max(u.abs()));
+        let worst = displacement
+            .iter()
+            .zip(&fresh)
+            .fold(0.0f64, |m, (u, v)| m.max((u - v).abs()));
+        assert!(worst <= 1e-10 * largest, "{depth}: {worst} of {largest}");
+        // The pull-off contact's force within the staircase's error.
+        if depth == jkr.depth(a) {
+            let error = solution.force / jkr.force(a) - 1.0;
+            assert!(error.abs() < 0.05, "{error}");
+        }
+        warm = Some(next);
+    }
 }

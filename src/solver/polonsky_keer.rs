@@ -25,14 +25,30 @@ use super::{check_finite, passes, ContactSolver, IterationInfo, Observer, Soluti
 /// converge, forces of `1e-200` N came out 7 % off).
 const MIN_LOAD_SCALE: f64 = 1e-100;
 
-/// Iterations between full recomputations of `u = K p`.
-const REFRESH: usize = 50;
+/// Iterations between full recomputations of `u = K p` (three in unit
+/// tests, so that the refreshes, and the one that keeps a given start
+/// displacement's offset, run in short solves too).
+const REFRESH: usize = if cfg!(test) { 3 } else { 50 };
 
 /// Which quantity a non-adhesive solve prescribes.
 #[derive(Clone, Copy)]
 pub(super) enum Control {
     Depth(f64),
     Force(f64),
+}
+
+/// Where the constrained conjugate gradients get the displacement of their
+/// starting pressure.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(super) enum StartDisplacement {
+    /// `u = K p` of the start, one operator application.
+    Compute,
+    /// The workspace's displacement already is the start's, less an offset
+    /// that the profile carries (the cohesive zone's fixed point adds the
+    /// response to its tensions' and pressures' change to the profile in
+    /// one application): kept, and refreshed as `u_start + K (p - p_start)`
+    /// so that the offset survives. The warm start must have contact.
+    Given,
 }
 
 impl ContactSolver {
@@ -139,7 +155,8 @@ impl ContactSolver {
             Some((start, iterations)) => (Some(Cow::Owned(start)), iterations),
             None => (warm.map(Cow::Borrowed), 0),
         };
-        let (mut solution, end) = self.constrained_cg(control, start, observer)?;
+        let (mut solution, end) =
+            self.constrained_cg(control, start, StartDisplacement::Compute, observer)?;
         solution.coarse_iterations = coarse_iterations;
         Ok((solution, end))
     }
@@ -148,6 +165,7 @@ impl ContactSolver {
         &mut self,
         control: Control,
         warm: Option<Cow<'_, WarmStart>>,
+        start_displacement: StartDisplacement,
         observer: &mut dyn Observer,
     ) -> Result<(Solution, WarmStart)> {
         let n = self.local_cells();
@@ -164,6 +182,13 @@ impl ContactSolver {
                 .any(|(p, r)| *r && *p > 0.0);
             self.on_any_rank(contact)
         });
+        let given = start_displacement == StartDisplacement::Given;
+        if given && warm.is_none() {
+            return Err(Error::Internal {
+                what: "constrained conjugate gradients",
+                detail: "a given start displacement without a start that has contact".into(),
+            });
+        }
         let mut pressure = self.initial_pressure(control, warm, &reachable);
         if let Control::Force(w) = control {
             let mut total = [area * pressure.iter().sum::<f64>()];
@@ -192,13 +217,35 @@ impl ContactSolver {
         // per iteration (K t), plus one only when clamping changed the
         // pressure off the search direction, and a full refresh every
         // REFRESH iterations against drift.
-        self.operator
-            .apply(&pressure, &mut self.workspace.displacement)?;
+        // A given start displacement is kept with its start pressure, to
+        // refresh against (allocated only then).
+        let start = if given {
+            Some((pressure.clone(), self.workspace.displacement.clone()))
+        } else {
+            self.operator
+                .apply(&pressure, &mut self.workspace.displacement)?;
+            None
+        };
         for iteration in 1..=self.params.max_iterations {
             self.check_interrupt("the constrained conjugate gradients")?;
             if iteration % REFRESH == 0 {
-                self.operator
-                    .apply(&pressure, &mut self.workspace.displacement)?;
+                let ws = &mut self.workspace;
+                match &start {
+                    Some((p0, u0)) => {
+                        // `gap` and `response` are written again before
+                        // they are next read.
+                        for ((d, p), q) in ws.gap.iter_mut().zip(&pressure).zip(p0) {
+                            *d = p - q;
+                        }
+                        self.operator.apply(&ws.gap, &mut ws.response)?;
+                        for ((u, s), k) in ws.displacement.iter_mut().zip(u0).zip(&ws.response) {
+                            *u = s + k;
+                        }
+                    }
+                    None => {
+                        self.operator.apply(&pressure, &mut ws.displacement)?;
+                    }
+                }
                 contact_sums = None;
             }
             // The depth under force control: the mean of profile + u over
