@@ -169,9 +169,9 @@ impl ContactSolver {
         // The round's contact: the cells carrying compressive pressure.
         let mut contact = vec![false; n];
         // The change of the tensions plus that of the compressive
-        // pressures since the last inner solve ended (`None` before the
-        // first), and the rounds since `kt` and the displacement were
-        // computed afresh.
+        // pressures since the last inner solve ended, whether it is
+        // pending (not before the first round), and the rounds since `kt`
+        // and the displacement were computed afresh.
         let mut change_of_total = vec![0.0; n];
         let mut pending = false;
         let mut since_fresh = 0usize;
