@@ -157,7 +157,7 @@ impl ContactSolver {
         let mut mapped = vec![0.0; n];
         // Each cell's law as the square root of its curvature factor (the
         // peak and the range scale with it), set at the first round and
-        // read again from converged contacts.
+        // read again from settled and converged contacts.
         let mut roots: Vec<f64> = Vec::new();
         // Each cell's largest tension, Pa (its law's peak).
         let mut caps = vec![0.0; n];
@@ -240,8 +240,8 @@ impl ContactSolver {
             }
             // The edge's curvature from the first round's contact, then
             // held while the fixed point converges (the law does not change
-            // with the contact within those rounds); read again from the
-            // converged contact below.
+            // with the contact within those rounds); read again below once
+            // the tensions settle and from the converged contact.
             if zone.curvature_correction > 0.0 && roots.is_empty() {
                 roots = self.curvature_roots(&contact, zone);
             }
