@@ -182,32 +182,26 @@ impl ContactSolver {
             // solve keeps the displacement of its last pressures, so that
             // `profile + u` is `base + K (tensions + pressures)` while `kt`
             // and `u` each carry the response to the pressures' change.
-            let has_contact = compressive.iter().any(|p| *p > 0.0);
-            let mode = match std::mem::take(&mut pending) {
-                true if has_contact && since_fresh < FRESH_ROUNDS => {
-                    if change_of_total.iter().any(|d| *d != 0.0) {
-                        self.operator.apply(&change_of_total, &mut mapped)?;
-                        for ((k, f), (b, d)) in kt
-                            .iter_mut()
-                            .zip(&mut self.workspace.profile)
-                            .zip(base.iter().zip(&mapped))
-                        {
-                            *k += d;
-                            *f = b + *k;
-                        }
+            let keep = std::mem::take(&mut pending)
+                && since_fresh < FRESH_ROUNDS
+                && compressive.iter().any(|p| *p > 0.0);
+            let mode = if keep {
+                if change_of_total.iter().any(|d| *d != 0.0) {
+                    self.operator.apply(&change_of_total, &mut mapped)?;
+                    for (k, d) in kt.iter_mut().zip(&mapped) {
+                        *k += d;
                     }
-                    since_fresh += 1;
-                    StartDisplacement::Given
                 }
-                _ => {
-                    self.operator.apply(&tension, &mut kt)?;
-                    for c in 0..n {
-                        self.workspace.profile[c] = base[c] + kt[c];
-                    }
-                    since_fresh = 0;
-                    StartDisplacement::Compute
-                }
+                since_fresh += 1;
+                StartDisplacement::Given
+            } else {
+                self.operator.apply(&tension, &mut kt)?;
+                since_fresh = 0;
+                StartDisplacement::Compute
             };
+            for ((f, b), k) in self.workspace.profile.iter_mut().zip(&base).zip(&kt) {
+                *f = b + k;
+            }
             let start = WarmStart {
                 pressure: std::mem::take(&mut compressive),
                 attached: Vec::new(),
