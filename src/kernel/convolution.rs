@@ -29,6 +29,7 @@ use rustfft::{Fft, FftPlanner};
 
 use crate::error::{Error, Result};
 
+mod energy;
 mod exchange;
 mod multiplier;
 mod tiling;
@@ -75,6 +76,15 @@ pub(super) struct Convolution {
     blocks_per_task: usize,
     /// The split across the ranks of a distributed run, `None` when serial.
     split: Option<Split>,
+}
+
+/// Which part of the column pass runs.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Stage {
+    /// Forward, multiply, inverse.
+    Filter,
+    /// Forward only, the energy `multiplier |X|^2` summed.
+    Energy,
 }
 
 /// One thread's scratch.
@@ -254,7 +264,19 @@ impl Convolution {
             |i, line| line.copy_from_slice(&input[i * columns..(i + 1) * columns]),
             output,
             multiplier,
+            |_, value| value,
         )
+    }
+
+    /// The tiles, allocated again if they were released or lent away
+    /// (every value is written before it is read, so the new buffer needs
+    /// no particular content).
+    fn ensure_tiles(&mut self) -> Result<()> {
+        if self.tiles.len() < self.tiles_len {
+            self.tiles = Vec::new();
+            self.tiles = zeroed(self.tiles_len)?;
+        }
+        Ok(())
     }
 
     /// As [`Convolution::apply`], the input's data row `i` (of this rank)
@@ -265,18 +287,14 @@ impl Convolution {
         load: impl Fn(usize, &mut [f64]) + Sync,
         output: &mut [f64],
         multiplier: &[f64],
+        combine: impl Fn(f64, f64) -> f64 + Sync,
     ) -> Result<()> {
-        if self.tiles.len() < self.tiles_len {
-            // Released or lent away: every value is written before it is
-            // read, so the new buffer needs no particular content.
-            self.tiles = Vec::new();
-            self.tiles = zeroed(self.tiles_len)?;
-        }
+        self.ensure_tiles()?;
         self.forward_rows(load)?;
         self.exchange_to_columns()?;
-        self.filter_columns(multiplier)?;
+        self.filter_columns(multiplier, Stage::Filter)?;
         self.exchange_to_rows()?;
-        self.inverse_rows(output)
+        self.inverse_rows(output, combine)
     }
 
     /// Pass 1: real-to-complex transforms of the zero-padded data rows,
@@ -332,9 +350,18 @@ impl Convolution {
         })
     }
 
-    /// Pass 2: column transforms, multiplication, inverse column transforms.
-    fn filter_columns(&mut self, multiplier: &[f64]) -> Result<()> {
+    /// Pass 2: column transforms, multiplication, inverse column transforms
+    /// ([`Stage::Filter`]), or the forward transforms only
+    /// ([`Stage::Energy`]). Returns the sum over this process's columns of
+    /// the spectrum of `multiplier |X|^2` for [`Stage::Energy`] (0
+    /// otherwise), added block by block in order whatever the number of
+    /// threads.
+    fn filter_columns(&mut self, multiplier: &[f64], stage: Stage) -> Result<f64> {
         let (rows, n0) = (self.rows, self.size.0);
+        let even = self.size.1.is_multiple_of(2);
+        let half = self.size.1 / 2 + 1;
+        // The first of this process's spectrum columns.
+        let own = self.own_columns().start;
         let (block, per_task) = (self.block, self.blocks_per_task * self.block);
         let (forward, inverse) = (&self.column_forward, &self.column_inverse);
         // Distributed, the rows' spectra of the columns filtered here arrive
@@ -351,14 +378,17 @@ impl Convolution {
             let tail = rest.split_off(self.blocks_per_task.min(rest.len()));
             groups.push(std::mem::replace(&mut rest, tail));
         }
+        // One energy per block, added in block order below.
+        let mut energies = vec![0.0; groups.iter().map(Vec::len).sum()];
         let tasks: Vec<_> = groups
             .into_iter()
+            .zip(energies.chunks_mut(self.blocks_per_task.max(1)))
             .zip(self.tasks.iter_mut())
             .enumerate()
             .collect();
-        run_tasks(tasks, |(task, (group, scratch))| {
+        run_tasks(tasks, |(task, ((group, energies), scratch))| {
             let first = task * per_task;
-            for (b, tile) in group.into_iter().enumerate() {
+            for (b, (tile, energy)) in group.into_iter().zip(energies).enumerate() {
                 let j0 = first + b * block;
                 let width = tile.len() / rows;
                 let lines = &mut scratch.lines[..width * n0];
@@ -376,17 +406,37 @@ impl Convolution {
                 forward.process_with_scratch(lines, &mut scratch.fft);
                 // Row wavenumber index i > n0/2 has the multiplier of n0 - i.
                 let distinct = n0 / 2 + 1;
-                for (line, k) in lines
+                for (w, (line, k)) in lines
                     .chunks_exact_mut(n0)
                     .zip(multiplier[j0 * distinct..].chunks_exact(distinct))
+                    .enumerate()
                 {
                     let (low, high) = line.split_at_mut(distinct);
+                    let high_k = k[1..=n0 - distinct].iter().rev();
+                    if stage == Stage::Energy {
+                        // Parseval over the half-spectrum: the columns
+                        // other than 0 and n1/2 stand for their mirror too.
+                        let j = own + j0 + w;
+                        let weight = if j == 0 || (even && j == half - 1) {
+                            1.0
+                        } else {
+                            2.0
+                        };
+                        let low_sum: f64 = low.iter().zip(k).map(|(c, k)| k * c.norm_sqr()).sum();
+                        let high_sum: f64 =
+                            high.iter().zip(high_k).map(|(c, k)| k * c.norm_sqr()).sum();
+                        *energy += weight * (low_sum + high_sum);
+                        continue;
+                    }
                     for (c, k) in low.iter_mut().zip(k) {
                         *c *= *k;
                     }
-                    for (c, k) in high.iter_mut().zip(k[1..=n0 - distinct].iter().rev()) {
+                    for (c, k) in high.iter_mut().zip(high_k) {
                         *c *= *k;
                     }
+                }
+                if stage == Stage::Energy {
+                    continue;
                 }
                 inverse.process_with_scratch(lines, &mut scratch.fft);
                 // Store the data rows as a row-major tile of `rows x width`.
@@ -398,12 +448,17 @@ impl Convolution {
                 }
             }
             Ok(())
-        })
+        })?;
+        Ok(energies.into_iter().sum())
     }
 
     /// Pass 3: complex-to-real transforms of the filtered rows; their data
-    /// columns are the output.
-    fn inverse_rows(&mut self, output: &mut [f64]) -> Result<()> {
+    /// columns `v` make the output `combine(output, v)`.
+    fn inverse_rows(
+        &mut self,
+        output: &mut [f64],
+        combine: impl Fn(f64, f64) -> f64 + Sync,
+    ) -> Result<()> {
         let (rows, columns, half) = (self.rows, self.columns, self.size.1 / 2 + 1);
         let even = self.size.1.is_multiple_of(2);
         let per_task = self.rows_per_task;
@@ -452,7 +507,9 @@ impl Convolution {
                 }
                 fft.process_with_scratch(spectrum, &mut scratch.real, &mut scratch.fft)
                     .map_err(fft_error)?;
-                row.copy_from_slice(&scratch.real[..columns]);
+                for (out, value) in row.iter_mut().zip(&scratch.real[..columns]) {
+                    *out = combine(*out, *value);
+                }
             }
             Ok(())
         })

@@ -201,7 +201,7 @@ impl BoxInverse {
             }
         };
         self.convolution
-            .apply_loaded(load, output, &self.multiplier)?;
+            .apply_loaded(load, output, &self.multiplier, |_, value| value)?;
         // Local grid rows under the box.
         let local = grid.len();
         let top = usize::try_from(origin.0 - grid.start as isize)

@@ -10,6 +10,8 @@ use super::convolution::{multiplier, wavenumber, Convolution};
 use super::fourier::FourierCompliance;
 use super::influence::InfluenceCoefficients;
 
+mod energy;
+
 /// Applies the compliance of a substrate on a grid: given the cell pressures
 /// `p` (Pa, row-major), the displacements `u` (m) at the cell centres,
 /// `u_i = sum_j K(i - j) p_j`.
@@ -543,20 +545,25 @@ impl ComplianceOperator {
         displacement: &mut [f64],
         spectrum: &[f64],
     ) -> Result<()> {
-        let cells = self.local_cells();
-        for (field, found) in [
+        self.check_lengths(&[
             ("pressure", pressure.len()),
             ("displacement", displacement.len()),
-        ] {
-            if found != cells {
-                return Err(Error::ShapeMismatch {
-                    field,
-                    expected: cells,
-                    found,
-                });
-            }
-        }
+        ])?;
         self.convolution.apply(pressure, displacement, spectrum)
+    }
+
+    /// [`Error::ShapeMismatch`] for the first `(field, length)` that is not
+    /// this rank's cell count.
+    fn check_lengths(&self, fields: &[(&'static str, usize)]) -> Result<()> {
+        let cells = self.local_cells();
+        match fields.iter().find(|(_, found)| *found != cells) {
+            Some(&(field, found)) => Err(Error::ShapeMismatch {
+                field,
+                expected: cells,
+                found,
+            }),
+            None => Ok(()),
+        }
     }
 }
 

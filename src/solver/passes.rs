@@ -168,44 +168,48 @@ pub(super) fn sum_and_dot(working: &[bool], a: &[f64], b: &[f64]) -> (f64, f64) 
     .fold((0.0, 0.0), |(s, d), (x, y)| (s + x, d + y))
 }
 
-/// `[sum a t, sum b t, sum t]` over the working set.
-pub(super) fn two_dots(working: &[bool], a: &[f64], b: &[f64], t: &[f64]) -> [f64; 3] {
-    map_chunks(t.len(), |r| {
-        let cells = working[r.clone()]
+/// `sum a b`.
+pub(super) fn dot(a: &[f64], b: &[f64]) -> f64 {
+    map_chunks(a.len(), |r| {
+        a[r.clone()]
             .iter()
-            .zip(&t[r.clone()])
-            .zip(a[r.clone()].iter().zip(&b[r]));
-        cells.fold([0.0; 3], |[x, y, z], ((w, t), (a, b))| {
-            if *w {
-                [x + a * t, y + b * t, z + t]
-            } else {
-                [x, y, z]
-            }
-        })
+            .zip(&b[r])
+            .map(|(x, y)| x * y)
+            .sum::<f64>()
     })
     .into_iter()
-    .fold([0.0; 3], |[x, y, z], [a, b, c]| [x + a, y + b, z + c])
+    .sum()
 }
 
-/// `direction = z - shift + beta direction` on the working set, 0 elsewhere.
+/// `direction = z - shift + beta direction` on the working set, 0
+/// elsewhere; returns `(sum direction, sum direction gap)` of the new
+/// direction (the gradient's part along it, read in the same pass).
 pub(super) fn update_direction(
     working: &[bool],
     z: &[f64],
+    gap: &[f64],
     shift: f64,
     beta: f64,
     direction: &mut [f64],
-) {
+) -> (f64, f64) {
     let pass = |(k, direction): (usize, &mut [f64])| {
         let cells = k * CHUNK..k * CHUNK + direction.len();
-        for ((t, w), z) in direction
-            .iter_mut()
-            .zip(&working[cells.clone()])
-            .zip(&z[cells])
-        {
+        let inputs = working[cells.clone()]
+            .iter()
+            .zip(&z[cells.clone()])
+            .zip(&gap[cells]);
+        let (mut sum, mut along) = (0.0, 0.0);
+        for (t, ((w, z), g)) in direction.iter_mut().zip(inputs) {
             *t = if *w { z - shift + beta * *t } else { 0.0 };
+            sum += *t;
+            along += *t * g;
         }
+        (sum, along)
     };
-    chunks_mut!(direction).enumerate().for_each(pass);
+    let parts: Vec<(f64, f64)> = chunks_mut!(direction).enumerate().map(pass).collect();
+    parts
+        .into_iter()
+        .fold((0.0, 0.0), |(s, d), (x, y)| (s + x, d + y))
 }
 
 /// What a step did.
@@ -221,13 +225,17 @@ pub(super) struct Step {
     pub(super) contact: usize,
 }
 
-/// The step `p -= step t` on the working set, clamped at zero; `u -= step
-/// K t`; `correction` gets what the clamping added (to apply `K` to);
-/// `previous` the old pressures. Pressures, `previous` and the statistics
-/// only on `cells`, which must hold the working set and every pressure;
-/// `correction` is 0 outside them.
+/// The step `p -= step t` on the working set, clamped at zero;
+/// `previous` gets the old pressures. With `DEFERRED` false, `u -= step K
+/// t` (`response` holds `K t`) and `correction` gets what the clamping
+/// added (to apply `K` to); with `DEFERRED` true, `u` and `response` are
+/// left alone and `correction` gets the whole change of the pressure (the
+/// caller applies `K` to it, or to `t`, once it knows whether the step
+/// clamped). Pressures, `previous` and the statistics only on `cells`,
+/// which must hold the working set and every pressure; `correction` is 0
+/// outside them.
 #[allow(clippy::too_many_arguments)]
-pub(super) fn step(
+pub(super) fn step<const DEFERRED: bool>(
     cells: Range<usize>,
     working: &[bool],
     direction: &[f64],
@@ -240,11 +248,13 @@ pub(super) fn step(
 ) -> Step {
     let (lo, hi) = (cells.start, cells.end);
     for outside in [0..lo, hi..displacement.len()] {
-        axpy(
-            &mut displacement[outside.clone()],
-            -step,
-            &response[outside.clone()],
-        );
+        if !DEFERRED {
+            axpy(
+                &mut displacement[outside.clone()],
+                -step,
+                &response[outside.clone()],
+            );
+        }
         correction[outside].fill(0.0);
     }
     // From here on, indices count from the first cell of `cells`.
@@ -280,9 +290,13 @@ pub(super) fn step(
             let stepped = if *w { old - step * t } else { old };
             let new = stepped.max(0.0);
             *p = new;
-            *u -= step * kt;
-            *corr = new - stepped;
-            s.corrected += usize::from(*corr != 0.0);
+            if DEFERRED {
+                *corr = new - old;
+            } else {
+                *u -= step * kt;
+                *corr = new - stepped;
+            }
+            s.corrected += usize::from(new != stepped);
             s.change += (new - old).abs();
             s.size += new;
             s.contact += usize::from(new > 0.0);

@@ -204,6 +204,8 @@ impl ContactSolver {
             Control::Force(_) => 0.0,
         };
         let mut residual = f64::INFINITY;
+        // Whether the last step's clamping needed a convolution.
+        let mut clamped = false;
         // The cells where the pressure and the search direction may be
         // nonzero (whole rows): the passes that only concern the working
         // set run on its rows.
@@ -365,22 +367,32 @@ impl ContactSolver {
             let cells = direction_cells.map_or(working_cells.clone(), |d| {
                 d.start.min(working_cells.start)..d.end.max(working_cells.end)
             });
-            passes::update_direction(
+            let (t_sum, gap_dot) = passes::update_direction(
                 &ws.working[cells.clone()],
                 &ws.response[cells.clone()],
+                &ws.gap[cells.clone()],
                 z_shift,
                 beta,
                 &mut ws.direction[cells],
             );
             direction_cells = Some(working_cells.clone());
-            self.operator.apply(&ws.direction, &mut ws.response)?;
-            let cells = working_cells.clone();
-            let mut dots = passes::two_dots(
-                &ws.working[cells.clone()],
-                &ws.gap[cells.clone()],
-                &ws.response[cells.clone()],
-                &ws.direction[cells],
-            );
+            // After a step whose clamping needed a convolution, the next
+            // step likely clamps too (rough contacts: most iterations):
+            // its length then comes from the energy `t . K t` (half a
+            // round trip) and its displacement from one convolution of
+            // the whole change of the pressure, instead of `K t` and the
+            // correction's response apart (two). Measured in
+            // BENCHMARKS.md ("Rough contacts beside tamaas").
+            let deferred = clamped;
+            let energy = if deferred {
+                self.operator.energy(&ws.direction)?
+            } else {
+                self.operator.apply(&ws.direction, &mut ws.response)?;
+                // The direction is zero off the working set.
+                let cells = working_cells.clone();
+                passes::dot(&ws.response[cells.clone()], &ws.direction[cells])
+            };
+            let mut dots = [gap_dot, energy, t_sum];
             self.sum_over_ranks(&mut dots);
             let [gap_dot, denominator, t_sum] = dots;
             let numerator = gap_dot - shift * t_sum;
@@ -399,7 +411,12 @@ impl ContactSolver {
             // to date: u -= step K t now, + K (correction) below, the
             // correction being what clamping added to p - step t (`gap`
             // holds it).
-            let mut stats = passes::step(
+            let step_pass = if deferred {
+                passes::step::<true>
+            } else {
+                passes::step::<false>
+            };
+            let mut stats = step_pass(
                 working_cells.clone(),
                 &ws.working,
                 &ws.direction,
@@ -418,23 +435,36 @@ impl ContactSolver {
             // below, in the same pass as the correction's response is added.
             let rescaled = force_control && area * stats.size > 0.0;
             let mut correction_pending = false;
-            if stats.corrected > 0 {
+            let direct = self.operator.direct_sum_is_cheaper(stats.corrected);
+            clamped = stats.corrected > 0 && !direct;
+            if deferred {
+                // `gap` holds the whole change of the pressure.
+                if stats.corrected == 0 {
+                    self.operator
+                        .apply_add(&ws.direction, &mut ws.displacement, -step)?;
+                } else if rescaled {
+                    self.operator.apply(&ws.gap, &mut ws.response)?;
+                    correction_pending = true;
+                } else {
+                    self.operator
+                        .apply_add(&ws.gap, &mut ws.displacement, 1.0)?;
+                }
+            } else if stats.corrected > 0 {
                 match self.operator.influence() {
                     // A few clamped cells: their displacements by direct
                     // summation, cheaper than a convolution.
-                    Some(k) if self.operator.direct_sum_is_cheaper(stats.corrected) => {
+                    Some(k) if direct => {
                         let cells = working_cells.clone();
                         let loads = passes::nonzeros(&ws.gap[cells.clone()], cells.start);
                         k.add_loads(&loads, &mut ws.displacement);
                     }
-                    _ => {
+                    _ if rescaled => {
                         self.operator.apply(&ws.gap, &mut ws.response)?;
-                        if rescaled {
-                            correction_pending = true;
-                        } else {
-                            passes::axpy(&mut ws.displacement, 1.0, &ws.response);
-                        }
+                        correction_pending = true;
                     }
+                    _ => self
+                        .operator
+                        .apply_add(&ws.gap, &mut ws.displacement, 1.0)?,
                 }
             }
             if let Control::Force(w) = control {
