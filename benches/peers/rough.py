@@ -16,13 +16,19 @@ discretisations (this crate's influence coefficients of uniform pressure
 over a cell, tamaas' point spectral kernel 2/(E* q)) meet as the cells
 shrink under the surface's shortest wavelength.
 
+With ``--repeat R`` each code solves each problem R times, alternately
+(this crate, tamaas, this crate, ...), and the table gives the median
+times: this machine's speed wanders by 10 to 20 % over minutes, so a
+single pair of runs can move the ratio by as much.
+
 Usage:
-    python rough.py N [N ...]
+    python rough.py [--repeat R] N [N ...]
     python rough.py --refine N0
 Needs numpy, tamaas and layered_contact in the running Python.
 """
 
 import os
+import statistics
 import sys
 import time
 
@@ -83,15 +89,24 @@ def tamaas(heights):
     return seconds, iterations, fraction
 
 
-def side_by_side(sizes):
-    print(f"load average {os.getloadavg()[0]:.2f}")
+def median_run(runs):
+    """The median time of `runs` (seconds, iterations, fraction), with the
+    iterations and fraction of the first run (every run gives the same)."""
+    return statistics.median(r[0] for r in runs), runs[0][1], runs[0][2]
+
+
+def side_by_side(sizes, repeat=1):
+    print(f"load average {os.getloadavg()[0]:.2f}, median of {repeat} run(s) each")
     print("| N | this crate (s) | iterations | contact | tamaas (s) | iterations | contact "
           "| time ratio |")
     print("|---|---|---|---|---|---|---|---|")
     for n in sizes:
         heights = surface(n)
-        ours = this_crate(heights)
-        theirs = tamaas(heights)
+        ours, theirs = [], []
+        for _ in range(repeat):
+            ours.append(this_crate(heights))
+            theirs.append(tamaas(heights))
+        ours, theirs = median_run(ours), median_run(theirs)
         print(f"| {n} | {ours[0]:.2f} | {ours[1]} | {100 * ours[2]:.2f} % | "
               f"{theirs[0]:.2f} | {theirs[1]} | {100 * theirs[2]:.2f} % | {theirs[0] / ours[0]:.1f} |")
 
@@ -114,4 +129,7 @@ if __name__ == "__main__":
     if args[:1] == ["--refine"]:
         refinement(int(args[1]))
     else:
-        side_by_side([int(a) for a in args] or [256, 512])
+        repeat = 1
+        if args[:1] == ["--repeat"]:
+            repeat, args = int(args[1]), args[2:]
+        side_by_side([int(a) for a in args] or [256, 512], repeat)

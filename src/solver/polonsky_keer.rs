@@ -217,8 +217,9 @@ impl ContactSolver {
         let mut contact_sums: Option<(f64, f64)> = None;
         // u = K p is kept up to date incrementally: one operator application
         // per iteration (K t), plus one only when clamping changed the
-        // pressure off the search direction, and a full refresh every
-        // REFRESH iterations against drift.
+        // pressure off the search direction (after such a step, the energy
+        // t . K t and one application to the change of p instead), and a
+        // full refresh every REFRESH iterations against drift.
         // A given start displacement is kept with its start pressure, to
         // refresh against (allocated only then).
         let start = if given {
