@@ -34,6 +34,7 @@ mod exchange;
 mod multiplier;
 mod tiling;
 
+use energy::{line_energy, Stage};
 use exchange::Split;
 pub(super) use multiplier::multiplier;
 pub(crate) use multiplier::wavenumber;
@@ -76,15 +77,6 @@ pub(super) struct Convolution {
     blocks_per_task: usize,
     /// The split across the ranks of a distributed run, `None` when serial.
     split: Option<Split>,
-}
-
-/// Which part of the column pass runs.
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Stage {
-    /// Forward, multiply, inverse.
-    Filter,
-    /// Forward only, the energy `multiplier |X|^2` summed.
-    Energy,
 }
 
 /// One thread's scratch.
@@ -414,18 +406,11 @@ impl Convolution {
                     let (low, high) = line.split_at_mut(distinct);
                     let high_k = k[1..=n0 - distinct].iter().rev();
                     if stage == Stage::Energy {
-                        // Parseval over the half-spectrum: the columns
-                        // other than 0 and n1/2 stand for their mirror too.
+                        // The columns other than 0 and n1/2 stand for
+                        // their mirror too.
                         let j = own + j0 + w;
-                        let weight = if j == 0 || (even && j == half - 1) {
-                            1.0
-                        } else {
-                            2.0
-                        };
-                        let low_sum: f64 = low.iter().zip(k).map(|(c, k)| k * c.norm_sqr()).sum();
-                        let high_sum: f64 =
-                            high.iter().zip(high_k).map(|(c, k)| k * c.norm_sqr()).sum();
-                        *energy += weight * (low_sum + high_sum);
+                        let single = j == 0 || (even && j == half - 1);
+                        *energy += line_energy(low, high, k, if single { 1.0 } else { 2.0 });
                         continue;
                     }
                     for (c, k) in low.iter_mut().zip(k) {

@@ -16,11 +16,19 @@
 //! from the gaps) the contact is the non-adhesive one of the profile
 //! shifted by their displacement, `f + K t`, solved by the constrained
 //! conjugate gradients for the compressive part `p' = p - t >= 0`; the
-//! gaps of that solution give new tensions. The map contracts at a rate of
-//! about `1 / (2 pi)` set by the law's negative stiffness `2 dgamma /
-//! rho^2` against the compliance over a zone; near a pull-off (a fold of
-//! the equilibrium branch) it slows down, and beyond it the iteration
-//! walks the contact off, as the quasi-static jump does. A round costs the
+//! gaps of that solution give new tensions. The map's rate is the law's
+//! negative stiffness `2 dgamma / rho^2` times the zone's compliance with
+//! the contact held, and it approaches one as the zone narrows against the
+//! contact: plain rounds contract by 0.53, 0.74 and 0.85 at 16, 32 and 64
+//! cells across a pull-off contact (a zone of four cells), the slowest
+//! modes smooth round the edge (a change of one sign all round, largest at
+//! the zone's outer side: the ring's long-range self-compliance). The
+//! Anderson mixing reaches about 0.3 and 0.45 a round at 32 and 64 cells,
+//! the rate of a Krylov method on a spectrum that wide, so the rounds grow
+//! with the grid (19 and 28 a solve; `BENCHMARKS.md`, "Adhesive scene
+//! cycles: error and cost"). Near a pull-off (a fold of the equilibrium
+//! branch) it slows down, and beyond it the iteration walks the contact
+//! off, as the quasi-static jump does. A round costs the
 //! inner solve's iterations and one operator application (the response to
 //! the change of the total pressure, which moves the profile while the
 //! inner solve keeps its displacement; both computed afresh every

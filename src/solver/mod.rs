@@ -70,6 +70,7 @@ mod passes;
 mod polonsky_keer;
 mod preconditioning;
 mod split;
+mod step_response;
 mod workspace;
 
 use ndarray::Array2;

@@ -378,21 +378,9 @@ impl ContactSolver {
             );
             direction_cells = Some(working_cells.clone());
             // After a step whose clamping needed a convolution, the next
-            // step likely clamps too (rough contacts: most iterations):
-            // its length then comes from the energy `t . K t` (half a
-            // round trip) and its displacement from one convolution of
-            // the whole change of the pressure, instead of `K t` and the
-            // correction's response apart (two). Measured in
-            // BENCHMARKS.md ("Rough contacts beside tamaas").
+            // likely clamps too: the energy, not `K t`.
             let deferred = clamped;
-            let energy = if deferred {
-                self.operator.energy(&ws.direction)?
-            } else {
-                self.operator.apply(&ws.direction, &mut ws.response)?;
-                // The direction is zero off the working set.
-                let cells = working_cells.clone();
-                passes::dot(&ws.response[cells.clone()], &ws.direction[cells])
-            };
+            let energy = self.direction_energy(deferred, working_cells.clone())?;
             let mut dots = [gap_dot, energy, t_sum];
             self.sum_over_ranks(&mut dots);
             let [gap_dot, denominator, t_sum] = dots;
@@ -411,7 +399,8 @@ impl ContactSolver {
             // Step along the direction, clamp at zero, and keep u = K p up
             // to date: u -= step K t now, + K (correction) below, the
             // correction being what clamping added to p - step t (`gap`
-            // holds it).
+            // holds it); deferred, u moves below by K of the whole change
+            // of p (`gap` holds that).
             let step_pass = if deferred {
                 passes::step::<true>
             } else {
@@ -429,45 +418,21 @@ impl ContactSolver {
                 &mut ws.previous,
             );
             stats = self.whole_step(stats);
-            let ws = &mut self.workspace;
             // Pressures are now zero off the working set.
             pressure_cells = working_cells.clone();
             // Under force control the pressure is rescaled to the load
             // below, in the same pass as the correction's response is added.
             let rescaled = force_control && area * stats.size > 0.0;
-            let mut correction_pending = false;
             let direct = self.operator.direct_sum_is_cheaper(stats.corrected);
             clamped = stats.corrected > 0 && !direct;
-            if deferred {
-                // `gap` holds the whole change of the pressure.
-                if stats.corrected == 0 {
-                    self.operator
-                        .apply_add(&ws.direction, &mut ws.displacement, -step)?;
-                } else if rescaled {
-                    self.operator.apply(&ws.gap, &mut ws.response)?;
-                    correction_pending = true;
-                } else {
-                    self.operator
-                        .apply_add(&ws.gap, &mut ws.displacement, 1.0)?;
-                }
-            } else if stats.corrected > 0 {
-                match self.operator.influence() {
-                    // A few clamped cells: their displacements by direct
-                    // summation, cheaper than a convolution.
-                    Some(k) if direct => {
-                        let cells = working_cells.clone();
-                        let loads = passes::nonzeros(&ws.gap[cells.clone()], cells.start);
-                        k.add_loads(&loads, &mut ws.displacement);
-                    }
-                    _ if rescaled => {
-                        self.operator.apply(&ws.gap, &mut ws.response)?;
-                        correction_pending = true;
-                    }
-                    _ => self
-                        .operator
-                        .apply_add(&ws.gap, &mut ws.displacement, 1.0)?,
-                }
-            }
+            let correction_pending = self.respond_to_step(
+                deferred,
+                stats.corrected,
+                step,
+                working_cells.clone(),
+                rescaled,
+            )?;
+            let ws = &mut self.workspace;
             if let Control::Force(w) = control {
                 let total = area * stats.size;
                 if rescaled {

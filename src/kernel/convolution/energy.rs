@@ -3,9 +3,37 @@
 //! gradients take their step length from it where the step will clamp
 //! pressures and the whole change of the pressure is convolved anyway.
 
+use num_complex::Complex;
+
 use crate::error::Result;
 
-use super::{Convolution, Stage};
+use super::Convolution;
+
+/// Which part of the column pass runs.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(super) enum Stage {
+    /// Forward, multiply, inverse.
+    Filter,
+    /// Forward only, the energy `multiplier |X|^2` summed.
+    Energy,
+}
+
+/// `weight sum_i k_i |X_i|^2` over one transformed column line, `low` its
+/// row wavenumbers `0..=n0/2` (multipliers `k`), `high` the rest (those of
+/// `n0 - i`, read from `k[1..]` backwards): one column's share of
+/// Parseval's sum, `weight` 2 for a half-spectrum column that stands for
+/// its mirror too.
+pub(super) fn line_energy(
+    low: &[Complex<f64>],
+    high: &[Complex<f64>],
+    k: &[f64],
+    weight: f64,
+) -> f64 {
+    let low_sum: f64 = low.iter().zip(k).map(|(c, k)| k * c.norm_sqr()).sum();
+    let high_k = k[1..=high.len()].iter().rev();
+    let high_sum: f64 = high.iter().zip(high_k).map(|(c, k)| k * c.norm_sqr()).sum();
+    weight * (low_sum + high_sum)
+}
 
 impl Convolution {
     /// `input . IFFT2(multiplier * FFT2(input))` over the data cells, from
