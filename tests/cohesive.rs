@@ -399,16 +399,7 @@ fn the_displacement_is_the_response_to_the_total_pressure() {
         let (solution, next) = solver
             .solve_depth_cohesive(&sphere, depth, &zone, warm.as_ref(), &mut ())
             .unwrap();
-        let pressure = solution.pressure.unwrap();
-        let displacement = solution.displacement.unwrap();
-        let pressure: Vec<f64> = pressure.iter().copied().collect();
-        let mut fresh = vec![0.0; pressure.len()];
-        operator.apply(&pressure, &mut fresh).unwrap();
-        let largest = fresh.iter().fold(0.0f64, |m, u| m.max(u.abs()));
-        let worst = displacement
-            .iter()
-            .zip(&fresh)
-            .fold(0.0f64, |m, (u, v)| m.max((u - v).abs()));
+        let (_, worst, largest) = common::fresh_displacement(&mut operator, &solution);
         assert!(worst <= 1e-10 * largest, "{depth}: {worst} of {largest}");
         // The pull-off contact's force within the staircase's error.
         if depth == jkr.depth(a) {

@@ -10,6 +10,8 @@ use layered_contact::solver::{ContactSolver, Fields, SolverParams};
 use layered_contact::topography::{Amplitude, SelfAffine};
 use layered_contact::{Boundary, Grid, Material, Substrate};
 
+mod common;
+
 /// A seeded self-affine surface on `n x n` cells of a 1 mm square pressed
 /// into a rubber half-space and a film on a rigid base, periodic and
 /// isolated, under depth and force control (about a fifth of the area in
@@ -66,16 +68,8 @@ fn rough_contacts_close_the_gaps_of_their_fresh_displacement() {
                 );
             }
             for solution in solutions {
+                let (fresh, worst, largest) = common::fresh_displacement(&mut operator, &solution);
                 let pressure: Vec<f64> = solution.pressure.unwrap().iter().copied().collect();
-                let displacement: Vec<f64> =
-                    solution.displacement.unwrap().iter().copied().collect();
-                let mut fresh = vec![0.0; pressure.len()];
-                operator.apply(&pressure, &mut fresh).unwrap();
-                let largest = fresh.iter().fold(0.0f64, |m, u| m.max(u.abs()));
-                let worst = displacement
-                    .iter()
-                    .zip(&fresh)
-                    .fold(0.0f64, |m, (u, v)| m.max((u - v).abs()));
                 assert!(
                     worst <= 1e-10 * largest,
                     "{boundary:?}: {worst} of {largest}"

@@ -163,3 +163,29 @@ pub mod rubber_sphere {
         .unwrap()
     }
 }
+
+/// The operator applied afresh to a solution's pressure, and how far the
+/// displacement the solution reports is from it: `(fresh, largest
+/// difference, largest fresh value)`. The solution needs its fields.
+#[allow(dead_code)]
+pub fn fresh_displacement(
+    operator: &mut layered_contact::kernel::ComplianceOperator,
+    solution: &layered_contact::solver::Solution,
+) -> (Vec<f64>, f64, f64) {
+    let pressure: Vec<f64> = solution
+        .pressure
+        .as_ref()
+        .unwrap()
+        .iter()
+        .copied()
+        .collect();
+    let reported = solution.displacement.as_ref().unwrap();
+    let mut fresh = vec![0.0; pressure.len()];
+    operator.apply(&pressure, &mut fresh).unwrap();
+    let largest = fresh.iter().fold(0.0f64, |m, u| m.max(u.abs()));
+    let worst = reported
+        .iter()
+        .zip(&fresh)
+        .fold(0.0f64, |m, (u, v)| m.max((u - v).abs()));
+    (fresh, worst, largest)
+}
