@@ -267,9 +267,9 @@
 //! fixed point has come: 19 rounds and about 80 conjugate-gradient
 //! iterations a solve at 32 cells across a tilted paraboloid's pull-off
 //! contact, 28 and 115 at 64 (the rounds grow with the grid: the zone's
-//! slowest modes, smooth round the edge, contract more slowly as the zone
-//! narrows against the contact; measured in `BENCHMARKS.md`, "Adhesive
-//! scene cycles: error and cost"). Where the mixing makes no progress for 25 rounds
+//! slowest modes, the edge's low angular harmonics, contract more slowly
+//! as the zone spans more cells against the law's; measured in
+//! `BENCHMARKS.md`, "Adhesive scene cycles: error and cost"). Where the mixing makes no progress for 25 rounds
 //! (contact sets flipping) the fixed point takes damped plain steps; a
 //! contact that grows or shrinks six rounds in a row (an edge zipping in or
 //! peeling off cell by cell on a rough surface, the quasi-static jump

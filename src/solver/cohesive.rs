@@ -18,15 +18,16 @@
 //! conjugate gradients for the compressive part `p' = p - t >= 0`; the
 //! gaps of that solution give new tensions. The map's rate is the law's
 //! negative stiffness `2 dgamma / rho^2` times the zone's compliance with
-//! the contact held, and it approaches one as the zone narrows against the
-//! contact: plain rounds contract by 0.53, 0.74 and 0.85 at 16, 32 and 64
-//! cells across a pull-off contact (a zone of four cells), the slowest
-//! modes smooth round the edge (a change of one sign all round, largest at
-//! the zone's outer side: the ring's long-range self-compliance). The
-//! Anderson mixing reaches about 0.3 and 0.45 a round at 32 and 64 cells,
-//! the rate of a Krylov method on a spectrum that wide, so the rounds grow
-//! with the grid (19 and 28 a solve; `BENCHMARKS.md`, "Adhesive scene
-//! cycles: error and cost"). Near a pull-off (a fold of the equilibrium
+//! the contact held: plain rounds contract by 0.53, 0.74 and 0.85 at 16,
+//! 32 and 64 cells across a pull-off contact (a zone of four cells), the
+//! slowest modes the edge's low angular harmonics (a change of one sign all
+//! round, largest at the zone's outer side). A model of the map puts the
+//! rise on the zone's width in cells against the law's (0.52, 0.72, 0.90
+//! for zones of 3, 4, 5 cells, whatever the contact's size): the lattice
+//! traps the zone less on finer grids. The Anderson mixing reaches about
+//! 0.3 and 0.45 a round at 32 and 64 cells, the rate of a Krylov method on
+//! a spectrum that wide (19 and 28 rounds a solve; `BENCHMARKS.md`,
+//! "Adhesive scene cycles: error and cost"). Near a pull-off (a fold of the equilibrium
 //! branch) it slows down, and beyond it the iteration walks the contact
 //! off, as the quasi-static jump does. A round costs the
 //! inner solve's iterations and one operator application (the response to
