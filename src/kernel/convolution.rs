@@ -117,6 +117,12 @@ pub(super) fn zeroed<T: Clone + Default>(len: usize) -> Result<Vec<T>> {
     crate::error::zeroed(len, "an FFT buffer")
 }
 
+/// The loader of a grid's data rows (`columns` values each) for the
+/// forward pass.
+fn data_rows(input: &[f64], columns: usize) -> impl Fn(usize, &mut [f64]) + Sync + '_ {
+    move |i, line| line.copy_from_slice(&input[i * columns..(i + 1) * columns])
+}
+
 /// Buffer sizes are fixed at construction, so an FFT error is a bug of this
 /// module; it is reported rather than unwrapped.
 fn fft_error(error: realfft::FftError) -> Error {
@@ -251,13 +257,20 @@ impl Convolution {
         output: &mut [f64],
         multiplier: &[f64],
     ) -> Result<()> {
-        let columns = self.columns;
-        self.apply_loaded(
-            |i, line| line.copy_from_slice(&input[i * columns..(i + 1) * columns]),
-            output,
-            multiplier,
-            |_, value| value,
-        )
+        self.apply_combined(input, output, multiplier, |_, value| value)
+    }
+
+    /// As [`Convolution::apply`], each output value `v` made
+    /// `combine(output, v)` (an addition needs no buffer for the response).
+    pub(crate) fn apply_combined(
+        &mut self,
+        input: &[f64],
+        output: &mut [f64],
+        multiplier: &[f64],
+        combine: impl Fn(f64, f64) -> f64 + Sync,
+    ) -> Result<()> {
+        let load = data_rows(input, self.columns);
+        self.apply_loaded(load, output, multiplier, combine)
     }
 
     /// The tiles, allocated again if they were released or lent away

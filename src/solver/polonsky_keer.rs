@@ -428,6 +428,7 @@ impl ContactSolver {
             let correction_pending = self.respond_to_step(
                 deferred,
                 stats.corrected,
+                direct,
                 step,
                 working_cells.clone(),
                 rescaled,

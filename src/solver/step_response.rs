@@ -35,7 +35,8 @@ impl ContactSolver {
 
     /// Moves the displacement by the response to the step just taken
     /// (`step` along the direction, `corrected` cells clamped, on the
-    /// working set's rows `cells`): `gap` holds the whole change of the
+    /// working set's rows `cells`; `direct`: their displacements cost less
+    /// summed directly than convolved): `gap` holds the whole change of the
     /// pressure if `deferred` (see [`passes::step`]), else the clamping's
     /// correction, `K t` being in `response` and already subtracted. Under
     /// force control with a rescale to come (`rescaled`) a convolved
@@ -45,6 +46,7 @@ impl ContactSolver {
         &mut self,
         deferred: bool,
         corrected: usize,
+        direct: bool,
         step: f64,
         cells: Range<usize>,
         rescaled: bool,
@@ -59,7 +61,7 @@ impl ContactSolver {
         if corrected == 0 {
             return Ok(false);
         }
-        if !deferred && self.operator.direct_sum_is_cheaper(corrected) {
+        if !deferred && direct {
             // A few clamped cells: their displacements by direct
             // summation, cheaper than a convolution.
             if let Some(k) = self.operator.influence() {

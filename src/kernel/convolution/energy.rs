@@ -7,7 +7,7 @@ use num_complex::Complex;
 
 use crate::error::Result;
 
-use super::Convolution;
+use super::{data_rows, Convolution};
 
 /// Which part of the column pass runs.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -48,8 +48,7 @@ impl Convolution {
     /// cannot be allocated again; an exchange's error when distributed.
     pub(crate) fn forward_energy(&mut self, input: &[f64], multiplier: &[f64]) -> Result<f64> {
         self.ensure_tiles()?;
-        let columns = self.columns;
-        self.forward_rows(|i, line| line.copy_from_slice(&input[i * columns..(i + 1) * columns]))?;
+        self.forward_rows(data_rows(input, self.columns))?;
         self.exchange_to_columns()?;
         self.filter_columns(multiplier, Stage::Energy)
     }

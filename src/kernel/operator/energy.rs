@@ -30,13 +30,8 @@ impl ComplianceOperator {
     /// another length than this rank's cells.
     pub(crate) fn apply_add(&mut self, x: &[f64], output: &mut [f64], factor: f64) -> Result<()> {
         self.check_lengths(&[("pressure", x.len()), ("displacement", output.len())])?;
-        let columns = self.grid.columns();
-        self.convolution.apply_loaded(
-            |i, line| line.copy_from_slice(&x[i * columns..(i + 1) * columns]),
-            output,
-            &self.spectrum,
-            |u, k| u + factor * k,
-        )
+        self.convolution
+            .apply_combined(x, output, &self.spectrum, |u, k| u + factor * k)
     }
 }
 
