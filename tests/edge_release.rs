@@ -1,12 +1,15 @@
 //! The local Griffith criterion (`ContactSolver::edge_release`) against
 //! exact non-axisymmetric stress-intensity factors: a circular punch under
 //! force and moment, the elliptical flat punch at several orientations on
-//! the grid, and the JKR sphere moved off the cell centres. Each converges
-//! at first order in the cell size, whatever the edge's direction.
+//! the grid, the JKR sphere moved off the cell centres, and a contact strip
+//! off the trough of Johnson's sinusoid (unequal edges, periodic). Each
+//! converges at first order in the cell size, whatever the edge's
+//! direction.
 
 use std::f64::consts::PI;
 
-use layered_contact::indenter::{FlatPunch, Indenter, Paraboloid, Tilted};
+use layered_contact::analytic::JkrSinusoid;
+use layered_contact::indenter::{FlatPunch, HeightMap, Indenter, Paraboloid, Tilted};
 use layered_contact::solver::{ContactSolver, EdgeRelease, SolverParams, EDGE_WINDOW};
 use layered_contact::{Boundary, Grid, Substrate};
 use ndarray::Array2;
@@ -264,6 +267,121 @@ fn larger_discs_level_off_and_their_facets_need_wider_windows() {
     assert!(wide.0 < 0.055, "{wide:?}");
     for (_, mean) in [fixed, wide] {
         assert!((-6e-3..-3e-3).contains(&mean), "{mean}");
+    }
+}
+
+/// A contact strip off the trough of a sinusoid, held bonded on `n x n`
+/// periodic cells with the wave vector `wave` (`n` lines of cells per
+/// wavelength), at `depth` (in amplitudes): the mean errors of the release
+/// rates on its lower and upper edges against the exact asymmetric strip
+/// ([`JkrSinusoid::strip_stress_intensity`]), and those exact rates.
+fn asymmetric_strip(n: usize, wave: (usize, usize), depth: f64) -> [(f64, f64); 2] {
+    let delta = 1e-5;
+    let side = n as f64 * delta;
+    let wavelength = side / ((wave.0 * wave.0 + wave.1 * wave.1) as f64).sqrt();
+    let amplitude = 1e-6;
+    let exact = JkrSinusoid::new(&rubber(), wavelength, amplitude, WORK).unwrap();
+    let grid = Grid::square_of_side(n, side).unwrap();
+    // The line of cells (of `n` per wavelength) each cell lies on, from -n/2.
+    let line = |i: usize, j: usize| {
+        let l = ((wave.0 * i + wave.1 * j) % n) as i64;
+        if 2 * l >= n as i64 {
+            l - n as i64
+        } else {
+            l
+        }
+    };
+    let values = (0..grid.len())
+        .map(|c| {
+            let phase = line(c / n, c % n) as f64 / n as f64;
+            amplitude * (1.0 - (2.0 * PI * phase).cos())
+        })
+        .collect();
+    let map = HeightMap::new(grid, values).unwrap();
+    // Lines -n/8 to 3n/16 - 1: the strip 0.3125 of the wavelength wide,
+    // its centre 0.03 of it up one flank; the edges half a line outside.
+    let (first, last) = (-(n as i64) / 8, 3 * n as i64 / 16 - 1);
+    let per_line = wavelength / n as f64;
+    let (lower, upper) = (
+        (first as f64 - 0.5) * per_line,
+        (last as f64 + 0.5) * per_line,
+    );
+    let contact = Array2::from_shape_fn((n, n), |(i, j)| (first..=last).contains(&line(i, j)));
+    let mut s = ContactSolver::new(
+        &Substrate::half_space(rubber()),
+        &grid,
+        Boundary::Periodic,
+        SolverParams::default(),
+    )
+    .unwrap();
+    let edge = s
+        .edge_release(&map, depth * amplitude, &contact, EDGE_WINDOW)
+        .unwrap();
+    let pbar = edge.force / (side * side);
+    let (k_lower, k_upper) = exact.strip_stress_intensity(lower, upper, pbar).unwrap();
+    let mut result = [(0.0, 0.0); 2];
+    for (side, (bound, k)) in [(first, k_lower), (last, k_upper)].into_iter().enumerate() {
+        let g = k * k / (2.0 * estar());
+        let points: Vec<_> = edge
+            .points
+            .iter()
+            .filter(|p| (line(p.cell.0, p.cell.1) - bound).abs() <= 1)
+            .collect();
+        assert!(points.len() >= n / 2, "{} points", points.len());
+        let mean = points
+            .iter()
+            .map(|p| {
+                assert_eq!(p.stress_intensity > 0.0, k > 0.0, "{p:?} {k}");
+                p.release_rate / g - 1.0
+            })
+            .sum::<f64>()
+            / points.len() as f64;
+        result[side] = (mean, g);
+    }
+    result
+}
+
+#[test]
+fn an_asymmetric_strip_releases_as_the_exact_periodic_strip() {
+    // A strip 0.3125 of the wavelength wide, its centre 0.03 of it up one
+    // flank, pulled at depth zero (K = 47 and 69 Pa m^1/2 on
+    // the lower and upper edges at 128 lines a wavelength: the upper edge,
+    // up the flank, releases 2.2 to 2.3 times as much) and at minus half
+    // an amplitude (K = 98 and 121). Measured (BENCHMARKS.md, "Local release rates along an
+    // edge"): at depth zero, mean errors of the lower / upper edge
+    // -2.1 / -1.1, -0.83 / -0.59, -0.40 / -0.28 % at 64, 128, 256 lines
+    // with the crests along the grid (order 1.2 and 1.0); at 45 degrees
+    // -7.0 / +2.3, -0.47 / -0.32, -0.22 / -0.15 %. At minus half an
+    // amplitude: within 0.03 % from 128 lines on at both orientations. The error
+    // is that of K, about -0.1 (pbar + 1540 Pa) / 1000 Pa at 128 lines
+    // along the grid, first order in the cell as for the flat punch.
+    let mut finest = Vec::new();
+    for wave in [(1, 0), (1, 1)] {
+        let errors: Vec<_> = [64, 128, 256]
+            .iter()
+            .map(|&n| asymmetric_strip(n, wave, 0.0))
+            .collect();
+        println!("strip {wave:?} at depth zero: {errors:?}");
+        let [lower, upper] = errors[2];
+        // The edges differ: the test is not the symmetric strip.
+        assert!(upper.1 / lower.1 > 2.0, "{errors:?}");
+        for edge in 0..2 {
+            assert!(errors[2][edge].0.abs() < 5e-3, "{errors:?}");
+            let order = (errors[0][edge].0 / errors[2][edge].0).abs().log2() / 2.0;
+            assert!(order > 0.9, "{wave:?}: order {order}");
+        }
+        finest.push([lower.0, upper.0]);
+        let above = [128, 256].map(|n| asymmetric_strip(n, wave, -0.5));
+        println!("strip {wave:?} at minus half an amplitude: {above:?}");
+        for [lower, upper] in above {
+            assert!(lower.0.abs() < 1e-3 && upper.0.abs() < 1e-3, "{above:?}");
+        }
+    }
+    for edge in 0..2 {
+        assert!(
+            (finest[0][edge] - finest[1][edge]).abs() < 3e-3,
+            "{finest:?}"
+        );
     }
 }
 

@@ -2,7 +2,7 @@
 
 use std::f64::consts::PI;
 
-use crate::error::{non_negative_finite, positive_finite, Error, Result};
+use crate::error::{finite, non_negative_finite, positive_finite, Error, Result};
 use crate::material::Material;
 
 /// Bisection steps for the pull-off's contact width (the bracket shrinks by
@@ -139,8 +139,157 @@ impl JkrSinusoid {
         Ok((self.pressure_at(psi), psi * self.wavelength / PI))
     }
 
+    /// The stress-intensity factors at the two edges of a contact strip
+    /// `lower < x < upper` (one strip per period, `x` measured from a
+    /// trough of the surface, where it is lowest, m) held bonded at the
+    /// mean pressure `mean_pressure` (Pa, negative when the surfaces pull):
+    /// `(K_lower, K_upper)` in Pa m^1/2, positive where the edge pulls (as
+    /// [`EdgePoint::stress_intensity`](crate::solver::EdgePoint::stress_intensity)),
+    /// whatever the work of adhesion; the energy release rate at each edge
+    /// is `K^2 / (2 E*)`. With `psi = pi (upper - lower) / (2 lambda)` and
+    /// `c = (lower + upper) / 2`,
+    ///
+    /// ```text
+    /// K_upper = sqrt(lambda / tan psi) (p* sin psi sin(pi (upper + c) / lambda) - pbar),
+    /// K_lower = sqrt(lambda / tan psi) (-p* sin psi sin(pi (lower + c) / lambda) - pbar).
+    /// ```
+    ///
+    /// A strip off the trough has unequal edges: the one up the flank pulls
+    /// harder (the asymmetric fronts of a sliding or hysteretic wavy
+    /// contact, Carbone & Mangialardi 2004, J. Mech. Phys. Solids 52, 1267).
+    /// Derivation: the map `T = tan(pi (x - c) / lambda)` turns the
+    /// periodic kernel `(pi / lambda) cot(pi (x - t) / lambda)` into the
+    /// Cauchy kernel plus a term in `t` alone, and the surface's slope into
+    /// a rational function with poles at `T = +-i`; the finite Hilbert
+    /// transform inverts in closed form (Muskhelishvili 1953, Singular
+    /// Integral Equations, ch. 11), and the mean pressure fixes the
+    /// remaining constant. The symmetric strip (`c = 0`) is Johnson's
+    /// (1995) `K = (p* sin^2 psi - pbar) sqrt(lambda / tan psi)`;
+    /// `benches/adhesion/asymmetric_strip.py` checks the formula against a
+    /// Gauss-Chebyshev solution of the singular integral equation (Erdogan
+    /// & Gupta 1972, Q. Appl. Math. 29, 525) to `1e-12`.
+    ///
+    /// ```
+    /// use layered_contact::{analytic::JkrSinusoid, Material};
+    ///
+    /// let rubber = Material::new(1e6, 0.48)?;
+    /// let wave = JkrSinusoid::new(&rubber, 1e-3, 1e-5, 0.05)?;
+    /// // A strip 0.25 mm wide moved 0.05 mm up one flank, pulled at -100 Pa.
+    /// let (lower, upper) = wave.strip_stress_intensity(-0.075e-3, 0.175e-3, -100.0)?;
+    /// assert!(upper > lower && lower > 0.0);
+    /// Ok::<(), layered_contact::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for non-finite bounds or mean pressure,
+    /// or a strip whose width is not between zero and the wavelength.
+    pub fn strip_stress_intensity(
+        &self,
+        lower: f64,
+        upper: f64,
+        mean_pressure: f64,
+    ) -> Result<(f64, f64)> {
+        finite("lower", lower)?;
+        finite("upper", upper)?;
+        finite("mean_pressure", mean_pressure)?;
+        let width = upper - lower;
+        if !(width > 0.0 && width < self.wavelength) {
+            return Err(Error::InvalidParameter {
+                name: "upper - lower",
+                value: width,
+                expected: "a strip width between zero and the wavelength (m)",
+            });
+        }
+        let lambda = self.wavelength;
+        let psi = 0.5 * PI * width / lambda;
+        let centre = 0.5 * (lower + upper);
+        let scale = (lambda / psi.tan()).sqrt();
+        let flank = self.full_contact_pressure() * psi.sin();
+        let k_upper = scale * (flank * (PI * (upper + centre) / lambda).sin() - mean_pressure);
+        let k_lower = scale * (-flank * (PI * (lower + centre) / lambda).sin() - mean_pressure);
+        Ok((k_lower, k_upper))
+    }
+
     fn pressure_at(&self, psi: f64) -> f64 {
         self.full_contact_pressure()
             * (psi.sin().powi(2) - self.adhesion_parameter() * psi.tan().sqrt())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn wave(work: f64) -> JkrSinusoid {
+        JkrSinusoid::new(&Material::new(1e6, 0.48).unwrap(), 1.0, 1e-3, work).unwrap()
+    }
+
+    #[test]
+    fn a_symmetric_strip_at_johnsons_pressure_releases_the_work_of_adhesion() {
+        let w = wave(0.05);
+        let estar = w.contact_modulus;
+        for half_width in [0.02, 0.1, 0.3, 0.45] {
+            let pbar = w.mean_pressure(half_width);
+            let (lower, upper) = w
+                .strip_stress_intensity(-half_width, half_width, pbar)
+                .unwrap();
+            for k in [lower, upper] {
+                assert!(k > 0.0);
+                let g = k * k / (2.0 * estar);
+                assert!((g / 0.05 - 1.0).abs() < 1e-12, "{half_width}: {g}");
+            }
+        }
+    }
+
+    #[test]
+    fn gauss_chebyshev_values() {
+        // benches/adhesion/asymmetric_strip.py: lambda = 1 m, g = 1 mm,
+        // E* = 1 MPa (here E = (1 - 0.48^2) MPa), 64 Chebyshev nodes;
+        // (lower, upper, pbar) -> (K_lower, K_upper), Pa m^1/2.
+        let w = JkrSinusoid::new(
+            &Material::new(1e6 * (1.0 - 0.48 * 0.48), 0.48).unwrap(),
+            1.0,
+            1e-3,
+            0.0,
+        )
+        .unwrap();
+        let table = [
+            (
+                (-0.05, 0.15, -300.0),
+                (526.2998369235028, 1527.3662782655576),
+            ),
+            ((-0.2, 0.05, 500.0), (643.5530053199259, -923.4487479374776)),
+            ((0.1, 0.3, 0.0), (-1377.8497510536251, 1703.1159550834548)),
+            ((-0.4, 0.3, 100.0), (1902.103014573391, 1341.4775480854494)),
+        ];
+        for ((lower, upper, pbar), (k_lower, k_upper)) in table {
+            let (a, b) = w.strip_stress_intensity(lower, upper, pbar).unwrap();
+            assert!((a - k_lower).abs() < 1e-9 * k_lower.abs(), "{a} {k_lower}");
+            assert!((b - k_upper).abs() < 1e-9 * k_upper.abs(), "{b} {k_upper}");
+            // One period on, or mirrored about the trough: the same edges.
+            let (c, d) = w
+                .strip_stress_intensity(lower + 1.0, upper + 1.0, pbar)
+                .unwrap();
+            assert!((c - a).abs() < 1e-9 * a.abs() && (d - b).abs() < 1e-9 * b.abs());
+            let (e, f) = w.strip_stress_intensity(-upper, -lower, pbar).unwrap();
+            assert!((e - b).abs() < 1e-9 * b.abs() && (f - a).abs() < 1e-9 * a.abs());
+        }
+    }
+
+    #[test]
+    fn bad_strips_are_refused() {
+        let w = wave(0.05);
+        for (lower, upper, pbar) in [
+            (0.1, 0.1, 0.0),
+            (0.2, 0.1, 0.0),
+            (0.0, 1.0, 0.0),
+            (f64::NAN, 0.1, 0.0),
+            (0.0, 0.1, f64::INFINITY),
+        ] {
+            assert!(matches!(
+                w.strip_stress_intensity(lower, upper, pbar),
+                Err(Error::InvalidParameter { .. })
+            ));
+        }
     }
 }

@@ -131,6 +131,7 @@
 //! | elliptical punch, `b/a = 1/2`, at 0, 30, 45 degrees | onset force | 1.5 to 4.1 % | 0.3 to 1.0 % | 0.2 to 0.8 % |
 //! | circular punch under moment, mean over the edge | `K(theta)` | -4.4 % | -1.05 % | -0.42 % |
 //! | JKR sphere off the cell centres, mean over the edge | JKR `G` | -3.2 % | -1.5 % | -0.8 % |
+//! | strip off the trough of a sinusoid, worst edge of either orientation (20, 40, 80 cells across) | exact asymmetric strip `G` | -7.0 % | -0.83 % | -0.40 % |
 //!
 //! The cohesive zone on compact contacts (default curvature correction;
 //! `N` cells across the pull-off contact; `BENCHMARKS.md`, "Adhesion

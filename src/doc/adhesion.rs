@@ -224,7 +224,14 @@
 //!   theta / a) / (2 a sqrt(pi a))`, tilted along the grid and at 22.5 and
 //!   45 degrees;
 //! * the JKR sphere's contact at its pull-off depth, on the cell centres and
-//!   moved off them by fractions of a cell.
+//!   moved off them by fractions of a cell;
+//! * a contact strip off the trough of Johnson's sinusoid (periodic), whose
+//!   edges are unequal (the asymmetric fronts of Carbone & Mangialardi
+//!   2004, J. Mech. Phys. Solids 52, 1267), against the closed form of
+//!   [`JkrSinusoid::strip_stress_intensity`](crate::analytic::JkrSinusoid::strip_stress_intensity),
+//!   with the crests along the grid and at 45 degrees: -0.40 / -0.28 % and
+//!   -0.22 / -0.15 % on the lower / upper edge at 256 lines of cells a
+//!   wavelength (80 cells across the strip), first order.
 //!
 //! What it does not remove: the digital contact is not the smooth one at
 //! the scale of a cell. On the flat facets of a digital disc (along the grid
