@@ -8,6 +8,9 @@
 //!   the half-space's pull-off contact radius, against the exact layered
 //!   JKR pull-off ([`Axisymmetric`](layered_contact::analytic::Axisymmetric));
 //!   `FILM_RATIO=r` in the environment makes the film `r` times thinner;
+//! * `stack`: the same sphere on a stack, the rubber film of `layer` on a
+//!   layer ten times stiffer and twice as thick on a rigid base, against the
+//!   exact stacked JKR pull-off (the same `Axisymmetric` reference);
 //! * `punch`: Kendall's flat punch (1971), `N` cells across, against the
 //!   punch of the staircase's area;
 //! * `ellipse`: an elliptic paraboloid (radii 10 and 20 mm) on the
@@ -26,7 +29,7 @@ use std::time::Instant;
 use layered_contact::analytic::{Axisymmetric, JkrFlatPunch, JkrSinusoid, JkrSphere};
 use layered_contact::indenter::{FlatPunch, HeightMap, Sphere};
 use layered_contact::solver::{CohesiveZone, ContactSolver, Reach, SolverParams};
-use layered_contact::{Boundary, Grid, Material, Result, Substrate};
+use layered_contact::{Base, Boundary, Grid, Material, Result, Substrate};
 
 const WORK: f64 = 0.05;
 const RADIUS: f64 = 0.01;
@@ -51,11 +54,17 @@ fn main() -> Result<()> {
         };
         let clock = Instant::now();
         match case.as_str() {
-            "sphere" | "layer" => {
+            "sphere" | "layer" | "stack" => {
                 let jkr = JkrSphere::new(&rubber, RADIUS, WORK)?;
                 let a = jkr.pull_off_contact_radius();
                 let (substrate, exact) = if case == "sphere" {
                     (Substrate::half_space(rubber), jkr.pull_off_force())
+                } else if case == "stack" {
+                    let stiffer = Material::new(1e7, 0.3)?;
+                    let stack = Substrate::stack(&[(rubber, a), (stiffer, 2.0 * a)], Base::Rigid)?;
+                    let body = Axisymmetric::up_to_contact_radius(&stack, 4.0 * a)?;
+                    let exact = body.paraboloid(RADIUS, WORK)?.pull_off()?.load_control;
+                    (stack, exact.force)
                 } else {
                     // FILM_RATIO=r makes the film a / r thick (default 1).
                     let ratio: f64 = std::env::var("FILM_RATIO")

@@ -182,7 +182,9 @@ impl JkrSinusoid {
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for non-finite bounds or mean pressure,
-    /// or a strip whose width is not between zero and the wavelength.
+    /// a strip whose width is not between zero and the wavelength, or
+    /// factors that overflow (a strip narrower than about `1e-300` of the
+    /// wavelength, a mean pressure near `f64::MAX`).
     pub fn strip_stress_intensity(
         &self,
         lower: f64,
@@ -207,6 +209,16 @@ impl JkrSinusoid {
         let flank = self.full_contact_pressure() * psi.sin();
         let k_upper = scale * (flank * (PI * (upper + centre) / lambda).sin() - mean_pressure);
         let k_lower = scale * (-flank * (PI * (lower + centre) / lambda).sin() - mean_pressure);
+        if !(k_lower.is_finite() && k_upper.is_finite()) {
+            // A strip so narrow that `tan psi` underflows, or a pressure so
+            // large that `K` overflows.
+            return Err(Error::InvalidParameter {
+                name: "upper - lower",
+                value: width,
+                expected: "a strip whose stress-intensity factors are finite \
+                           (not narrower than about 1e-300 of the wavelength)",
+            });
+        }
         Ok((k_lower, k_upper))
     }
 
@@ -276,6 +288,28 @@ mod tests {
         }
     }
 
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig {
+            cases: 2000,
+            rng_seed: proptest::test_runner::RngSeed::Fixed(20261127),
+            ..proptest::prelude::ProptestConfig::default()
+        })]
+        /// Any bounds and pressure: finite factors or a typed error.
+        #[test]
+        fn never_a_nan(lower in proptest::num::f64::ANY, width in proptest::num::f64::ANY,
+                       pbar in proptest::num::f64::ANY, lambda in 1e-9f64..1e3) {
+            let w = JkrSinusoid::new(&Material::new(1e6, 0.48).unwrap(), lambda, 1e-6, 0.05)
+                .unwrap();
+            match w.strip_stress_intensity(lower, lower + width, pbar) {
+                Ok((a, b)) => proptest::prop_assert!(a.is_finite() && b.is_finite()),
+                Err(e) => {
+                    let typed = matches!(e, Error::InvalidParameter { .. });
+                    proptest::prop_assert!(typed, "{e}");
+                }
+            }
+        }
+    }
+
     #[test]
     fn bad_strips_are_refused() {
         let w = wave(0.05);
@@ -285,6 +319,8 @@ mod tests {
             (0.0, 1.0, 0.0),
             (f64::NAN, 0.1, 0.0),
             (0.0, 0.1, f64::INFINITY),
+            (0.0, 1e-320, 0.0),
+            (0.0, 0.1, 1e308),
         ] {
             assert!(matches!(
                 w.strip_stress_intensity(lower, upper, pbar),
