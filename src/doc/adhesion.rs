@@ -176,7 +176,16 @@
 //! below the advancing one (Griffith's criterion point by point, as in
 //! Carbone & Mangialardi 2004, J. Mech. Phys. Solids 52, 1267, for
 //! asymmetric fronts). The detachment onset of a bonded punch of any shape
-//! is where the largest `G` reaches the work of adhesion.
+//! is where the largest `G` reaches the work of adhesion. It is the
+//! punch's pull-off only where the detachment is unstable from the start
+//! (Kendall's disc, a smooth edge): a square or rectangular punch starts
+//! to detach at its corners, where the pressure is more singular than
+//! along the sides, so that its onset falls by 10 to 13 % with each
+//! halving of the cell (no grid limit but zero), while the contacts peeled
+//! from the corners hold 36 to 43 % more at 128 cells across, converging
+//! with the grid but depending on how finely the path is peeled
+//! (`examples/punch_peel.rs`, `BENCHMARKS.md`, "Local release rates along
+//! an edge"). Following that path is not in the crate yet.
 //!
 //! Fitting `K` to the few pressures next to a staircase edge does not
 //! converge: the pressure of a single edge cell depends, at order one, on
