@@ -15,27 +15,37 @@
 //! peeled contacts hold more.
 //!
 //! ```text
-//! cargo run --release --example punch_peel -- [disc|square|rectangle] N [fraction]
+//! cargo run --release --example punch_peel -- [disc|square|rectangle] N [fraction [degrees]]
 //! ```
+//!
+//! The face turned by `degrees` on the grid. A fraction of 0 runs
+//! [`ContactSolver::peel_punch`] (its [`PEEL_FRACTION`]) and the energy
+//! balance ([`ContactSolver::adhesive_branches`]) instead, and prints their
+//! pull-offs.
 //!
 //! Prints one line per contact: step, cells, `F_crit` (N), the depth at
 //! which it detaches (m), and where its release rate is largest (m from the
 //! axis).
 
 use layered_contact::indenter::Indenter;
-use layered_contact::solver::{ContactSolver, SolverParams, EDGE_WINDOW};
+#[cfg(doc)]
+use layered_contact::solver::PEEL_FRACTION;
+use layered_contact::solver::{ContactSolver, Reach, SolverParams, EDGE_WINDOW};
 use layered_contact::{Boundary, Grid, Material, Result, Substrate};
 use ndarray::Array2;
 
 /// A flat face: a disc of radius `half` (`ratio` 0) or a rectangle of
-/// half-sides `half` and `ratio * half`.
+/// half-sides `half` and `ratio * half`, turned by `angle`.
 struct Face {
     half: f64,
     ratio: f64,
+    angle: f64,
 }
 
 impl Indenter for Face {
     fn height(&self, x: f64, y: f64) -> f64 {
+        let (s, c) = self.angle.sin_cos();
+        let (x, y) = (c * x + s * y, -s * x + c * y);
         let inside = if self.ratio == 0.0 {
             x.hypot(y) <= self.half
         } else {
@@ -62,11 +72,16 @@ fn main() -> Result<()> {
     };
     let cells: usize = args.get(1).and_then(|a| a.parse().ok()).unwrap_or(32);
     let fraction: f64 = args.get(2).and_then(|a| a.parse().ok()).unwrap_or(0.9);
+    let degrees: f64 = args.get(3).and_then(|a| a.parse().ok()).unwrap_or(0.0);
     let rubber = Material::new(1e6, 0.48)?;
     let work = 0.05;
     let delta = 1e-4;
     let half = 0.5 * cells as f64 * delta;
-    let face = Face { half, ratio };
+    let face = Face {
+        half,
+        ratio,
+        angle: degrees.to_radians(),
+    };
     // Even, so that the face lies symmetrically on the cells.
     let n = 2 * (face.bounding_radius() / delta).ceil() as usize + 8;
     let grid = Grid::square_of_side(n, n as f64 * delta)?;
@@ -80,6 +95,27 @@ fn main() -> Result<()> {
         let (x, y) = grid.cell_centre(i, j);
         face.height(x, y) == 0.0
     });
+    let per = 1e6 / (cells as f64).powf(1.5);
+    if fraction == 0.0 {
+        // The library's path (`ContactSolver::peel_punch`, PEEL_FRACTION)
+        // and the energy balance's pull-off beside it.
+        let path = solver.peel_punch(&face, work)?;
+        let peeled = path.pull_off();
+        let branches = solver.adhesive_branches(&face, Reach::Depth(1e-6), work, work, &mut ())?;
+        let balance = branches.pull_off(f64::INFINITY)?;
+        println!(
+            "peel_punch {:.6e} N ({:.1} uN / N^1.5, {} steps, {} iterations, onset {:.1}); \
+             energy balance {:.6e} N ({:.1})",
+            peeled.force,
+            -peeled.force * per,
+            path.points().len(),
+            path.iterations(),
+            -path.points()[0].force * per,
+            balance.force,
+            -balance.force * per
+        );
+        return Ok(());
+    }
     let depth = -1e-6;
     println!("step,cells,f_crit_n,d_crit_m,x_m,y_m");
     for step in 0..n * n {

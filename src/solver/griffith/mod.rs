@@ -16,11 +16,13 @@ use super::{check_finite, ContactSolver, IterationInfo, Observer};
 mod branches;
 mod discs;
 mod material;
+mod peel;
 mod periodic;
 mod release;
 
 use branches::Raw;
 pub use branches::{AdhesiveBranches, BranchPoint};
+pub use peel::{PeelPoint, PeelingPath, PEEL_FRACTION};
 use periodic::{connected, half_period_error};
 pub use release::{EdgePoint, EdgeRelease, EDGE_WINDOW};
 
