@@ -1,5 +1,6 @@
-//! Bindings of the local Griffith criterion (`ContactSolver.edge_release`)
-//! and of the adhesive sinusoid's exact pull-off.
+//! Bindings of the local Griffith criterion (`ContactSolver.edge_release`,
+//! `ContactSolver.peel_punch`) and of the adhesive sinusoid's exact
+//! pull-off.
 
 use numpy::{PyArray1, PyReadonlyArray2};
 use pyo3::prelude::*;
@@ -54,6 +55,49 @@ pub(crate) fn edge_release<'py>(
     )?;
     d.set_item("force", edge.force)?;
     d.set_item("depth", edge.depth)?;
+    Ok(d)
+}
+
+/// The pull-off of a flat punch bonded over its whole face along its
+/// peeling path (`ContactSolver::peel_punch`): a dict of arrays over the
+/// path's contacts (`depth` m, `force` N, each the critical one of that
+/// contact; `contact_cells`; `contact_area` m^2; `peels_x`, `peels_y` m,
+/// where it peels next) and `pull_off_force`, `pull_off_depth`,
+/// `jump_off_depth`, `jump_off_force`, `detaches_at_onset`, `iterations`.
+#[pyfunction]
+pub(crate) fn peel_punch<'py>(
+    py: Python<'py>,
+    mut solver: PyRefMut<'_, ContactSolver>,
+    indenter: &Indenter,
+    work_of_adhesion: f64,
+) -> PyResult<Bound<'py, PyDict>> {
+    let shape = Shared(indenter.inner.clone());
+    let inner = &mut solver.inner;
+    let path = py
+        .detach(|| inner.peel_punch(&shape, work_of_adhesion))
+        .py_err()?;
+    let points = path.points();
+    let column =
+        |f: &dyn Fn(&lc::solver::PeelPoint) -> f64| -> Vec<f64> { points.iter().map(f).collect() };
+    let d = PyDict::new(py);
+    d.set_item("depth", PyArray1::from_vec(py, column(&|p| p.depth)))?;
+    d.set_item("force", PyArray1::from_vec(py, column(&|p| p.force)))?;
+    d.set_item(
+        "contact_cells",
+        PyArray1::from_vec(py, points.iter().map(|p| p.contact_cells).collect()),
+    )?;
+    d.set_item(
+        "contact_area",
+        PyArray1::from_vec(py, column(&|p| p.contact_area)),
+    )?;
+    d.set_item("peels_x", PyArray1::from_vec(py, column(&|p| p.peels_at.0)))?;
+    d.set_item("peels_y", PyArray1::from_vec(py, column(&|p| p.peels_at.1)))?;
+    d.set_item("pull_off_force", path.pull_off().force)?;
+    d.set_item("pull_off_depth", path.pull_off().depth)?;
+    d.set_item("jump_off_depth", path.jump_off().depth)?;
+    d.set_item("jump_off_force", path.jump_off().force)?;
+    d.set_item("detaches_at_onset", path.detaches_at_onset())?;
+    d.set_item("iterations", path.iterations())?;
     Ok(d)
 }
 

@@ -141,6 +141,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(analytic::jkr_pull_off_force, m)?)?;
     m.add_function(wrap_pyfunction!(adhesion::jkr_sinusoid_pull_off, m)?)?;
     m.add_function(wrap_pyfunction!(adhesion::edge_release, m)?)?;
+    m.add_function(wrap_pyfunction!(adhesion::peel_punch, m)?)?;
     m.add_function(wrap_pyfunction!(analytic::flat_punch_stiffness, m)?)?;
     m.add_function(wrap_pyfunction!(analytic::paraboloid_pull_off_force, m)?)?;
     m.add_function(wrap_pyfunction!(analytic::paraboloid_state, m)?)?;

@@ -91,3 +91,30 @@ def test_cohesive_zone_refuses_bad_laws():
         solver.solve_depth_cohesive(sphere, 1e-6, 0.05, zone_cells=1.0)
     with pytest.raises(lc.InvalidInputError):
         solver.cohesive_pull_off(sphere, 1e-6, 0.0, 0.05)
+
+
+def test_peel_punch_disc_at_kendall_and_square_later():
+    # Kendall's disc comes off at its onset; a square height map (64 cells
+    # across on 80^2 cells) after its corners start to detach, at 473.3 uN
+    # over 64^1.5 (the Rust test tests/peel_punch.rs and BENCHMARKS.md).
+    spacing, work = 1e-4, 0.05
+    solver = lc.ContactSolver(lc.Substrate.half_space(RUBBER), 48, 48, spacing)
+    disc = lc.peel_punch(solver, lc.Indenter.flat_punch(16 * spacing), work)
+    assert disc["detaches_at_onset"]
+    radius = math.sqrt(disc["contact_area"][0] / math.pi) - 0.117 * spacing
+    kendall = -math.sqrt(8 * math.pi * ESTAR * work * radius**3)
+    assert disc["pull_off_force"] == pytest.approx(kendall, rel=0.02)
+    assert disc["force"][0] == disc["pull_off_force"]
+    assert np.all(np.diff(disc["contact_cells"].astype(np.int64)) < 0)
+    n, side = 80, 64
+    heights = np.full((n, n), np.inf)
+    lo = (n - side) // 2
+    heights[lo:lo + side, lo:lo + side] = 0.0
+    square = lc.Indenter.height_map(heights, spacing)
+    solver = lc.ContactSolver(lc.Substrate.half_space(RUBBER), n, n, spacing)
+    path = lc.peel_punch(solver, square, work)
+    assert not path["detaches_at_onset"]
+    assert -path["pull_off_force"] / side**1.5 * 1e6 == pytest.approx(473.3, rel=3e-3)
+    assert path["pull_off_force"] < 1.1 * path["force"][0]
+    with pytest.raises(lc.InvalidInputError):
+        lc.peel_punch(solver, lc.Indenter.sphere(1e-2), work)

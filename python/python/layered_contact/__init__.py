@@ -42,6 +42,7 @@ from ._native import (
 )
 from ._native import check_scene as _check_scene
 from ._native import edge_release as _edge_release
+from ._native import peel_punch as _peel_punch
 from ._native import run_scene as _run_scene
 from ._native import scene_reference as _scene_reference
 from ._native import scene_schema as _scene_schema
@@ -64,6 +65,7 @@ __all__ = [
     "curve_table",
     "curve_to_dict",
     "edge_release",
+    "peel_punch",
     "plot_curve",
     "plot_field",
     "plot_section",
@@ -105,6 +107,24 @@ def edge_release(
 
     mask = np.ascontiguousarray(np.asarray(contact, dtype=bool))
     return _edge_release(solver, indenter, depth, mask, window)
+
+
+def peel_punch(solver: ContactSolver, indenter: Indenter, work_of_adhesion: float) -> dict:
+    """The pull-off of a flat punch bonded over its whole face (``indenter``'s
+    cells at its lowest height, every cell beside it out of its reach), by
+    the local Griffith criterion along its peeling path: each contact's
+    critical force from its largest release rate, then the edge cells near
+    that rate peeled, to the last few cells.
+
+    Returns a dict of arrays over the path's contacts: ``depth`` (m) and
+    ``force`` (N) at which each comes off, ``contact_cells``,
+    ``contact_area`` (m^2), ``peels_x``, ``peels_y`` (m, where it peels
+    next); and ``pull_off_force``, ``pull_off_depth`` (the most tensile
+    force along the path: the pull-off under force control),
+    ``jump_off_depth``, ``jump_off_force`` (under fixed grips),
+    ``detaches_at_onset`` (a disc: True; a punch with corners comes off
+    later) and ``iterations``."""
+    return _peel_punch(solver, indenter, work_of_adhesion)
 
 
 def run_scene(

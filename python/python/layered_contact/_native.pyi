@@ -33,6 +33,7 @@ __all__ = [
     "paraboloid_pull_off_force",
     "paraboloid_series",
     "paraboloid_state",
+    "peel_punch",
     "refine_heights",
     "rough_surface_heights",
     "run_scene",
@@ -233,6 +234,7 @@ def edge_release(
     contact: npt.NDArray[np.bool_],
     window: float = ...,
 ) -> dict: ...
+def peel_punch(solver: ContactSolver, indenter: Indenter, work_of_adhesion: float) -> dict: ...
 def flat_punch_stiffness(substrate: Substrate, radius: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]: ...
 def paraboloid_pull_off_force(substrate: Substrate, radius: float, work_of_adhesion: float) -> float: ...
 def paraboloid_state(
