@@ -430,6 +430,11 @@
 //! - the energy balance also for any flat punch (pinned at its rim, which the
 //!   zone does not represent; a tilted or non-round punch carries
 //!   [`Caveat::EdgeAveragedAdhesion`](crate::scene::Caveat::EdgeAveragedAdhesion));
+//!   a punch given as a height map or a custom indenter takes the cohesive
+//!   zone, whose pull-off then refuses the pinned rim and names
+//!   [`ContactSolver::peel_punch`](crate::solver::ContactSolver::peel_punch),
+//!   the local criterion's pull-off of a face bonded whole, which scenes do
+//!   not run yet;
 //! - the cohesive zone for every other scene: tilted spheres and cones,
 //!   height maps, rough surfaces, custom indenters, periodic grids. Its
 //!   cycle records the protocol's unloading steps and, where the force
