@@ -58,8 +58,8 @@ pub(crate) fn edge_release<'py>(
     Ok(d)
 }
 
-/// The pull-off of a flat punch bonded over its whole face along its
-/// peeling path (`ContactSolver::peel_punch`): a dict of arrays over the
+/// The pull-off of a flat punch (tilted or not) bonded over its whole face
+/// along its peeling path (`ContactSolver::peel_punch`): a dict of arrays over the
 /// path's contacts (`depth` m, `force` N, each the critical one of that
 /// contact; `contact_cells`; `contact_area` m^2; `peels_x`, `peels_y` m,
 /// where it peels next) and `pull_off_force`, `pull_off_depth`,

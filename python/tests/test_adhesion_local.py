@@ -116,5 +116,19 @@ def test_peel_punch_disc_at_kendall_and_square_later():
     assert not path["detaches_at_onset"]
     assert -path["pull_off_force"] / side**1.5 * 1e6 == pytest.approx(473.3, rel=3e-3)
     assert path["pull_off_force"] < 1.1 * path["force"][0]
-    with pytest.raises(lc.InvalidInputError):
+    # A sphere has no rim inside the grid.
+    with pytest.raises(lc.LayeredContactError, match="without a rim"):
         lc.peel_punch(solver, lc.Indenter.sphere(1e-2), work)
+    # Tilted: a tenth of Kendall's critical depth across the radius; the
+    # onset within the staircase's 2 % of the exact force-and-moment one
+    # (tests/peel_punch.rs), the pull-off beyond it.
+    a = 16 * spacing
+    critical = math.sqrt(2 * math.pi * a * work / ESTAR)
+    tilt = 0.1 * critical / a
+    solver = lc.ContactSolver(lc.Substrate.half_space(RUBBER), 48, 48, spacing)
+    tilted = lc.peel_punch(solver, lc.Indenter.flat_punch(a).tilted(0.0, tilt), work)
+    radius = math.sqrt(tilted["contact_area"][0] / math.pi) - 0.117 * spacing
+    critical = math.sqrt(2 * math.pi * radius * work / ESTAR)
+    onset = 2 * ESTAR * radius * (2 * radius * tilt - critical)
+    assert tilted["force"][0] == pytest.approx(onset, rel=0.02)
+    assert tilted["pull_off_force"] <= tilted["force"][0]

@@ -188,11 +188,14 @@
 //! an edge").
 //!
 //! [`ContactSolver::peel_punch`](crate::solver::ContactSolver::peel_punch)
-//! follows that path for a flat punch of any face bonded over the whole
-//! face: each contact's critical force `F sqrt(dgamma / G_max)` (`G` grows
-//! like the force squared, so one clamped solve at any pull gives it), then
-//! the edge cells within [`PEEL_FRACTION`](crate::solver::PEEL_FRACTION)
-//! `= 0.95` of the largest rate peel, to the last few cells; under force
+//! follows that path for a flat punch of any face, tilted or not, bonded
+//! over the whole face: for each contact the two clamped solves of the
+//! energy balance (a unit depth and the face's heights) give every edge
+//! cell's release rate as a quadratic in the depth; the contact's critical
+//! depth is where the first edge cell, pulled, releases the work of
+//! adhesion (for an untilted face `F sqrt(dgamma / G_max)`), then the edge
+//! cells releasing at least [`PEEL_FRACTION`](crate::solver::PEEL_FRACTION)
+//! `= 0.95` of it peel, to the last few cells; under force
 //! control the punch comes off at the most tensile critical force along
 //! the path, under fixed grips at the most tensile critical depth. This is
 //! the quasi-static growth of a planar crack by Griffith's criterion point
@@ -209,8 +212,15 @@
 //! 513 (7 to 9 % too strong: [`Caveat::EdgeAveragedAdhesion`](crate::scene::Caveat::EdgeAveragedAdhesion)).
 //! Peeling more finely moves it little (0.98: 471.1 against 473.3 at 64
 //! cells; 0.8: 455.4); the path costs one clamped solve a step (68 steps,
-//! 581 CG iterations at 64 cells). Tilted punches, whose face is not
-//! bonded whole, and faces with a sloping shoulder are refused.
+//! 581 CG iterations at 64 cells). A disc tilted by a tenth or a quarter of
+//! Kendall's critical depth across its radius starts to detach at the
+//! exact onset of a punch under force and moment (`K(theta)` above) within
+//! 1.1 % at 64 cells across, along the grid and towards 30 degrees, then
+//! peels stably from its high side and comes off 1 to 2 % and 12 % beyond
+//! the onset, the two directions within 0.7 % of each other. The path
+//! assumes the face bonded whole when the pull starts (pressed into full
+//! contact); an indenter without a rim inside the grid (a sphere, a cone, a
+//! face with a sloping shoulder) is refused.
 //!
 //! Fitting `K` to the few pressures next to a staircase edge does not
 //! converge: the pressure of a single edge cell depends, at order one, on

@@ -110,11 +110,11 @@ def edge_release(
 
 
 def peel_punch(solver: ContactSolver, indenter: Indenter, work_of_adhesion: float) -> dict:
-    """The pull-off of a flat punch bonded over its whole face (``indenter``'s
-    cells at its lowest height, every cell beside it out of its reach), by
-    the local Griffith criterion along its peeling path: each contact's
-    critical force from its largest release rate, then the edge cells near
-    that rate peeled, to the last few cells.
+    """The pull-off of a flat punch, tilted or not, bonded over its whole face
+    (the cells ``indenter`` reaches, ending at a rim inside the grid), by the
+    local Griffith criterion along its peeling path: each contact's critical
+    depth and force, where its first edge cell releases the work of
+    adhesion, then the edge cells near it peeled, to the last few cells.
 
     Returns a dict of arrays over the path's contacts: ``depth`` (m) and
     ``force`` (N) at which each comes off, ``contact_cells``,

@@ -283,4 +283,20 @@ impl EdgeRate {
     pub(super) fn edge_pressure(&self, depth: f64) -> f64 {
         depth * self.pressure[0] - self.pressure[1]
     }
+
+    /// The depth at which this edge, pulled (the depth falling), releases
+    /// `work` J/m^2: the lower root of `G(d) = work`, if the edge pulls
+    /// there. `None` where the rate never reaches it.
+    pub(super) fn critical_depth(&self, work: f64) -> Option<f64> {
+        let [a, b, c] = self.quadratic;
+        if a <= 0.0 {
+            return None;
+        }
+        let discriminant = b * b - 4.0 * a * (c - work);
+        if discriminant < 0.0 {
+            return None;
+        }
+        let depth = (b - discriminant.sqrt()) / (2.0 * a);
+        (depth.is_finite() && self.edge_pressure(depth) < 0.0).then_some(depth)
+    }
 }

@@ -1,14 +1,13 @@
-//! The pull-off of a bonded flat punch of any face by the local Griffith
-//! criterion: its contact peeled along the edge cells of largest release
-//! rate, each contact's critical force from
-//! [`ContactSolver::edge_release`].
-
-use ndarray::Array2;
+//! The pull-off of a bonded flat punch of any face, tilted or not, by the
+//! local Griffith criterion: its contact peeled along the edge cells that
+//! reach the work of adhesion first, each contact's critical depth and
+//! force from the release rates of [`ContactSolver::edge_release`].
 
 use crate::error::{Error, Result};
 use crate::indenter::Indenter;
 
 use super::super::ContactSolver;
+use super::material::{ClampedPair, EdgeForces};
 use super::EDGE_WINDOW;
 
 /// Edge cells whose release rate is at least this fraction of the largest
@@ -19,11 +18,9 @@ use super::EDGE_WINDOW;
 /// with 0.8, 0.9, 0.95, 0.98, 0.99 (94 steps at 0.98 against 45 at 0.95).
 pub const PEEL_FRACTION: f64 = 0.95;
 
-/// Fewest face cells a punch's face may have.
+/// Fewest face cells a punch's face may have; below as many cells a path
+/// may end where no edge cell is left to reach the work of adhesion.
 const MIN_FACE_CELLS: usize = 16;
-
-/// Heights within this many cell sizes of the lowest belong to the face.
-const FACE_FLATNESS: f64 = 1e-9;
 
 /// One bonded contact along a punch's peeling path, at the force where its
 /// largest release rate equals the work of adhesion.
@@ -96,18 +93,22 @@ impl PeelingPath {
 
 impl ContactSolver {
     /// The peeling path of a flat punch bonded over its whole face (the
-    /// cells at the indenter's lowest height, within `1e-9` of a cell;
-    /// every cell beside it out of the indenter's reach, so that the contact
-    /// is pinned at the rim): the largest release rate of each contact
-    /// ([`edge_release`](Self::edge_release)) gives the force and depth at
-    /// which it reaches the (receding) `work_of_adhesion`, J/m^2; the edge
-    /// cells within [`PEEL_FRACTION`] of it then peel, until fewer than four
-    /// cells are left. Under force control the punch comes off at the most
-    /// tensile of those forces ([`PeelingPath::pull_off`]): at once for a
-    /// disc (Kendall 1971, J. Phys. D 4, 1186), later for a face with
-    /// corners, where it starts to detach at a force that falls with the
-    /// cell (`doc::adhesion`, "The local criterion"). One clamped solve a
-    /// step.
+    /// cells the indenter reaches, inside the grid: its face ends at a rim,
+    /// so that the contact is pinned there; the face may be tilted). For
+    /// each contact the two clamped solves of the energy balance (a unit
+    /// depth and the face's heights) give every edge cell's release rate as
+    /// a quadratic in the depth ([`edge_release`](Self::edge_release)'s
+    /// rates); the contact holds until the first edge cell, pulled, releases
+    /// the (receding) `work_of_adhesion`, J/m^2: that depth and its force
+    /// are the contact's critical ones. The edge cells then releasing at
+    /// least [`PEEL_FRACTION`] of it peel, until fewer than four cells are
+    /// left. Under force control the punch comes off at the most tensile of
+    /// those forces ([`PeelingPath::pull_off`]): at once for a disc
+    /// (Kendall 1971, J. Phys. D 4, 1186), later for a face with corners,
+    /// where it starts to detach at a force that falls with the cell
+    /// (`doc::adhesion`, "The local criterion"). The path assumes the face
+    /// bonded whole when the pull starts (a punch pressed into full
+    /// contact). Two clamped solves a step.
     ///
     /// ```
     /// use layered_contact::indenter::FlatPunch;
@@ -131,114 +132,133 @@ impl ContactSolver {
     /// # Errors
     /// [`Error::InvalidParameter`] for a work of adhesion that is not
     /// positive and finite, or a face of fewer than 16 cells;
-    /// [`Error::Unsupported`] for a face with cells beside it that the
-    /// indenter reaches (not a punch's rim) or a contact whose edge
-    /// releases no energy; [`Error::ContactReachesEdge`] for a face on the
-    /// grid's outer ring; as [`edge_release`](Self::edge_release)
-    /// otherwise.
+    /// [`Error::Unsupported`] for an indenter that reaches the grid's outer
+    /// ring or every cell of a periodic grid (no rim: a sphere, a cone, a
+    /// face with a sloping shoulder) or a contact whose edge never releases
+    /// the work of adhesion; [`Error::NoConvergence`] from the clamped
+    /// solves.
     pub fn peel_punch<I: Indenter + ?Sized>(
         &mut self,
         indenter: &I,
         work_of_adhesion: f64,
     ) -> Result<PeelingPath> {
+        self.serial_only("peel punch")?;
         let work = crate::error::positive_finite("work_of_adhesion", work_of_adhesion)?;
         let lowest = self.sample_profile(indenter)?;
         let grid = *self.grid();
         let (rows, columns) = (grid.rows(), grid.columns());
-        let spacing = grid.spacing();
-        let profile = &self.workspace.profile;
-        let level = lowest + FACE_FLATNESS * spacing;
-        let mut contact =
-            Array2::from_shape_fn((rows, columns), |(i, j)| profile[i * columns + j] <= level);
-        let face = contact.iter().filter(|c| **c).count();
+        let (spacing, area) = (grid.spacing(), grid.cell_area());
+        let periodic = self.operator.boundary() == crate::grid::Boundary::Periodic;
+        let n = grid.len();
+        let mut attached: Vec<bool> = self
+            .workspace
+            .profile
+            .iter()
+            .map(|h| h.is_finite())
+            .collect();
+        let face = attached.iter().filter(|a| **a).count();
         if face < MIN_FACE_CELLS {
             return Err(Error::InvalidParameter {
                 name: "punch face cells",
                 value: face as f64,
-                expected: "at least 16 cells at the indenter's lowest height (a flat face)",
+                expected: "at least 16 cells that the indenter reaches (its face)",
             });
         }
-        let periodic = self.operator.boundary() == crate::grid::Boundary::Periodic;
-        for ((i, j), &on_face) in contact.indexed_iter() {
-            if on_face {
-                continue;
-            }
-            let beside = neighbours(i, j, rows, columns, periodic).any(|(k, l)| contact[[k, l]]);
-            if beside && profile[i * columns + j].is_finite() {
-                return Err(Error::Unsupported {
-                    feature: "peeling a punch whose face has cells beside it that the indenter \
-                              reaches",
-                    reason: "the path assumes a contact pinned at a rim; a face that meets a \
-                             rounded or sloping shoulder can grow beyond it (use the cohesive \
-                             zone)",
-                });
-            }
+        let rimless = if periodic {
+            face == n
+        } else {
+            (0..n).any(|c| attached[c] && super::super::on_outer_ring(c, rows, columns))
+        };
+        if rimless {
+            return Err(Error::Unsupported {
+                feature: "peeling an indenter without a rim inside the grid",
+                reason: "the path starts from a punch's face bonded whole, pinned at a rim; \
+                         this indenter reaches the grid's outer ring (a sphere, a cone, a face \
+                         with a sloping shoulder, or a face wider than the grid)",
+            });
         }
-        // Any pull: the rates scale with its square, the forces with it.
-        let depth = lowest - spacing * 1e-3;
+        let mut punch = vec![0.0; n];
+        let mut shape = vec![0.0; n];
+        let mut target = vec![0.0; n];
+        let mut punch_displacement = super::super::cell_vector(n)?;
+        let mut shape_displacement = super::super::cell_vector(n)?;
         let mut points = Vec::new();
         let mut iterations = 0usize;
-        // Each step peels at least the cell of the largest rate.
+        // Each step peels at least the cell that reaches the work first.
         for _ in 0..face {
             self.check_interrupt("peeling a punch")?;
-            let cells = contact.iter().filter(|c| **c).count();
+            let cells = attached.iter().filter(|a| **a).count();
             if cells < 4 {
                 break;
             }
-            let edge = self.edge_release(indenter, depth, &contact, EDGE_WINDOW)?;
-            iterations += edge.iterations;
-            let top =
-                edge.max_release()
-                    .filter(|p| p.release_rate > 0.0)
-                    .ok_or(Error::Unsupported {
-                        feature: "peeling a contact whose edge releases no energy",
-                        reason:
-                            "a pulled punch's edge always releases energy; this contact is not \
-                             pulled",
-                    })?;
-            let scale = (work / top.release_rate).sqrt();
+            for c in 0..n {
+                if !attached[c] {
+                    punch[c] = 0.0;
+                    shape[c] = 0.0;
+                }
+                target[c] = 1.0;
+            }
+            let (i1, _) = self.clamped_cg(&attached, &target, &mut punch)?;
+            for (t, h) in target.iter_mut().zip(&self.workspace.profile) {
+                *t = if h.is_finite() { h - lowest } else { 0.0 };
+            }
+            let (i2, _) = self.clamped_cg(&attached, &target, &mut shape)?;
+            iterations += i1 + i2;
+            self.operator.apply(&punch, &mut punch_displacement)?;
+            self.operator.apply(&shape, &mut shape_displacement)?;
+            let pair = ClampedPair {
+                attached: &attached,
+                profile: &self.workspace.profile,
+                lowest,
+                punch: &punch,
+                punch_displacement: &punch_displacement,
+                shape: &shape,
+                shape_displacement: &shape_displacement,
+            };
+            let forces = EdgeForces::new(&pair, rows, columns, spacing, periodic);
+            let rates = forces.smoothed(spacing, EDGE_WINDOW);
+            // The first edge cell to release the work as the depth falls.
+            let first = rates
+                .iter()
+                .enumerate()
+                .filter_map(|(k, r)| r.critical_depth(work).map(|d| (k, d)))
+                .max_by(|a, b| a.1.total_cmp(&b.1));
+            let Some((top, depth)) = first else {
+                if cells < MIN_FACE_CELLS {
+                    // The last few cells, whose facets cancel (a block of
+                    // two by two has no edge direction): they come off
+                    // with the path's end.
+                    break;
+                }
+                return Err(Error::Unsupported {
+                    feature: "peeling a contact whose edge never releases the work of adhesion",
+                    reason: "a pulled punch's edge releases energy without bound; this contact's \
+                             rates do not grow as it is pulled",
+                });
+            };
+            let (stiffness, shape_force) = (0..n)
+                .filter(|&c| attached[c])
+                .fold((0.0, 0.0), |(k, f), c| {
+                    (k + punch[c] * area, f + shape[c] * area)
+                });
+            let (i, j) = (forces.cells[top] / columns, forces.cells[top] % columns);
             points.push(PeelPoint {
-                depth: lowest + (depth - lowest) * scale,
-                force: edge.force * scale,
+                depth: lowest + depth,
+                force: stiffness * depth - shape_force,
                 contact_cells: cells,
-                contact_area: cells as f64 * spacing * spacing,
-                peels_at: top.position,
+                contact_area: cells as f64 * area,
+                peels_at: grid.cell_centre(i, j),
             });
-            let threshold = PEEL_FRACTION * top.release_rate;
-            for p in &edge.points {
-                if p.release_rate >= threshold {
-                    contact[[p.cell.0, p.cell.1]] = false;
+            let threshold = PEEL_FRACTION * work;
+            for (&c, rate) in forces.cells.iter().zip(&rates) {
+                if rate.at(depth) >= threshold && rate.edge_pressure(depth) < 0.0 {
+                    attached[c] = false;
                 }
             }
+            attached[forces.cells[top]] = false;
         }
-        crate::solver::all_finite(
-            "peeling path forces",
-            &points.iter().map(|p| p.force).collect::<Vec<_>>(),
-        )?;
+        let values: Vec<f64> = points.iter().flat_map(|p| [p.force, p.depth]).collect();
+        crate::solver::all_finite("peeling path", &values)?;
         Ok(PeelingPath { points, iterations })
     }
-}
-
-/// The four neighbours of cell `(i, j)` (wrapped on a periodic grid).
-fn neighbours(
-    i: usize,
-    j: usize,
-    rows: usize,
-    columns: usize,
-    periodic: bool,
-) -> impl Iterator<Item = (usize, usize)> {
-    let steps = [(-1i64, 0i64), (1, 0), (0, -1), (0, 1)];
-    steps.into_iter().filter_map(move |(di, dj)| {
-        let (k, l) = (i as i64 + di, j as i64 + dj);
-        if periodic {
-            Some((
-                k.rem_euclid(rows as i64) as usize,
-                l.rem_euclid(columns as i64) as usize,
-            ))
-        } else if k < 0 || l < 0 || k >= rows as i64 || l >= columns as i64 {
-            None
-        } else {
-            Some((k as usize, l as usize))
-        }
-    })
 }
