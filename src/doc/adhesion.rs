@@ -211,8 +211,8 @@
 //! balance, whose contact family removes the corners first, gives 503 to
 //! 513 (7 to 9 % too strong: [`Caveat::EdgeAveragedAdhesion`](crate::scene::Caveat::EdgeAveragedAdhesion)).
 //! Peeling more finely moves it little (0.98: 471.1 against 473.3 at 64
-//! cells; 0.8: 455.4); the path costs one clamped solve a step (68 steps,
-//! 581 CG iterations at 64 cells). A disc tilted by a tenth or a quarter of
+//! cells; 0.8: 455.4); the path costs two clamped solves a step (68 steps,
+//! 544 CG iterations at 64 cells). A disc tilted by a tenth or a quarter of
 //! Kendall's critical depth across its radius starts to detach at the
 //! exact onset of a punch under force and moment (`K(theta)` above) within
 //! 1.1 % at 64 cells across, along the grid and towards 30 degrees, then
