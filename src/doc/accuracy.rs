@@ -146,6 +146,17 @@
 //! | JKR sphere, film `a/h = 2.93` on a rigid base (scene cycle, `examples/accuracy.rs`; magnitudes; zone of two cells to 64 cells across, 4 at 128) | exact layered JKR | 2.4 % | 0.25 % | 0.035 % | 0.015 % | none yet |
 //! | Kendall's flat punch | Kendall (1971) | refused: pinned at the rim (-23 % at 64) | | | | |
 //!
+//! The pull-off of bonded flat punches along their peeling paths
+//! ([`ContactSolver::peel_punch`](crate::solver::ContactSolver::peel_punch);
+//! `N` cells across; `tests/peel_punch.rs`, `BENCHMARKS.md`, "Local release
+//! rates along an edge"):
+//!
+//! | case | reference | 16 | 32 | 64 | 128 |
+//! |---|---|---|---|---|---|
+//! | Kendall's disc | Kendall (1971), radius of the staircase's area less the edge shift | +0.85 % | +0.33 % | | |
+//! | square, along the grid / 30 / 45 degrees (uN over `N^1.5`) | none: first order to about 468 | | 476.3 / 480.9 / 476.5 | 473.3 / 469.6 / 472.4 | 471.7 / 467.8 / 470.2 |
+//! | disc tilted by a tenth / a quarter of Kendall's depth, onset | punch under force and moment (exact) | | +1.0 / +1.6 % | +0.31 / +1.1 % | |
+//!
 //! For the `1/N` quantities Richardson extrapolation of two resolutions
 //! ([`richardson`](crate::scene::richardson)) gains one to two orders of
 //! magnitude at the cost of the coarser run; [`Scene::converge`] doubles the
