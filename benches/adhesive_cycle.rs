@@ -5,10 +5,15 @@
 //! pull-off contact radii and unloaded to contact loss, with 64 and 128
 //! cells across the pull-off contact. The automatic adhesion method takes
 //! the cohesive zone (its sets are not discs). `BENCHMARKS.md`, "Adhesive
-//! scene cycles: error and cost".
+//! scene cycles: error and cost". Beside it, the peeling path of a square
+//! flat punch bonded over its face (`ContactSolver::peel_punch`), 64 and
+//! 128 cells across: `BENCHMARKS.md`, "Local release rates along an edge".
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use layered_contact::indenter::HeightMap;
 use layered_contact::scene::{AdhesionMethod, IndenterSpec};
+use layered_contact::solver::{ContactSolver, SolverParams};
+use layered_contact::{Boundary, Grid, Material, Substrate};
 
 #[path = "../examples/support/tilted_cycle.rs"]
 #[allow(dead_code)] // the bench uses only the scene
@@ -39,5 +44,33 @@ fn bench_cycle(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_cycle);
+fn bench_peel(c: &mut Criterion) {
+    let mut group = c.benchmark_group("peeling path (square flat punch)");
+    group.sample_size(10);
+    for n in [64usize, 128] {
+        let (cells, delta) = (n + 16, 1e-4);
+        let grid = Grid::square_of_side(cells, cells as f64 * delta).unwrap();
+        let heights = (0..grid.len())
+            .map(|c| {
+                let (i, j) = (c / cells, c % cells);
+                if (8..8 + n).contains(&i) && (8..8 + n).contains(&j) {
+                    0.0
+                } else {
+                    f64::INFINITY
+                }
+            })
+            .collect();
+        let square = HeightMap::new(grid, heights).unwrap();
+        let rubber = Substrate::half_space(Material::new(1e6, 0.48).unwrap());
+        let mut solver =
+            ContactSolver::new(&rubber, &grid, Boundary::Isolated, SolverParams::default())
+                .unwrap();
+        group.bench_function(BenchmarkId::from_parameter(n), |b| {
+            b.iter(|| solver.peel_punch(&square, 0.05).unwrap().pull_off().force)
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench_cycle, bench_peel);
 criterion_main!(benches);
