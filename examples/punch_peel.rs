@@ -18,7 +18,10 @@
 //! cargo run --release --example punch_peel -- [disc|square|rectangle] N [fraction [degrees]]
 //! ```
 //!
-//! The face turned by `degrees` on the grid. A fraction of 0 runs
+//! The face turned by `degrees` on the grid. A negative fraction runs the
+//! mesh-dependent criterion instead (`solve_depth_hysteretic`, pulled in
+//! steps of 1/200 of the inscribed disc's critical depth to contact loss,
+//! the least force). A fraction of 0 runs
 //! [`ContactSolver::peel_punch`] (its [`PEEL_FRACTION`]) and the energy
 //! balance ([`ContactSolver::adhesive_branches`]) instead, and prints their
 //! pull-offs.
@@ -113,6 +116,33 @@ fn main() -> Result<()> {
             -path.points()[0].force * per,
             balance.force,
             -balance.force * per
+        );
+        return Ok(());
+    }
+    if fraction < 0.0 {
+        // The mesh-dependent criterion (Pohrt & Popov 2015) beside it: the
+        // face pressed in, then pulled in steps of 1/200 of Kendall's
+        // critical depth of the inscribed disc until the contact is lost;
+        // its pull-off is the least force.
+        let estar = rubber.contact_modulus();
+        let step = (2.0 * std::f64::consts::PI * half * work / estar).sqrt() / 200.0;
+        let (_, mut warm) =
+            solver.solve_depth_hysteretic(&face, 1e-7, work, work, None, &mut ())?;
+        let (mut least, mut d, mut steps) = (0.0f64, 1e-7, 0);
+        while steps < 4000 {
+            d -= step;
+            steps += 1;
+            let (s, w) =
+                solver.solve_depth_hysteretic(&face, d, work, work, Some(&warm), &mut ())?;
+            warm = w;
+            least = least.min(s.force);
+            if s.contact_cells == 0 {
+                break;
+            }
+        }
+        println!(
+            "mesh criterion {least:.6e} N ({:.1} uN / N^1.5, {steps} steps)",
+            -least * per
         );
         return Ok(());
     }
