@@ -154,6 +154,7 @@
 //! | case | reference | 16 | 32 | 64 | 128 |
 //! |---|---|---|---|---|---|
 //! | Kendall's disc | Kendall (1971), radius of the staircase's area less the edge shift | +0.85 % | +0.33 % | | |
+//! | Kendall's disc on a film, `a/h` = 1 / 2, rigid base | exact layered Kendall (`Axisymmetric`) | | +0.37 / +0.42 % | / -0.16 % | |
 //! | square, along the grid / 30 / 45 degrees (uN over `N^1.5`) | none: first order to about 468 | | 476.3 / 480.9 / 476.5 | 473.3 / 469.6 / 472.4 | 471.7 / 467.8 / 470.2 |
 //! | disc tilted by a tenth / a quarter of Kendall's depth, onset | punch under force and moment (exact) | | +1.0 / +1.6 % | +0.31 / +1.1 % | |
 //!
