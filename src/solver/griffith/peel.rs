@@ -15,18 +15,20 @@ use super::EDGE_WINDOW;
 /// tends to the quasi-static one as the fraction tends to one; measured
 /// (`examples/punch_peel.rs`, `BENCHMARKS.md`), the square punch's pull-off
 /// over `N^1.5` at 64 cells across: 455.4, 465.7, 473.3, 471.1, 473.3 uN
-/// with 0.8, 0.9, 0.95, 0.98, 0.99 (94 steps at 0.98 against 45 at 0.95).
+/// with 0.8, 0.9, 0.95, 0.98, 0.99 (94 steps at 0.98 against 68 at 0.95).
 pub const PEEL_FRACTION: f64 = 0.95;
 
 /// Fewest face cells a punch's face may have; below as many cells a path
 /// may end where no edge cell is left to reach the work of adhesion.
 const MIN_FACE_CELLS: usize = 16;
 
-/// One bonded contact along a punch's peeling path, at the force where its
-/// largest release rate equals the work of adhesion.
+/// One bonded contact along a punch's peeling path, at the depth and force
+/// where its first edge cell, pulled, releases the work of adhesion.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct PeelPoint {
-    /// Depth, m (negative: pulled).
+    /// Depth, m, as in [`ContactSolver::solve_depth`]: below the face's
+    /// lowest height when it pulls.
     pub depth: f64,
     /// Force, N (negative: pulled).
     pub force: f64,
@@ -34,8 +36,8 @@ pub struct PeelPoint {
     pub contact_cells: usize,
     /// Contact area, m^2 (the cells').
     pub contact_area: f64,
-    /// Where the release rate is largest (m from the indenter's axis):
-    /// where the contact peels next.
+    /// The edge cell that reaches the work of adhesion first (m from the
+    /// indenter's axis): where the contact peels next.
     pub peels_at: (f64, f64),
 }
 
