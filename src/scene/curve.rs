@@ -96,7 +96,11 @@ pub enum Caveat {
     /// per cent ([`doc::adhesion`](crate::doc::adhesion));
     /// [`ContactSolver::edge_release`](crate::solver::ContactSolver::edge_release)
     /// shows how uneven the release is on a contact, and the mesh-dependent
-    /// criterion is the cell-by-cell alternative. See
+    /// criterion is the cell-by-cell alternative. For a flat punch (tilted,
+    /// or with a face that is not round) the balance is too strong (a
+    /// square by 7 to 9 %):
+    /// [`ContactSolver::peel_punch`](crate::solver::ContactSolver::peel_punch)
+    /// gives its pull-off by the local criterion. See
     /// [`AdhesiveBranches::edge_averaged`](crate::solver::AdhesiveBranches::edge_averaged).
     EdgeAveragedAdhesion,
     /// The mesh-dependent adhesion criterion (Pohrt & Popov 2015, the
@@ -138,7 +142,9 @@ impl std::fmt::Display for Caveat {
                 "edge-averaged adhesion: the contact sets are neither discs (about the grid's \
                  axis or a paraboloid's apex) nor strips across a periodic grid, so the energy balance averages the \
                  energy release rate over the edge and its forces may be off by several per \
-                 cent (the JKR-limit solution only where the release is even along the edge)",
+                 cent (the JKR-limit solution only where the release is even along the edge; \
+                 a flat punch's pull-off by the local criterion: ContactSolver::peel_punch, \
+                 Python layered_contact.peel_punch)",
             ),
             Caveat::MeshDependentAdhesion => f.write_str(
                 "mesh-dependent adhesion: the criterion of Pohrt & Popov (2015) decides each \
