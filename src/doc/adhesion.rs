@@ -178,7 +178,9 @@
 //! asymmetric fronts). The detachment onset of a bonded punch of any shape
 //! is where the largest `G` reaches the work of adhesion. It is the
 //! punch's pull-off only where the detachment is unstable from the start
-//! (Kendall's disc, a smooth edge): a square or rectangular punch starts
+//! (Kendall's disc; an elliptical punch, `b/a = 1/2`, peels stably from
+//! its tips and comes off about 4 % beyond its exact onset): a square or
+//! rectangular punch starts
 //! to detach at its corners, where the pressure is more singular than
 //! along the sides, so that its onset falls by 10 to 13 % with each
 //! halving of the cell (no grid limit but zero), while the contacts peeled
