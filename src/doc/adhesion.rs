@@ -213,7 +213,10 @@
 //! 467.8 at 30 (the orientations within 0.8 % at 128 cells, first order to
 //! about 468, 3.6 % above Kendall's disc inscribed in it), where the energy
 //! balance, whose contact family removes the corners first, gives 503 to
-//! 513 (7 to 9 % too strong: [`Caveat::EdgeAveragedAdhesion`](crate::scene::Caveat::EdgeAveragedAdhesion)).
+//! 513 (7 to 9 % too strong: [`Caveat::EdgeAveragedAdhesion`](crate::scene::Caveat::EdgeAveragedAdhesion))
+//! and the mesh-dependent criterion falls slowly towards the peeled value
+//! (496.7, 493.6, 486.2, 480.4 at 16 to 128 cells): two local criteria
+//! agree where the edge-averaged one does not.
 //! Peeling more finely moves it little (0.98: 471.1 against 473.3 at 64
 //! cells; 0.8: 455.4); the path costs two clamped solves a step (68 steps,
 //! 544 CG iterations at 64 cells). A disc tilted by a tenth or a quarter of
