@@ -9,7 +9,11 @@ use std::f64::consts::PI;
 
 use layered_contact::analytic::Axisymmetric;
 use layered_contact::indenter::{FlatPunch, Indenter, Paraboloid, Tilted};
-use layered_contact::solver::{ContactSolver, SolverParams};
+use layered_contact::scene::{
+    Adhesion, AdhesionMethod, Curve, CustomIndenter, IndenterSpec, Protocol, Resolution, Scene,
+    SubstrateSpec,
+};
+use layered_contact::solver::{ContactSolver, PeelingPath, SolverParams};
 use layered_contact::{Boundary, Error, Grid, Substrate};
 
 mod common;
@@ -347,4 +351,87 @@ fn an_elliptical_punch_starts_at_its_exact_onset_and_comes_off_later() {
         }
     }
     assert!((pull_offs[0] - pull_offs[1]).abs() < 0.01, "{pull_offs:?}");
+}
+
+/// A scene of a custom flat punch (`face` its indenter), pressed in and
+/// pulled off in a depth-controlled cycle: the automatic method takes the
+/// cohesive zone, whose unloading of a face bonded whole follows the
+/// peeling path. Its curve, and the path on the scene's grid.
+fn punch_scene(face: impl Indenter + Send + Sync + 'static, cells: usize) -> (Curve, PeelingPath) {
+    let scene = Scene {
+        substrate: SubstrateSpec::HalfSpace {
+            youngs_modulus: 1e6,
+            poisson_ratio: 0.48,
+        },
+        indenter: IndenterSpec::Custom(CustomIndenter::new(face)),
+        adhesion: Adhesion::Constant {
+            work_of_adhesion: WORK,
+        },
+        protocol: Protocol::Cycle {
+            max_depth: 1e-6,
+            steps: 4,
+        },
+        resolution: Resolution {
+            cells_across: cells,
+            margin: 0.1,
+        },
+        ..Scene::default()
+    };
+    assert_eq!(
+        scene.resolved_adhesion_method(),
+        AdhesionMethod::CohesiveZone
+    );
+    let curve = scene.run(&mut |_| {}).unwrap();
+    let IndenterSpec::Custom(face) = &scene.indenter else {
+        unreachable!()
+    };
+    let mut solver = ContactSolver::new(
+        &Substrate::half_space(rubber()),
+        &curve.grid,
+        Boundary::Isolated,
+        SolverParams::default(),
+    )
+    .unwrap();
+    let path = solver.peel_punch(face, WORK).unwrap();
+    (curve, path)
+}
+
+#[test]
+fn punch_scenes_unload_along_the_peeling_path() {
+    // Kendall's disc as a custom indenter (the FlatPunch spec takes the
+    // energy balance): the curve's pull-off is the path's, at its onset,
+    // Kendall's force within the staircase's 1 %. A square: the path's
+    // pull-off too, after stable peeling (the depth control visits it).
+    let a = 16.0 * DELTA;
+    let (curve, path) = punch_scene(FlatPunch::new(a).unwrap(), 32);
+    // The same state solved again: equal to the solves' tolerance.
+    let same = |a: f64, b: f64| (a / b - 1.0).abs() < 1e-6;
+    let pull_off = curve.pull_off().unwrap();
+    assert!(same(pull_off.force, path.pull_off().force));
+    let radius = (path.points()[0].contact_area / PI).sqrt() - 0.117 * curve.grid.spacing();
+    let kendall = -(8.0 * PI * rubber().contact_modulus() * WORK * radius.powi(3)).sqrt();
+    println!("disc scene: {} of Kendall", pull_off.force / kendall - 1.0);
+    assert!((pull_off.force / kendall - 1.0).abs() < 0.01);
+    // Loading and unloading over the bonded face are the same line.
+    let loading = &curve.steps[1];
+    let unloading = curve
+        .steps
+        .iter()
+        .rev()
+        .find(|s| s.depth == loading.depth)
+        .unwrap();
+    assert!((unloading.force / loading.force - 1.0).abs() < 1e-6);
+    let (curve, path) = punch_scene(
+        Square {
+            half: a,
+            angle: 0.0,
+        },
+        32,
+    );
+    let pull_off = curve.pull_off().unwrap();
+    println!("square scene: {pull_off:?} path {:?}", path.pull_off());
+    assert!(same(pull_off.force, path.pull_off().force));
+    assert!(!path.detaches_at_onset());
+    // The contact is lost at the end.
+    assert_eq!(curve.steps.last().unwrap().force, 0.0);
 }

@@ -252,3 +252,31 @@ def test_force_control_of_a_tilted_cap_runs_through_the_cohesive_zone():
     assert max(off) <= 1e-3 and sum(o > 1e-6 for o in off) <= 1, off
     assert curve.pull_off["force"] / jkr - 1 == pytest.approx(-0.025, abs=0.005)
     assert curve.force[-1] == 0.0 and curve.contact_area[-1] == 0.0
+
+
+def test_a_square_punch_map_unloads_along_its_peeling_path(tmp_path):
+    # A square flat punch as a height map (inf beyond its face): the
+    # automatic method takes the cohesive zone, whose depth-controlled
+    # unloading of the face bonded whole follows the peeling path; the
+    # curve's pull-off is the path's (lc.peel_punch on the same grid).
+    import numpy as np
+
+    n, side, spacing = 48, 32, 1e-4
+    heights = np.full((n, n), np.inf)
+    lo = (n - side) // 2
+    heights[lo:lo + side, lo:lo + side] = 0.0
+    path = tmp_path / "square.npy"
+    np.save(path, heights)
+    scene = {
+        "substrate": {"kind": "half_space", "youngs_modulus": 1e6, "poisson_ratio": 0.48},
+        "indenter": {"kind": "height_map", "path": str(path), "spacing": spacing},
+        "adhesion": {"kind": "constant", "work_of_adhesion": 0.05},
+        "protocol": {"kind": "cycle", "max_depth": 1e-6, "steps": 4},
+    }
+    curve = lc.run_scene(scene)
+    assert curve.adhesion_method == "cohesive_zone"
+    solver = lc.ContactSolver(lc.Substrate.half_space(lc.Material(1e6, 0.48)), n, n, spacing)
+    peeled = lc.peel_punch(solver, lc.Indenter.height_map(heights, spacing), 0.05)
+    assert curve.pull_off["force"] == pytest.approx(peeled["pull_off_force"], rel=1e-6)
+    assert not peeled["detaches_at_onset"]
+    assert curve.force[-1] == 0.0

@@ -11,6 +11,7 @@ use crate::solver::{
 
 mod cohesive;
 mod cohesive_force;
+mod peeled;
 
 use super::{AdhesionMethod, Curve, IndenterSpec, Phase, Protocol, Scene, Step, MAX_PULL_DEPTHS};
 

@@ -31,6 +31,15 @@ impl Runner<'_> {
         increment: f64,
         progress: &mut dyn FnMut(&Step),
     ) -> Result<bool> {
+        if self
+            .warm
+            .as_ref()
+            .is_some_and(|state| self.solver.bonded_at_rim(state))
+        {
+            // A punch's face bonded at its rim: the zone cannot form
+            // beyond it; the local criterion's peeling path instead.
+            return self.unload_peeled(max_depth, increment, progress);
+        }
         let mut increment = increment;
         let mut depth = max_depth;
         let mut recorded = Probe {

@@ -46,6 +46,9 @@ pub struct PeelPoint {
 pub struct PeelingPath {
     points: Vec<PeelPoint>,
     iterations: usize,
+    /// Per cell, the step of the path at which it peeled (the number of
+    /// points for the face's last cells, `usize::MAX` off the face).
+    peeled_at: Vec<usize>,
 }
 
 impl PeelingPath {
@@ -79,6 +82,30 @@ impl PeelingPath {
     /// corners).
     pub fn detaches_at_onset(&self) -> bool {
         std::ptr::eq(self.pull_off(), &self.points[0])
+    }
+
+    /// The cells in contact at point `k` of the path (row-major).
+    pub(crate) fn contact(&self, k: usize) -> Vec<bool> {
+        self.peeled_at
+            .iter()
+            .map(|&step| step != usize::MAX && step >= k)
+            .collect()
+    }
+
+    /// The points a depth-controlled pull visits (each holds until its
+    /// critical depth, and the next holds only if its own is deeper): the
+    /// path's records of the most tensile critical depth.
+    pub(crate) fn visited(&self) -> Vec<usize> {
+        let mut visited: Vec<usize> = Vec::new();
+        for (k, p) in self.points.iter().enumerate() {
+            if visited
+                .last()
+                .is_none_or(|&j| p.depth < self.points[j].depth)
+            {
+                visited.push(k);
+            }
+        }
+        visited
     }
 
     fn most(&self, key: impl Fn(&PeelPoint) -> f64) -> &PeelPoint {
@@ -186,6 +213,7 @@ impl ContactSolver {
         let mut shape_displacement = super::super::cell_vector(n)?;
         let mut points = Vec::new();
         let mut iterations = 0usize;
+        let mut peeled_at = vec![usize::MAX; n];
         // Each step peels at least the cell that reaches the work first.
         for _ in 0..face {
             self.check_interrupt("peeling a punch")?;
@@ -252,15 +280,51 @@ impl ContactSolver {
                 peels_at: grid.cell_centre(i, j),
             });
             let threshold = PEEL_FRACTION * work;
+            let step = points.len() - 1;
             for (&c, rate) in forces.cells.iter().zip(&rates) {
                 if rate.at(depth) >= threshold && rate.edge_pressure(depth) < 0.0 {
                     attached[c] = false;
+                    peeled_at[c] = step;
                 }
             }
             attached[forces.cells[top]] = false;
+            peeled_at[forces.cells[top]] = step;
+        }
+        for (at, &stays) in peeled_at.iter_mut().zip(&attached) {
+            if stays {
+                *at = points.len();
+            }
         }
         let values: Vec<f64> = points.iter().flat_map(|p| [p.force, p.depth]).collect();
         crate::solver::all_finite("peeling path", &values)?;
-        Ok(PeelingPath { points, iterations })
+        Ok(PeelingPath {
+            points,
+            iterations,
+            peeled_at,
+        })
+    }
+
+    /// The pressures, contact and fields of `attached` (row-major cells)
+    /// held bonded to `indenter` at `depth`: one clamped solve (none
+    /// without a cell).
+    pub(crate) fn clamped_solution<I: Indenter + ?Sized>(
+        &mut self,
+        indenter: &I,
+        depth: f64,
+        attached: &[bool],
+    ) -> Result<super::super::Solution> {
+        crate::solver::check_finite("depth", depth)?;
+        self.sample_profile(indenter)?;
+        let n = self.grid().len();
+        let mut pressure = vec![0.0; n];
+        let (iterations, residual) = if attached.iter().any(|a| *a) {
+            self.clamped_solve(depth, attached, &mut pressure)?
+        } else {
+            self.workspace.displacement.fill(0.0);
+            (0, 0.0)
+        };
+        let solution = self.solution(&pressure, depth, iterations, residual, Some(attached));
+        crate::solver::check_solution(&solution)?;
+        Ok(solution)
     }
 }
