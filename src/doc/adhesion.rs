@@ -1,13 +1,18 @@
-//! # Adhesion in the JKR limit: the energy balance, a cohesive zone and the mesh criterion
+//! # Adhesion in the JKR limit: the energy balance, local release rates, a cohesive zone and the mesh criterion
 //!
 //! In the JKR limit (Johnson, Kendall & Roberts 1971, Proc. R. Soc. A 324,
 //! 301) the adhesive contact is a crack between the indenter and the body:
 //! the contact edge stands where the energy release rate `G` equals the work
 //! of adhesion `dgamma`. With adhesion hysteresis the edge advances only
 //! while `G <= dgamma0` and recedes only while `G >= dgamma1 >= dgamma0`.
-//! The crate offers three ways to put that on a grid of square cells; a
-//! scene takes the one that is exact for it (below, "Which method a scene
-//! takes").
+//! The crate offers four ways to put that on a grid of square cells: the
+//! energy balance along a family of contact sets (exact for discs and
+//! strips), the local release rates along an edge (a contact's detachment
+//! onset, and a flat punch's whole peeling path to its pull-off), a
+//! cohesive zone resolved on the grid (any curved indenter, any shape and
+//! number of patches) and the mesh-dependent criterion of the reference
+//! experiment's simulations. A scene takes the one that is exact for it
+//! (below, "Which method a scene takes").
 //!
 //! ## The energy balance (automatic for discs)
 //!
