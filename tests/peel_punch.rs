@@ -10,8 +10,8 @@ use std::f64::consts::PI;
 use layered_contact::analytic::Axisymmetric;
 use layered_contact::indenter::{FlatPunch, Indenter, Paraboloid, Tilted};
 use layered_contact::scene::{
-    Adhesion, AdhesionMethod, Curve, CustomIndenter, IndenterSpec, Protocol, Resolution, Scene,
-    SubstrateSpec,
+    Adhesion, AdhesionMethod, Curve, CustomIndenter, IndenterSpec, Phase, Protocol, Resolution,
+    Scene, SubstrateSpec,
 };
 use layered_contact::solver::{ContactSolver, PeelingPath, SolverParams};
 use layered_contact::{Boundary, Error, Grid, Substrate};
@@ -358,6 +358,22 @@ fn an_elliptical_punch_starts_at_its_exact_onset_and_comes_off_later() {
 /// cohesive zone, whose unloading of a face bonded whole follows the
 /// peeling path. Its curve, and the path on the scene's grid.
 fn punch_scene(face: impl Indenter + Send + Sync + 'static, cells: usize) -> (Curve, PeelingPath) {
+    punch_scene_with(
+        face,
+        cells,
+        Protocol::Cycle {
+            max_depth: 1e-6,
+            steps: 4,
+        },
+    )
+}
+
+/// [`punch_scene`] with another protocol.
+fn punch_scene_with(
+    face: impl Indenter + Send + Sync + 'static,
+    cells: usize,
+    protocol: Protocol,
+) -> (Curve, PeelingPath) {
     let scene = Scene {
         substrate: SubstrateSpec::HalfSpace {
             youngs_modulus: 1e6,
@@ -367,10 +383,7 @@ fn punch_scene(face: impl Indenter + Send + Sync + 'static, cells: usize) -> (Cu
         adhesion: Adhesion::Constant {
             work_of_adhesion: WORK,
         },
-        protocol: Protocol::Cycle {
-            max_depth: 1e-6,
-            steps: 4,
-        },
+        protocol,
         resolution: Resolution {
             cells_across: cells,
             margin: 0.1,
@@ -434,4 +447,36 @@ fn punch_scenes_unload_along_the_peeling_path() {
     assert!(!path.detaches_at_onset());
     // The contact is lost at the end.
     assert_eq!(curve.steps.last().unwrap().force, 0.0);
+    // Under force control: the path's pull-off (the most tensile critical
+    // force), then a step without contact; every unloading step before it
+    // at its prescribed force.
+    let protocol = Protocol::ForceCycle {
+        max_force: 2e-2,
+        steps: 4,
+    };
+    let (curve, path) = punch_scene_with(
+        Square {
+            half: a,
+            angle: 0.0,
+        },
+        32,
+        protocol,
+    );
+    let pull_off = curve.pull_off().unwrap();
+    println!("square force scene: {pull_off:?}");
+    assert!(same(pull_off.force, path.pull_off().force));
+    assert_eq!(curve.steps.last().unwrap().force, 0.0);
+    let unloading: Vec<_> = curve
+        .steps
+        .iter()
+        .filter(|s| s.phase == Phase::Unloading)
+        .collect();
+    for (k, s) in unloading.iter().enumerate().take(unloading.len() - 2) {
+        let asked = 2e-2 - (k + 1) as f64 * 5e-3;
+        assert!(
+            (s.force - asked).abs() < 1e-6 * 2e-2,
+            "{k}: {} {asked}",
+            s.force
+        );
+    }
 }

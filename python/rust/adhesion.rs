@@ -61,7 +61,7 @@ pub(crate) fn edge_release<'py>(
 /// The pull-off of a flat punch (tilted or not) bonded over its whole face
 /// along its peeling path (`ContactSolver::peel_punch`): a dict of arrays over the
 /// path's contacts (`depth` m, `force` N, each the critical one of that
-/// contact; `contact_cells`; `contact_area` m^2; `peels_x`, `peels_y` m,
+/// contact; `stiffness` N/m, its bonded `dF/dd`; `contact_cells`; `contact_area` m^2; `peels_x`, `peels_y` m,
 /// where it peels next) and `pull_off_force`, `pull_off_depth`,
 /// `jump_off_depth`, `jump_off_force`, `detaches_at_onset`, `iterations`.
 #[pyfunction]
@@ -82,6 +82,10 @@ pub(crate) fn peel_punch<'py>(
     let d = PyDict::new(py);
     d.set_item("depth", PyArray1::from_vec(py, column(&|p| p.depth)))?;
     d.set_item("force", PyArray1::from_vec(py, column(&|p| p.force)))?;
+    d.set_item(
+        "stiffness",
+        PyArray1::from_vec(py, column(&|p| p.stiffness)),
+    )?;
     d.set_item(
         "contact_cells",
         PyArray1::from_vec(py, points.iter().map(|p| p.contact_cells).collect()),

@@ -105,6 +105,8 @@ def test_peel_punch_disc_at_kendall_and_square_later():
     kendall = -math.sqrt(8 * math.pi * ESTAR * work * radius**3)
     assert disc["pull_off_force"] == pytest.approx(kendall, rel=0.02)
     assert disc["force"][0] == disc["pull_off_force"]
+    # The bonded face's stiffness: 2 E* a.
+    assert disc["stiffness"][0] == pytest.approx(2 * ESTAR * radius, rel=0.02)
     assert np.all(np.diff(disc["contact_cells"].astype(np.int64)) < 0)
     n, side = 80, 64
     heights = np.full((n, n), np.inf)

@@ -453,15 +453,15 @@
 //!   zone does not represent; a tilted or non-round punch carries
 //!   [`Caveat::EdgeAveragedAdhesion`](crate::scene::Caveat::EdgeAveragedAdhesion));
 //!   a punch given as a height map or a custom indenter takes the cohesive
-//!   zone, whose depth-controlled cycle, once the face is bonded whole at
-//!   the peak (pinned at the rim, where the zone cannot form), unloads
-//!   along the punch's peeling path
+//!   zone, whose cycle, once the face is bonded whole at the peak (pinned
+//!   at the rim, where the zone cannot form), unloads along the punch's
+//!   peeling path
 //!   ([`ContactSolver::peel_punch`](crate::solver::ContactSolver::peel_punch)):
-//!   at each protocol depth the first contact of the path that holds there,
-//!   solved bonded, and the state of the least force the depth control
-//!   reaches where the protocol passes it (`tests/peel_punch.rs`: a round
-//!   custom punch +0.33 % of Kendall at 32 cells across, a square the
-//!   path's pull-off); under force control it refuses the pinned rim;
+//!   at each protocol depth (or force) the first contact of the path that
+//!   holds it, solved bonded, and the state of the least force the control
+//!   reaches (`tests/peel_punch.rs`: a round custom punch +0.33 % of
+//!   Kendall at 32 cells across, a square the path's pull-off under depth
+//!   and force control);
 //! - the cohesive zone for every other scene: tilted spheres and cones,
 //!   height maps, rough surfaces, custom indenters, periodic grids. Its
 //!   cycle records the protocol's unloading steps and, where the force

@@ -262,13 +262,14 @@ pub enum AdhesionMethod {
     /// path (regula falsi, to 1e-6 of the largest force, or to the nearer
     /// side where the path's force snaps across the one asked as a cell joins
     /// or leaves the zone), the contact jumps in at zero force and off at the
-    /// least force the unloading holds. A depth-controlled cycle of a flat
-    /// punch given as a height map or a custom indenter (its face bonded
-    /// whole at the peak, pinned at the rim, where the zone cannot form)
-    /// unloads along the punch's peeling path by the local criterion
-    /// ([`ContactSolver::peel_punch`](crate::solver::ContactSolver::peel_punch));
-    /// force control refuses such contacts, and so does the
-    /// [`FlatPunch`](IndenterSpec::FlatPunch) spec.
+    /// least force the unloading holds. A cycle of a flat punch given as a
+    /// height map or a custom indenter (its face bonded whole at the peak,
+    /// pinned at the rim, where the zone cannot form) unloads along the
+    /// punch's peeling path by the local criterion
+    /// ([`ContactSolver::peel_punch`](crate::solver::ContactSolver::peel_punch)),
+    /// under displacement or force control; the
+    /// [`FlatPunch`](IndenterSpec::FlatPunch) spec refuses the zone (its
+    /// scenes take the energy balance).
     CohesiveZone,
 }
 

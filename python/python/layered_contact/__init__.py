@@ -117,7 +117,8 @@ def peel_punch(solver: ContactSolver, indenter: Indenter, work_of_adhesion: floa
     adhesion, then the edge cells near it peeled, to the last few cells.
 
     Returns a dict of arrays over the path's contacts: ``depth`` (m) and
-    ``force`` (N) at which each comes off, ``contact_cells``,
+    ``force`` (N) at which each comes off, ``stiffness`` (N/m, its bonded
+    ``dF/dd``), ``contact_cells``,
     ``contact_area`` (m^2), ``peels_x``, ``peels_y`` (m, where it peels
     next); and ``pull_off_force``, ``pull_off_depth`` (the most tensile
     force along the path: the pull-off under force control),

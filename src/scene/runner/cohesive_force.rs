@@ -141,6 +141,14 @@ impl Runner<'_> {
         if !cycle {
             return Ok(true);
         }
+        if self
+            .warm
+            .as_ref()
+            .is_some_and(|state| self.solver.bonded_at_rim(state))
+        {
+            // A punch's face bonded at its rim: its peeling path.
+            return self.unload_peeled_force(max_force, increment, progress);
+        }
         for k in 1..=MAX_PROTOCOL_STEPS {
             let force = max_force - k as f64 * increment;
             let step = secant_step(&path, force).unwrap_or(fallback);

@@ -5,9 +5,9 @@
 //! walked at the protocol's depths.
 
 use crate::error::{Error, Result};
-use crate::solver::{pinned_at_rim, WarmStart};
+use crate::solver::{pinned_at_rim, PeelingPath, WarmStart};
 
-use super::super::{Phase, Step};
+use super::super::{Phase, Step, MAX_PROTOCOL_STEPS};
 use super::{next_increment, still_attached, unloading_steps, Runner};
 
 impl Runner<'_> {
@@ -29,21 +29,8 @@ impl Runner<'_> {
         increment: f64,
         progress: &mut dyn FnMut(&Step),
     ) -> Result<bool> {
-        let (_, receding) = self.scene.adhesion.works().unwrap_or((0.0, 0.0));
-        // An indenter that is not a punch bonded at a rim keeps the
-        // cohesive zone's refusal; other errors (no convergence, an
-        // interrupt) are the solve's own.
-        let path = match self.solver.peel_punch(self.indenter, receding) {
-            Err(Error::Unsupported { .. } | Error::InvalidParameter { .. }) => {
-                return Err(pinned_at_rim())
-            }
-            other => other?,
-        };
+        let path = self.peeling_path()?;
         let points = path.points();
-        let bonded = self.warm.as_ref().map_or(0, WarmStart::attached_cells);
-        if bonded != points[0].contact_cells {
-            return Err(pinned_at_rim());
-        }
         let visited = path.visited();
         let least = visited
             .iter()
@@ -92,5 +79,83 @@ impl Runner<'_> {
             }
         }
         Err(still_attached(limit, depth))
+    }
+
+    /// The force-controlled unloading of a punch bonded whole, from
+    /// `max_force` down by `decrement` into tension: at each force the
+    /// first contact of the peeling path that holds it (each holds down to
+    /// its critical force), at the depth where its bonded stiffness carries
+    /// that force; past the most tensile critical force (the pull-off,
+    /// recorded at its critical depth) a step without contact, as the
+    /// cohesive zone's own force cycle ends.
+    pub(in crate::scene) fn unload_peeled_force(
+        &mut self,
+        max_force: f64,
+        decrement: f64,
+        progress: &mut dyn FnMut(&Step),
+    ) -> Result<bool> {
+        let path = self.peeling_path()?;
+        let points = path.points();
+        let pull = path.pull_off_index();
+        let mut held = 0usize;
+        for k in 1..=MAX_PROTOCOL_STEPS {
+            let force = max_force - k as f64 * decrement;
+            while held <= pull && force < points[held].force {
+                held += 1;
+            }
+            if held > pull {
+                let at = &points[pull];
+                let solution =
+                    self.solver
+                        .clamped_solution(self.indenter, at.depth, &path.contact(pull))?;
+                if !self.record(solution, Phase::Unloading, progress) {
+                    return Ok(false);
+                }
+                let free = Step {
+                    phase: Phase::Unloading,
+                    depth: at.depth,
+                    force: 0.0,
+                    contact_area: 0.0,
+                    contact_radius: 0.0,
+                    iterations: 0,
+                };
+                progress(&free);
+                self.steps.push(free);
+                self.warm = None;
+                return Ok(true);
+            }
+            let p = &points[held];
+            let depth = p.depth + (force - p.force) / p.stiffness;
+            let solution =
+                self.solver
+                    .clamped_solution(self.indenter, depth, &path.contact(held))?;
+            if !self.record(solution, Phase::Unloading, progress) {
+                return Ok(false);
+            }
+        }
+        Err(Error::NoConvergence {
+            method: "load-controlled unloading of a punch along its peeling path",
+            iterations: MAX_PROTOCOL_STEPS,
+            residual: max_force,
+        })
+    }
+
+    /// The peeling path of the scene's punch, from the face bonded whole
+    /// (the state the loading left): an indenter that is not a punch
+    /// bonded at a rim keeps the cohesive zone's refusal; other errors (no
+    /// convergence, an interrupt) are the solve's own.
+    fn peeling_path(&mut self) -> Result<PeelingPath> {
+        let (_, receding) = self.scene.adhesion.works().unwrap_or((0.0, 0.0));
+        let path = match self.solver.peel_punch(self.indenter, receding) {
+            Err(Error::Unsupported { .. } | Error::InvalidParameter { .. }) => {
+                return Err(pinned_at_rim())
+            }
+            other => other?,
+        };
+        let bonded = self.warm.as_ref().map_or(0, WarmStart::attached_cells);
+        if bonded != path.points()[0].contact_cells {
+            return Err(pinned_at_rim());
+        }
+        Ok(path)
     }
 }

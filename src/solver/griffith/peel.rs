@@ -32,6 +32,9 @@ pub struct PeelPoint {
     pub depth: f64,
     /// Force, N (negative: pulled).
     pub force: f64,
+    /// The bonded contact's stiffness `dF/dd`, N/m: at any depth `d` it
+    /// carries `force + stiffness (d - depth)`.
+    pub stiffness: f64,
     /// Cells in contact.
     pub contact_cells: usize,
     /// Contact area, m^2 (the cells').
@@ -106,6 +109,15 @@ impl PeelingPath {
             }
         }
         visited
+    }
+
+    /// The index of the point [`pull_off`](Self::pull_off) returns.
+    pub(crate) fn pull_off_index(&self) -> usize {
+        let target = self.pull_off();
+        self.points
+            .iter()
+            .position(|p| std::ptr::eq(p, target))
+            .unwrap_or(0)
     }
 
     fn most(&self, key: impl Fn(&PeelPoint) -> f64) -> &PeelPoint {
@@ -275,6 +287,7 @@ impl ContactSolver {
             points.push(PeelPoint {
                 depth: lowest + depth,
                 force: stiffness * depth - shape_force,
+                stiffness,
                 contact_cells: cells,
                 contact_area: cells as f64 * area,
                 peels_at: grid.cell_centre(i, j),
@@ -295,7 +308,10 @@ impl ContactSolver {
                 *at = points.len();
             }
         }
-        let values: Vec<f64> = points.iter().flat_map(|p| [p.force, p.depth]).collect();
+        let values: Vec<f64> = points
+            .iter()
+            .flat_map(|p| [p.force, p.depth, p.stiffness])
+            .collect();
         crate::solver::all_finite("peeling path", &values)?;
         Ok(PeelingPath {
             points,
