@@ -2,7 +2,7 @@
 //! cohesive zone cannot go (its contact is pinned at the rim): the local
 //! Griffith criterion's peeling path
 //! ([`ContactSolver::peel_punch`](crate::solver::ContactSolver::peel_punch))
-//! walked at the protocol's depths.
+//! walked at the protocol's depths or forces.
 
 use crate::error::{Error, Result};
 use crate::solver::{pinned_at_rim, PeelingPath, WarmStart};
