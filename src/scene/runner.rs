@@ -129,6 +129,22 @@ impl<'a> Runner<'a> {
         true
     }
 
+    /// Records the unloading's step without contact at `depth`, after a
+    /// jump-off under force control, and forgets the history.
+    fn record_jump_off(&mut self, depth: f64, progress: &mut dyn FnMut(&Step)) {
+        let free = Step {
+            phase: Phase::Unloading,
+            depth,
+            force: 0.0,
+            contact_area: 0.0,
+            contact_radius: 0.0,
+            iterations: 0,
+        };
+        progress(&free);
+        self.steps.push(free);
+        self.warm = None;
+    }
+
     /// [`Runner::solve`] at the most loaded point: keeps the requested fields
     /// of this very solve as the curve's peak.
     fn solve_peak(&mut self, control: Control) -> Result<Solution> {

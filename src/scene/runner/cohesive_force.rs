@@ -403,17 +403,7 @@ impl Runner<'_> {
         if !self.accept(path, least, Phase::Unloading, progress) {
             return Ok(false);
         }
-        let free = Step {
-            phase: Phase::Unloading,
-            depth,
-            force: 0.0,
-            contact_area: 0.0,
-            contact_radius: 0.0,
-            iterations: 0,
-        };
-        progress(&free);
-        self.steps.push(free);
-        self.warm = None;
+        self.record_jump_off(depth, progress);
         Ok(true)
     }
 }

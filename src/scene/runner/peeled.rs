@@ -111,17 +111,7 @@ impl Runner<'_> {
                 if !self.record(solution, Phase::Unloading, progress) {
                     return Ok(false);
                 }
-                let free = Step {
-                    phase: Phase::Unloading,
-                    depth: at.depth,
-                    force: 0.0,
-                    contact_area: 0.0,
-                    contact_radius: 0.0,
-                    iterations: 0,
-                };
-                progress(&free);
-                self.steps.push(free);
-                self.warm = None;
+                self.record_jump_off(at.depth, progress);
                 return Ok(true);
             }
             let p = &points[held];
