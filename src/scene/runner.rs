@@ -129,6 +129,15 @@ impl<'a> Runner<'a> {
         true
     }
 
+    /// Whether the state the loading left bonds a face at its rim (a punch,
+    /// where the cohesive zone cannot form beyond it): its unloading is the
+    /// peeling path's.
+    fn bonded_at_rim(&self) -> bool {
+        self.warm
+            .as_ref()
+            .is_some_and(|state| self.solver.bonded_at_rim(state))
+    }
+
     /// Records the unloading's step without contact at `depth`, after a
     /// jump-off under force control, and forgets the history.
     fn record_jump_off(&mut self, depth: f64, progress: &mut dyn FnMut(&Step)) {

@@ -31,11 +31,7 @@ impl Runner<'_> {
         increment: f64,
         progress: &mut dyn FnMut(&Step),
     ) -> Result<bool> {
-        if self
-            .warm
-            .as_ref()
-            .is_some_and(|state| self.solver.bonded_at_rim(state))
-        {
+        if self.bonded_at_rim() {
             // A punch's face bonded at its rim: the zone cannot form
             // beyond it; the local criterion's peeling path instead.
             return self.unload_peeled(max_depth, increment, progress);

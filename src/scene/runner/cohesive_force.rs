@@ -141,11 +141,7 @@ impl Runner<'_> {
         if !cycle {
             return Ok(true);
         }
-        if self
-            .warm
-            .as_ref()
-            .is_some_and(|state| self.solver.bonded_at_rim(state))
-        {
+        if self.bonded_at_rim() {
             // A punch's face bonded at its rim: its peeling path.
             return self.unload_peeled_force(max_force, increment, progress);
         }

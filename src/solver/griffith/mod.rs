@@ -300,8 +300,6 @@ impl ContactSolver {
         point: &BranchPoint,
     ) -> Result<super::Solution> {
         self.serial_only("branch solution")?;
-        check_finite("depth", point.depth)?;
-        self.sample_profile(indenter)?;
         let n = self.grid().len();
         let cells = (point.contact_area / self.grid().cell_area()).round() as usize;
         let mut attached = vec![false; n];
@@ -310,22 +308,7 @@ impl ContactSolver {
                 attached[c] = true;
             }
         }
-        let mut pressure = vec![0.0; n];
-        let (iterations, residual) = if cells > 0 {
-            self.clamped_solve(point.depth, &attached, &mut pressure)?
-        } else {
-            self.workspace.displacement.fill(0.0);
-            (0, 0.0)
-        };
-        let solution = self.solution(
-            &pressure,
-            point.depth,
-            iterations,
-            residual,
-            Some(&attached),
-        );
-        super::check_solution(&solution)?;
-        Ok(solution)
+        self.clamped_solution(indenter, point.depth, &attached)
     }
 
     /// The reachable cells in the order the family adds them: by height

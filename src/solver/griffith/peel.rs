@@ -70,13 +70,13 @@ impl PeelingPath {
     /// along the path (the punch comes off there: every contact after it
     /// peels at a smaller pull).
     pub fn pull_off(&self) -> &PeelPoint {
-        self.most(|p| p.force)
+        &self.points[self.pull_off_index()]
     }
 
     /// The jump-off under displacement control: the most tensile critical
     /// depth along the path.
     pub fn jump_off(&self) -> &PeelPoint {
-        self.most(|p| p.depth)
+        &self.points[self.most(|p| p.depth)]
     }
 
     /// Whether the punch comes off where it starts to detach (the whole
@@ -84,7 +84,7 @@ impl PeelingPath {
     /// for a disc; false where peeled contacts hold more (a punch with
     /// corners).
     pub fn detaches_at_onset(&self) -> bool {
-        std::ptr::eq(self.pull_off(), &self.points[0])
+        self.pull_off_index() == 0
     }
 
     /// The cells in contact at point `k` of the path (row-major).
@@ -113,19 +113,16 @@ impl PeelingPath {
 
     /// The index of the point [`pull_off`](Self::pull_off) returns.
     pub(crate) fn pull_off_index(&self) -> usize {
-        let target = self.pull_off();
-        self.points
-            .iter()
-            .position(|p| std::ptr::eq(p, target))
-            .unwrap_or(0)
+        self.most(|p| p.force)
     }
 
-    fn most(&self, key: impl Fn(&PeelPoint) -> f64) -> &PeelPoint {
-        // `peel_punch` returns at least the whole face's point.
-        let mut best = &self.points[0];
-        for p in &self.points[1..] {
-            if key(p) < key(best) {
-                best = p;
+    /// The index of the first point of least `key` (`peel_punch` returns
+    /// at least the whole face's point).
+    fn most(&self, key: impl Fn(&PeelPoint) -> f64) -> usize {
+        let mut best = 0;
+        for (k, p) in self.points.iter().enumerate().skip(1) {
+            if key(p) < key(&self.points[best]) {
+                best = k;
             }
         }
         best
