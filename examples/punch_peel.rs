@@ -18,7 +18,9 @@
 //! cargo run --release --example punch_peel -- [disc|square|rectangle] N [fraction [degrees]]
 //! ```
 //!
-//! The face turned by `degrees` on the grid. A negative fraction runs the
+//! The face turned by `degrees` on the grid; the environment variable
+//! `STRETCH` scales the cells by a factor (1 by default), the face kept,
+//! to measure another grid's staircase. A negative fraction runs the
 //! mesh-dependent criterion instead (`solve_depth_hysteretic`, pulled in
 //! steps of 1/200 of the inscribed disc's critical depth to contact loss,
 //! the least force). A fraction of 0 runs
@@ -87,7 +89,13 @@ fn main() -> Result<()> {
     };
     // Even, so that the face lies symmetrically on the cells.
     let n = 2 * (face.bounding_radius() / delta).ceil() as usize + 8;
-    let grid = Grid::square_of_side(n, n as f64 * delta)?;
+    // STRETCH scales the cells (the face unchanged): the staircase of
+    // another grid.
+    let stretch: f64 = std::env::var("STRETCH")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(1.0);
+    let grid = Grid::square_of_side(n, n as f64 * delta * stretch)?;
     let mut solver = ContactSolver::new(
         &Substrate::half_space(rubber),
         &grid,

@@ -101,19 +101,22 @@ fn a_tilted_paraboloid_takes_the_exact_energy_balance_and_a_tilted_cone_the_zone
 }
 
 #[test]
-fn the_cohesive_zone_refuses_what_it_cannot_represent_and_takes_force_control() {
+fn the_automatic_method_for_punches_and_force_control() {
     let mut punch = tilted_cycle(32);
     punch.indenter = IndenterSpec::FlatPunch { radius: 1e-3 };
-    // Automatic: a punch takes the energy balance.
+    // Automatic: a tilted punch takes the cohesive zone (and its peeling
+    // path, tests/scene_tilted_punch.rs), an untilted one the exact
+    // energy balance.
+    assert_eq!(
+        punch.resolved_adhesion_method(),
+        AdhesionMethod::CohesiveZone
+    );
+    punch.validate().unwrap();
+    punch.tilt = None;
     assert_eq!(
         punch.resolved_adhesion_method(),
         AdhesionMethod::EnergyBalance
     );
-    punch.solver.adhesion_method = AdhesionMethod::CohesiveZone;
-    match punch.validate() {
-        Err(Error::Unsupported { reason, .. }) => assert!(reason.contains("rim"), "{reason}"),
-        other => panic!("expected a refusal, got {other:?}"),
-    }
     let mut forced = tilted_cycle(32);
     forced.protocol = Protocol::ForceCycle {
         max_force: 1e-3,

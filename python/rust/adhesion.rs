@@ -58,23 +58,31 @@ pub(crate) fn edge_release<'py>(
     Ok(d)
 }
 
-/// The pull-off of a flat punch (tilted or not) bonded over its whole face
-/// along its peeling path (`ContactSolver::peel_punch`): a dict of arrays over the
+/// The pull-off of a flat punch (tilted or not) bonded over its whole face,
+/// or over `bonded` (a boolean `rows x columns` mask of face cells:
+/// `ContactSolver::peel_punch_from`), along its peeling path
+/// (`ContactSolver::peel_punch`): a dict of arrays over the
 /// path's contacts (`depth` m, `force` N, each the critical one of that
 /// contact; `stiffness` N/m, its bonded `dF/dd`; `contact_cells`; `contact_area` m^2; `peels_x`, `peels_y` m,
 /// where it peels next) and `pull_off_force`, `pull_off_depth`,
 /// `jump_off_depth`, `jump_off_force`, `detaches_at_onset`, `iterations`.
 #[pyfunction]
+#[pyo3(signature = (solver, indenter, work_of_adhesion, bonded=None))]
 pub(crate) fn peel_punch<'py>(
     py: Python<'py>,
     mut solver: PyRefMut<'_, ContactSolver>,
     indenter: &Indenter,
     work_of_adhesion: f64,
+    bonded: Option<PyReadonlyArray2<'py, bool>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let shape = Shared(indenter.inner.clone());
+    let bonded: Option<Vec<bool>> = bonded.map(|b| b.as_array().iter().copied().collect());
     let inner = &mut solver.inner;
     let path = py
-        .detach(|| inner.peel_punch(&shape, work_of_adhesion))
+        .detach(|| match &bonded {
+            Some(cells) => inner.peel_punch_from(&shape, work_of_adhesion, cells),
+            None => inner.peel_punch(&shape, work_of_adhesion),
+        })
         .py_err()?;
     let points = path.points();
     let column =

@@ -221,12 +221,11 @@ pub enum AdhesionMethod {
     /// The method that converges to the JKR limit for the scene: the energy
     /// balance for an untilted flat punch, sphere or cone and any paraboloid
     /// on an isolated grid (their contact sets are discs: exact, and a whole
-    /// cycle for the price of one family of contact sets), for any flat
-    /// punch (its contact is pinned at the
-    /// rim, which the cohesive zone does not represent); the cohesive zone
-    /// for every other scene (tilted curved indenters, height maps, rough
-    /// surfaces, custom indenters, periodic grids), under displacement or
-    /// force control.
+    /// cycle for the price of one family of contact sets); the cohesive zone
+    /// for every other scene (tilted indenters, punches included, height
+    /// maps, rough surfaces, custom indenters, periodic grids), under
+    /// displacement or force control, a punch's unloading along its
+    /// peeling path by the local criterion.
     #[default]
     Auto,
     /// The energy (Griffith) balance over the contact edge along a family of
@@ -262,14 +261,14 @@ pub enum AdhesionMethod {
     /// path (regula falsi, to 1e-6 of the largest force, or to the nearer
     /// side where the path's force snaps across the one asked as a cell joins
     /// or leaves the zone), the contact jumps in at zero force and off at the
-    /// least force the unloading holds. A cycle of a flat punch given as a
-    /// height map or a custom indenter (its face bonded whole at the peak,
-    /// pinned at the rim, where the zone cannot form) unloads along the
-    /// punch's peeling path by the local criterion
-    /// ([`ContactSolver::peel_punch`](crate::solver::ContactSolver::peel_punch)),
-    /// under displacement or force control; the
-    /// [`FlatPunch`](IndenterSpec::FlatPunch) spec refuses the zone (its
-    /// scenes take the energy balance).
+    /// least force the unloading holds. A cycle of a flat punch (the
+    /// [`FlatPunch`](IndenterSpec::FlatPunch) spec, tilted or not, a height
+    /// map or a custom indenter: its contact pinned at the rim, where the
+    /// zone cannot form) unloads along the punch's peeling path by the
+    /// local criterion from the contact bonded at the peak, the whole face
+    /// or a part of it that reaches the rim
+    /// ([`ContactSolver::peel_punch_from`](crate::solver::ContactSolver::peel_punch_from)),
+    /// under displacement or force control.
     CohesiveZone,
 }
 
@@ -422,17 +421,6 @@ impl Scene {
                 reason: "use the energy balance or the cohesive zone for adhesive force control",
             });
         }
-        if self.adhesion != Adhesion::None
-            && method == AdhesionMethod::CohesiveZone
-            && matches!(self.indenter, IndenterSpec::FlatPunch { .. })
-        {
-            return Err(Error::Unsupported {
-                feature: "the cohesive-zone adhesion method on a flat punch",
-                reason: "its contact is pinned at the rim, beyond which the zone cannot form \
-                         (Kendall's punch -23 % at 64 cells across): use the energy balance \
-                         (the automatic choice for punches)",
-            });
-        }
         if !(MIN_CELLS_ACROSS..=8192).contains(&self.resolution.cells_across) {
             return Err(Error::InvalidParameter {
                 name: "cells_across",
@@ -486,8 +474,7 @@ impl Scene {
         if self.solver.adhesion_method != AdhesionMethod::Auto {
             return self.solver.adhesion_method;
         }
-        let punch = matches!(self.indenter, IndenterSpec::FlatPunch { .. });
-        if self.contact_sets_are_discs() || punch {
+        if self.contact_sets_are_discs() {
             AdhesionMethod::EnergyBalance
         } else {
             AdhesionMethod::CohesiveZone

@@ -167,8 +167,9 @@ pub(crate) fn pinned_at_rim() -> Error {
         feature: "the cohesive zone's pull-off of a contact pinned at the rim of a face \
                   (a flat punch)",
         reason: "the zone cannot form beyond the rim, so the contact detaches late and \
-                 weak (Kendall's punch -23 % at 64 cells across); a punch bonded over its \
-                 whole face comes off along ContactSolver::peel_punch's path (Python: \
+                 weak (Kendall's punch -23 % at 64 cells across); a punch bonded at its rim \
+                 over at least 16 cells comes off along its peeling path \
+                 (ContactSolver::peel_punch, peel_punch_from; Python: \
                  layered_contact.peel_punch), a round one also by the energy balance",
     }
 }

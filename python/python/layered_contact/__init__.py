@@ -24,6 +24,9 @@ from __future__ import annotations
 import os
 from typing import Any, Callable, Mapping, Optional, Union
 
+import numpy as np
+import numpy.typing as npt
+
 from . import analytic
 from ._native import refine_heights, rough_surface_heights, subsurface_stress
 from .rough import interface_curve
@@ -109,12 +112,22 @@ def edge_release(
     return _edge_release(solver, indenter, depth, mask, window)
 
 
-def peel_punch(solver: ContactSolver, indenter: Indenter, work_of_adhesion: float) -> dict:
+def peel_punch(
+    solver: ContactSolver,
+    indenter: Indenter,
+    work_of_adhesion: float,
+    bonded: Optional[npt.NDArray[np.bool_]] = None,
+) -> dict:
     """The pull-off of a flat punch, tilted or not, bonded over its whole face
-    (the cells ``indenter`` reaches, ending at a rim inside the grid), by the
-    local Griffith criterion along its peeling path: each contact's critical
-    depth and force, where its first edge cell releases the work of
-    adhesion, then the edge cells near it peeled, to the last few cells.
+    (the cells ``indenter`` reaches, ending at a rim inside the grid), or
+    over ``bonded`` (a boolean ``rows x columns`` mask of face cells: a face
+    bonded in part, such as a tilted face pressed in to where its contact
+    reaches the rim on one side), by the local Griffith criterion along its
+    peeling path: each contact's critical depth and force, where its first
+    edge cell releases the work of adhesion, then the edge cells near it
+    peeled, to the last few cells. A pull-off held by a remnant of less
+    than a sixteenth of the start's cells or of 64 cells is refused as
+    unresolved (``LayeredContactError``: refine the grid).
 
     Returns a dict of arrays over the path's contacts: ``depth`` (m) and
     ``force`` (N) at which each comes off, ``stiffness`` (N/m, its bonded
@@ -125,7 +138,7 @@ def peel_punch(solver: ContactSolver, indenter: Indenter, work_of_adhesion: floa
     ``jump_off_depth``, ``jump_off_force`` (under fixed grips),
     ``detaches_at_onset`` (a disc: True; a punch with corners comes off
     later) and ``iterations``."""
-    return _peel_punch(solver, indenter, work_of_adhesion)
+    return _peel_punch(solver, indenter, work_of_adhesion, bonded)
 
 
 def run_scene(

@@ -1,11 +1,12 @@
-//! The unloading of a flat punch bonded over its whole face, where the
-//! cohesive zone cannot go (its contact is pinned at the rim): the local
-//! Griffith criterion's peeling path
-//! ([`ContactSolver::peel_punch`](crate::solver::ContactSolver::peel_punch))
+//! The unloading of a flat punch bonded at its rim (over its whole face or
+//! a part of it), where the cohesive zone cannot go (its contact is pinned
+//! at the rim): the local Griffith criterion's peeling path from the
+//! contact the loading left
+//! ([`ContactSolver::peel_punch_from`](crate::solver::ContactSolver::peel_punch_from))
 //! walked at the protocol's depths or forces.
 
 use crate::error::{Error, Result};
-use crate::solver::{pinned_at_rim, PeelingPath, WarmStart};
+use crate::solver::{pinned_at_rim, PeelingPath};
 
 use super::super::{Phase, Step, MAX_PROTOCOL_STEPS};
 use super::{next_increment, still_attached, unloading_steps, Runner};
@@ -19,8 +20,8 @@ impl Runner<'_> {
     /// reaches (the most tensile critical force among the path's records of
     /// the most tensile critical depth) is recorded where the protocol
     /// passes its depth, so that [`Curve::pull_off`] is the curve's
-    /// minimum. Refuses (as the cohesive zone does) a contact that is not
-    /// the whole face.
+    /// minimum. Refuses (as the cohesive zone does) a contact of fewer than
+    /// 16 cells, and a pull-off the grid hardly resolves.
     ///
     /// [`Curve::pull_off`]: super::super::Curve::pull_off
     pub(in crate::scene) fn unload_peeled(
@@ -81,7 +82,7 @@ impl Runner<'_> {
         Err(still_attached(limit, depth))
     }
 
-    /// The force-controlled unloading of a punch bonded whole, from
+    /// The force-controlled unloading of a punch bonded at its rim, from
     /// `max_force` down by `decrement` into tension: at each force the
     /// first contact of the peeling path that holds it (each holds down to
     /// its critical force), at the depth where its bonded stiffness carries
@@ -130,22 +131,21 @@ impl Runner<'_> {
         })
     }
 
-    /// The peeling path of the scene's punch, from the face bonded whole
-    /// (the state the loading left): an indenter that is not a punch
-    /// bonded at a rim keeps the cohesive zone's refusal; other errors (no
-    /// convergence, an interrupt) are the solve's own.
+    /// The peeling path of the scene's punch from the cells bonded in the
+    /// state the loading left: too few of them keep the cohesive zone's
+    /// refusal; other errors (an indenter without a rim, a pull-off the grid
+    /// hardly resolves, no convergence, an interrupt) are the path's own.
     fn peeling_path(&mut self) -> Result<PeelingPath> {
         let (_, receding) = self.scene.adhesion.works().unwrap_or((0.0, 0.0));
-        let path = match self.solver.peel_punch(self.indenter, receding) {
-            Err(Error::Unsupported { .. } | Error::InvalidParameter { .. }) => {
-                return Err(pinned_at_rim())
-            }
-            other => other?,
-        };
-        let bonded = self.warm.as_ref().map_or(0, WarmStart::attached_cells);
-        if bonded != path.points()[0].contact_cells {
+        let Some(bonded) = self.warm.as_ref().map(|w| w.attached.clone()) else {
             return Err(pinned_at_rim());
+        };
+        match self
+            .solver
+            .peel_punch_from(self.indenter, receding, &bonded)
+        {
+            Err(Error::InvalidParameter { .. }) => Err(pinned_at_rim()),
+            other => other,
         }
-        Ok(path)
     }
 }

@@ -22,6 +22,28 @@ pub const PEEL_FRACTION: f64 = 0.95;
 /// may end where no edge cell is left to reach the work of adhesion.
 const MIN_FACE_CELLS: usize = 16;
 
+/// A contact of at most this fraction's inverse of the bonded cells at
+/// the start whose edge releases nowhere ends the path (it holds at most
+/// about `16^(-3/4)`, an eighth, of the start's force, by Kendall's
+/// scaling with the area): the window, wider than the remnant, cancels
+/// its facets. Kendall's disc at 64 cells across came to 32 such cells.
+const REMNANT_FRACTION: usize = 16;
+
+/// The width (cells) of the window along the edge for a contact of
+/// `cells` cells: [`EDGE_WINDOW`], or the square root of the cells across
+/// it where that is wider. A digital circle of `R` cells' radius repeats
+/// steps of one pattern over runs of about `sqrt(2 R)` cells, so a fixed
+/// window averages ever less of them and its largest rate rises with the
+/// grid. Measured on Kendall's disc (`examples/punch_peel`, five grid
+/// spacings within 1 % of each other, `BENCHMARKS.md`, "Local release
+/// rates along an edge"): with 8 cells at 64, 128 and 256 cells across
+/// -1.0 to -0.7, -1.7 to -0.35, -2.0 to -1.05 %; with this width the
+/// same at 64 and -1.0 to -0.1, -0.7 to -0.2 % at 128 and 256.
+fn peel_window(cells: usize) -> f64 {
+    let across = 2.0 * (cells as f64 / std::f64::consts::PI).sqrt();
+    EDGE_WINDOW.max(across.sqrt())
+}
+
 /// One bonded contact along a punch's peeling path, at the depth and force
 /// where its first edge cell, pulled, releases the work of adhesion.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -111,6 +133,38 @@ impl PeelingPath {
         visited
     }
 
+    /// Refuses a path whose pull-off or least force under depth control
+    /// is held by a remnant of less than `1 / REMNANT_FRACTION` of the
+    /// cells bonded at the start, or of fewer cells than the square of
+    /// [`EDGE_WINDOW`] (its rates then average its whole edge): a steeply
+    /// tilted face pressed in part comes off at a sliver by its rim, whose
+    /// force is the grid's, not the punch's. A disc of 1 mm tilted by 0.05
+    /// rad, pressed to 0.4 of its rise, on rubber: -19, -4.9, -8.8 mN at 16,
+    /// 32, 64 cells across from remnants of 32 cells and 1 to 4 % of the
+    /// start, -5.0 mN at 128 from 12 %.
+    fn resolved(&self) -> Result<()> {
+        let start = self.points[0].contact_cells;
+        let least_visited = self
+            .visited()
+            .into_iter()
+            .min_by(|&a, &b| self.points[a].force.total_cmp(&self.points[b].force))
+            .unwrap_or(0);
+        let extremes = [self.pull_off_index(), least_visited];
+        if extremes.iter().any(|&k| {
+            let cells = self.points[k].contact_cells;
+            cells * REMNANT_FRACTION < start || (cells as f64) < EDGE_WINDOW * EDGE_WINDOW
+        }) {
+            return Err(Error::Unsupported {
+                feature: "a punch's pull-off at a contact the grid hardly resolves",
+                reason: "the peeling path's most tensile force is held by a remnant of \
+                         less than a sixteenth of the cells bonded at the start or of fewer than \
+                         64 cells (a face pressed in part, coming off at a sliver by its rim): \
+                         refine the grid",
+            });
+        }
+        Ok(())
+    }
+
     /// The index of the point [`pull_off`](Self::pull_off) returns.
     pub(crate) fn pull_off_index(&self) -> usize {
         self.most(|p| p.force)
@@ -180,6 +234,64 @@ impl ContactSolver {
         indenter: &I,
         work_of_adhesion: f64,
     ) -> Result<PeelingPath> {
+        self.peel(indenter, work_of_adhesion, None)
+    }
+
+    /// The peeling path of a flat punch from `bonded` (row-major cells, a
+    /// part of its face): [`peel_punch`](Self::peel_punch) from a punch
+    /// bonded only in part, such as a tilted face pressed in to where its
+    /// contact reaches the rim on one side and ends at a front on the face
+    /// elsewhere (a scene's cohesive-zone loading, whose peak is the
+    /// start). Edge cells on the face peel by the same local criterion as
+    /// those at the rim (the release rates of
+    /// [`edge_release`](Self::edge_release) hold at any edge); none
+    /// advances, as none does while a punch is pulled.
+    ///
+    /// ```
+    /// use layered_contact::indenter::FlatPunch;
+    /// use layered_contact::solver::{ContactSolver, SolverParams};
+    /// use layered_contact::{Boundary, Grid, Material, Substrate};
+    ///
+    /// let rubber = Material::new(1e6, 0.48)?;
+    /// let grid = Grid::square_of_side(32, 3.2e-3)?;
+    /// let body = Substrate::half_space(rubber);
+    /// let mut solver =
+    ///     ContactSolver::new(&body, &grid, Boundary::Isolated, SolverParams::default())?;
+    /// let punch = FlatPunch::new(1e-3)?;
+    /// let whole = solver.peel_punch(&punch, 0.05)?;
+    /// // From the face bonded whole, the same path.
+    /// let face: Vec<bool> = (0..grid.len())
+    ///     .map(|c| {
+    ///         let (x, y) = grid.cell_centre(c / 32, c % 32);
+    ///         x.hypot(y) < 1e-3
+    ///     })
+    ///     .collect();
+    /// let from = solver.peel_punch_from(&punch, 0.05, &face)?;
+    /// assert_eq!(from.pull_off().force, whole.pull_off().force);
+    /// Ok::<(), layered_contact::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`peel_punch`](Self::peel_punch), the 16 cells counted in
+    /// `bonded`; [`Error::ShapeMismatch`] for `bonded` not of the grid's
+    /// length; [`Error::InvalidParameter`] for a bonded cell off the face.
+    pub fn peel_punch_from<I: Indenter + ?Sized>(
+        &mut self,
+        indenter: &I,
+        work_of_adhesion: f64,
+        bonded: &[bool],
+    ) -> Result<PeelingPath> {
+        self.peel(indenter, work_of_adhesion, Some(bonded))
+    }
+
+    /// [`peel_punch`](Self::peel_punch) from `bonded`, or from the whole
+    /// face.
+    fn peel<I: Indenter + ?Sized>(
+        &mut self,
+        indenter: &I,
+        work_of_adhesion: f64,
+        bonded: Option<&[bool]>,
+    ) -> Result<PeelingPath> {
         self.serial_only("peel punch")?;
         let work = crate::error::positive_finite("work_of_adhesion", work_of_adhesion)?;
         let lowest = self.sample_profile(indenter)?;
@@ -188,24 +300,44 @@ impl ContactSolver {
         let (spacing, area) = (grid.spacing(), grid.cell_area());
         let periodic = self.operator.boundary() == crate::grid::Boundary::Periodic;
         let n = grid.len();
-        let mut attached: Vec<bool> = self
+        let on_face: Vec<bool> = self
             .workspace
             .profile
             .iter()
             .map(|h| h.is_finite())
             .collect();
+        let mut attached = match bonded {
+            None => on_face.clone(),
+            Some(b) if b.len() != n => {
+                return Err(Error::ShapeMismatch {
+                    field: "bonded cells",
+                    expected: n,
+                    found: b.len(),
+                })
+            }
+            Some(b) => {
+                if let Some(off) = (0..n).find(|&c| b[c] && !on_face[c]) {
+                    return Err(Error::InvalidParameter {
+                        name: "bonded cell off the punch's face",
+                        value: off as f64,
+                        expected: "bonded cells on the face (cells the indenter reaches)",
+                    });
+                }
+                b.to_vec()
+            }
+        };
         let face = attached.iter().filter(|a| **a).count();
         if face < MIN_FACE_CELLS {
             return Err(Error::InvalidParameter {
                 name: "punch face cells",
                 value: face as f64,
-                expected: "at least 16 cells that the indenter reaches (its face)",
+                expected: "at least 16 cells that the indenter reaches (its face) bonded",
             });
         }
         let rimless = if periodic {
-            face == n
+            on_face.iter().all(|f| *f)
         } else {
-            (0..n).any(|c| attached[c] && super::super::on_outer_ring(c, rows, columns))
+            (0..n).any(|c| on_face[c] && super::super::on_outer_ring(c, rows, columns))
         };
         if rimless {
             return Err(Error::Unsupported {
@@ -255,7 +387,7 @@ impl ContactSolver {
                 shape_displacement: &shape_displacement,
             };
             let forces = EdgeForces::new(&pair, rows, columns, spacing, periodic);
-            let rates = forces.smoothed(spacing, EDGE_WINDOW);
+            let rates = forces.smoothed(spacing, peel_window(cells));
             // The first edge cell to release the work as the depth falls.
             let first = rates
                 .iter()
@@ -263,10 +395,11 @@ impl ContactSolver {
                 .filter_map(|(k, r)| r.critical_depth(work).map(|d| (k, d)))
                 .max_by(|a, b| a.1.total_cmp(&b.1));
             let Some((top, depth)) = first else {
-                if cells < MIN_FACE_CELLS {
+                if cells < MIN_FACE_CELLS || cells * REMNANT_FRACTION <= face {
                     // The last few cells, whose facets cancel (a block of
-                    // two by two has no edge direction): they come off
-                    // with the path's end.
+                    // two by two has no edge direction), or a remnant
+                    // narrower than the window: they come off with the
+                    // path's end.
                     break;
                 }
                 return Err(Error::Unsupported {
@@ -310,11 +443,13 @@ impl ContactSolver {
             .flat_map(|p| [p.force, p.depth, p.stiffness])
             .collect();
         crate::solver::all_finite("peeling path", &values)?;
-        Ok(PeelingPath {
+        let path = PeelingPath {
             points,
             iterations,
             peeled_at,
-        })
+        };
+        path.resolved()?;
+        Ok(path)
     }
 
     /// The pressures, contact and fields of `attached` (row-major cells)
