@@ -41,6 +41,31 @@ pub(super) struct EdgeForces {
     periodic: bool,
 }
 
+impl crate::solver::ContactSolver {
+    /// The two clamped solutions of the energy identity on `attached`
+    /// (row-major cells the indenter reaches): the pressures `punch` of a
+    /// unit depth and `shape` of the face's heights above `lowest`, each
+    /// warm-started from what it holds (zero it off the set first).
+    /// `target` is scratch of the grid's length. Returns the CG
+    /// iterations and the larger residual.
+    pub(super) fn solve_clamped_pair(
+        &mut self,
+        attached: &[bool],
+        lowest: f64,
+        target: &mut [f64],
+        punch: &mut [f64],
+        shape: &mut [f64],
+    ) -> crate::error::Result<(usize, f64)> {
+        target.fill(1.0);
+        let (i1, r1) = self.clamped_cg(attached, target, punch)?;
+        for ((t, h), &on) in target.iter_mut().zip(&self.workspace.profile).zip(attached) {
+            *t = if on { h - lowest } else { 0.0 };
+        }
+        let (i2, r2) = self.clamped_cg(attached, target, shape)?;
+        Ok((i1 + i2, r1.max(r2)))
+    }
+}
+
 /// The fields of the two clamped solutions on one set.
 pub(super) struct ClampedPair<'a> {
     pub(super) attached: &'a [bool],

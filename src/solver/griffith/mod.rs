@@ -427,14 +427,8 @@ impl ContactSolver {
                              mesh-dependent criterion",
                 });
             }
-            for &(c, _) in &order[..m] {
-                target[c] = 1.0;
-            }
-            let (i1, r1) = self.clamped_cg(&attached, &target, &mut punch)?;
-            for &(c, _) in &order[..m] {
-                target[c] = self.workspace.profile[c] - lowest;
-            }
-            let (i2, r2) = self.clamped_cg(&attached, &target, &mut shape)?;
+            let (solved, worst) =
+                self.solve_clamped_pair(&attached, lowest, &mut target, &mut punch, &mut shape)?;
             let (mut k, mut f1, mut f2) = (0.0, 0.0, 0.0);
             for &(c, _) in &order[..m] {
                 k += punch[c];
@@ -452,11 +446,11 @@ impl ContactSolver {
                 "adhesive energy balance",
                 &[values.stiffness, values.shape_force, values.shape_energy],
             )?;
-            iterations += i1 + i2;
-            residual = residual.max(r1).max(r2);
+            iterations += solved;
+            residual = residual.max(worst);
             observer.observe(&IterationInfo {
                 iteration: index + 1,
-                residual: r1.max(r2),
+                residual: worst,
                 contact_cells: m,
             });
             raw.push(values);

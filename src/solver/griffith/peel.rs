@@ -367,14 +367,10 @@ impl ContactSolver {
                     punch[c] = 0.0;
                     shape[c] = 0.0;
                 }
-                target[c] = 1.0;
             }
-            let (i1, _) = self.clamped_cg(&attached, &target, &mut punch)?;
-            for (t, h) in target.iter_mut().zip(&self.workspace.profile) {
-                *t = if h.is_finite() { h - lowest } else { 0.0 };
-            }
-            let (i2, _) = self.clamped_cg(&attached, &target, &mut shape)?;
-            iterations += i1 + i2;
+            let (solved, _) =
+                self.solve_clamped_pair(&attached, lowest, &mut target, &mut punch, &mut shape)?;
+            iterations += solved;
             self.operator.apply(&punch, &mut punch_displacement)?;
             self.operator.apply(&shape, &mut shape_displacement)?;
             let pair = ClampedPair {
