@@ -31,6 +31,14 @@ fn seeds() -> Vec<(bool, String)> {
     vec![
         toml(include_str!("../examples/scenes/sphere_on_film.toml")),
         json(include_str!("../examples/scenes/punch_on_half_space.json")),
+        json(
+            "{\"substrate\": {\"kind\": \"half_space\", \"youngs_modulus\": 1e6, \"poisson_ratio\": 0.5},\n\
+             \"indenter\": {\"kind\": \"flat_punch\", \"radius\": 1e-3},\n\
+             \"tilt\": {\"angle_y\": 0.02},\n\
+             \"adhesion\": {\"kind\": \"constant\", \"work_of_adhesion\": 0.3},\n\
+             \"protocol\": {\"kind\": \"cycle\", \"max_depth\": 2e-5, \"steps\": 4},\n\
+             \"resolution\": {\"cells_across\": 16}}\n",
+        ),
         toml(
             "[substrate]\nkind = \"layer_on_elastic_base\"\nyoungs_modulus = 1e6\npoisson_ratio = 0.45\n\
              thickness = 1e-3\nbase_youngs_modulus = 1e9\nbase_poisson_ratio = 0.3\n\

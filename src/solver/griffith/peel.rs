@@ -23,10 +23,12 @@ pub const PEEL_FRACTION: f64 = 0.95;
 const MIN_FACE_CELLS: usize = 16;
 
 /// A contact of at most this fraction's inverse of the bonded cells at
-/// the start whose edge releases nowhere ends the path (it holds at most
-/// about `16^(-3/4)`, an eighth, of the start's force, by Kendall's
-/// scaling with the area): the window, wider than the remnant, cancels
-/// its facets. Kendall's disc at 64 cells across came to 32 such cells.
+/// the start (or of fewer cells than the square of [`EDGE_WINDOW`]) whose
+/// edge releases nowhere ends the path (it holds at most about
+/// `16^(-3/4)`, an eighth, of the start's force, by Kendall's scaling with
+/// the area, and a pull-off there is refused as unresolved): the window,
+/// wider than the remnant, cancels its facets. Kendall's disc at 64 cells
+/// across came to 32 such cells.
 const REMNANT_FRACTION: usize = 16;
 
 /// The width (cells) of the window along the edge for a contact of
@@ -391,11 +393,14 @@ impl ContactSolver {
                 .filter_map(|(k, r)| r.critical_depth(work).map(|d| (k, d)))
                 .max_by(|a, b| a.1.total_cmp(&b.1));
             let Some((top, depth)) = first else {
-                if cells < MIN_FACE_CELLS || cells * REMNANT_FRACTION <= face {
+                let remnant =
+                    cells * REMNANT_FRACTION <= face || (cells as f64) < EDGE_WINDOW * EDGE_WINDOW;
+                if cells < MIN_FACE_CELLS || remnant {
                     // The last few cells, whose facets cancel (a block of
                     // two by two has no edge direction), or a remnant
-                    // narrower than the window: they come off with the
-                    // path's end.
+                    // narrower than the window, too small to hold a
+                    // resolved pull-off (`PeelingPath::resolved`): they
+                    // come off with the path's end.
                     break;
                 }
                 return Err(Error::Unsupported {
