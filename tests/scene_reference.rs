@@ -77,6 +77,24 @@ fn punch_references_are_closed_forms_and_bound_the_bem() {
     let curve = scene.run(&mut |_| {}).unwrap();
     let bem = Quantity::Stiffness.of(&curve).unwrap();
     assert!((bem / stiffness - 1.0).abs() < 0.01, "{}", bem / stiffness);
+    // A tilt of zero angles is no tilt: the same exact values (it had none).
+    let level = Scene {
+        tilt: Some(layered_contact::scene::Tilt {
+            angle_x: 0.0,
+            angle_y: 0.0,
+        }),
+        ..scene.clone()
+    };
+    assert_eq!(level.reference().unwrap(), scene.reference().unwrap());
+    // A real tilt has none.
+    let tilted = Scene {
+        tilt: Some(layered_contact::scene::Tilt {
+            angle_x: 1e-3,
+            angle_y: 0.0,
+        }),
+        ..scene
+    };
+    assert!(tilted.reference().unwrap().is_empty());
 }
 
 /// No reference where there is no exact solution: a cone, a tilt, a

@@ -84,8 +84,9 @@ fn a_tilted_punch_comes_off_by_the_local_criterion() {
     );
     let curve = scene.run(&mut |_| {}).unwrap();
     assert!(curve.caveats.is_empty(), "{:?}", curve.caveats);
-    // Measured: 1.0027, 1.0087 and 1.0177 of the onset at 32, 64 and 128
-    // cells across (the face bonded whole at the peak).
+    // Measured: 1.0157, 1.0151, 1.0049 and 1.0080 of the onset at 16, 32,
+    // 64 and 128 cells across (the face bonded whole at the peak; the path
+    // comes off 1 to 2 % beyond its onset, tests/peel_punch.rs).
     let ratio = curve.pull_off().unwrap().force / onset;
     assert!((1.0..1.03).contains(&ratio), "{ratio}");
     // The energy balance, the automatic method before: 1.076, flagged.
@@ -126,24 +127,34 @@ fn a_tilted_punch_under_force_control_comes_off_at_its_paths_pull_off() {
 fn a_punch_bonded_in_part_peels_from_its_front_and_its_rim() {
     // Tilted by 0.02 rad, the face rises 20 um across its radius: at the
     // peak the zone has zipped it in up to a sliver at the high side.
-    let curve = punch_cycle(0.02, 64).run(&mut |_| {}).unwrap();
+    let scene = punch_cycle(0.02, 64);
+    let curve = scene.run(&mut |_| {}).unwrap();
     let peak = curve
         .phase(Phase::Loading)
         .map(|s| s.contact_area)
         .fold(0.0, f64::max);
-    assert!(peak < 0.995 * PI * RADIUS * RADIUS, "{peak}");
-    // Against the run at 128 cells across (-25.610 mN; -24.4, -27.4 and
-    // -26.0 mN at 16, 32 and 64): within 1.6 %.
-    let error = curve.pull_off().unwrap().force / -25.610e-3 - 1.0;
-    assert!(error.abs() < 0.025, "{error}");
+    let grid = scene.grid().unwrap();
+    let n = grid.columns();
+    let face = (0..grid.len())
+        .filter(|&c| {
+            let (x, y) = grid.cell_centre(c / n, c % n);
+            x.hypot(y) <= RADIUS
+        })
+        .count() as f64
+        * grid.cell_area();
+    assert!(peak < 0.995 * face, "{peak} {face}");
+    // Against the run at 128 cells across (-25.797 mN; -24.62, -27.77 and
+    // -26.02 mN at 16, 32 and 64): within 0.9 % at 64.
+    let error = curve.pull_off().unwrap().force / -25.797e-3 - 1.0;
+    assert!(error.abs() < 0.02, "{error}");
 }
 
 #[test]
 fn a_pull_off_at_a_sliver_is_refused() {
     // Tilted by 0.05 rad and pressed 20 um, the face is bonded over its
     // lower part only, and its least force is held by a sliver by the rim
-    // that 32 cells across do not resolve (-4.9 mN at 32, -8.8 at 64,
-    // -5.0 at 128 where it is 12 % of the start).
+    // that 16 and 32 cells across do not resolve (-4.75 mN at 64, -5.09
+    // at 128).
     match punch_cycle(0.05, 32).run(&mut |_| {}) {
         Err(Error::Unsupported { reason, .. }) => assert!(reason.contains("refine")),
         other => panic!("expected a refusal, got {other:?}"),
@@ -192,7 +203,7 @@ proptest::proptest! {
     /// Tilted punch cycles of any tilt, depth, work of adhesion and
     /// control at 16 to 24 cells across: a curve with finite numbers whose
     /// pull-off is tensile, or a typed error (400 cases with this seed on
-    /// 2026-11-27: 125 curves; 197 pull-offs at unresolved slivers, tilts
+    /// 2026-11-27: 119 curves; 203 pull-offs at unresolved slivers, tilts
     /// from about one and a half of Kendall's depth over the radius; 37
     /// contacts of fewer than 16 cells bonded at the rim; 41 still attached
     /// 20 peak depths out).

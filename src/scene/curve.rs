@@ -100,7 +100,9 @@ pub enum Caveat {
     /// or with a face that is not round) the balance is too strong (a
     /// square by 7 to 9 %):
     /// [`ContactSolver::peel_punch`](crate::solver::ContactSolver::peel_punch)
-    /// gives its pull-off by the local criterion. See
+    /// gives its pull-off by the local criterion, and a scene of a flat
+    /// punch through the cohesive zone (the automatic method for a tilted
+    /// one) unloads along that path. See
     /// [`AdhesiveBranches::edge_averaged`](crate::solver::AdhesiveBranches::edge_averaged).
     EdgeAveragedAdhesion,
     /// The mesh-dependent adhesion criterion (Pohrt & Popov 2015, the

@@ -508,9 +508,7 @@ impl Scene {
     /// paraboloid (`r^2 / 2R + x tan(t)` is the paraboloid about `x = -R
     /// tan(t)`, lowered by `R tan(t)^2 / 2`).
     pub(crate) fn contact_sets_are_discs(&self) -> bool {
-        let untilted = self
-            .tilt
-            .is_none_or(|t| t.angle_x == 0.0 && t.angle_y == 0.0);
+        let untilted = self.untilted();
         self.boundary == Boundary::Isolated
             && match self.indenter {
                 IndenterSpec::Paraboloid { .. } => true,
@@ -519,6 +517,12 @@ impl Scene {
                 | IndenterSpec::FlatPunch { .. } => untilted,
                 _ => false,
             }
+    }
+
+    /// Whether the scene has no tilt, or a tilt of zero angles.
+    pub(crate) fn untilted(&self) -> bool {
+        self.tilt
+            .is_none_or(|t| t.angle_x == 0.0 && t.angle_y == 0.0)
     }
 
     /// Makes a relative height-map path relative to `folder` (the folder of

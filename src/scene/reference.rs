@@ -64,7 +64,7 @@ impl Scene {
     /// As [`Scene::validate`], and failures of the exact solution.
     pub fn reference(&self) -> Result<Vec<Reference>> {
         self.validate()?;
-        if self.boundary != Boundary::Isolated || self.tilt.is_some() {
+        if self.boundary != Boundary::Isolated || !self.untilted() {
             return Ok(Vec::new());
         }
         let substrate = self.substrate.build()?;
