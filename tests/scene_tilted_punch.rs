@@ -248,3 +248,23 @@ proptest::proptest! {
         }
     }
 }
+
+#[test]
+fn every_punch_grid_keeps_a_ring_of_cells_off_the_face() {
+    // The face of the spacing adjusted to the staircase's area reached the
+    // outer ring of `n + 2` cells at 68, 78, 88, 106, ... cells across, and
+    // the peeling path refused it; the grid now widens (the same parity).
+    for cells in 8..=300 {
+        for tilt in [0.0, 1e-3] {
+            let grid = punch_cycle(tilt, cells).grid().unwrap();
+            let n = grid.columns();
+            for c in 0..grid.len() {
+                let (i, j) = (c / n, c % n);
+                if i == 0 || j == 0 || i == n - 1 || j == n - 1 {
+                    let (x, y) = grid.cell_centre(i, j);
+                    assert!(x.hypot(y) > RADIUS, "{cells} cells across: {n}");
+                }
+            }
+        }
+    }
+}

@@ -153,7 +153,7 @@ impl Scene {
         self.indenter.build(self.tilt)?;
         let n = self.resolution.cells_across;
         if let IndenterSpec::FlatPunch { radius } = self.indenter {
-            let cells = fft_friendly(n + 2);
+            let mut cells = fft_friendly(n + 2);
             // The energy balance's sets are shifted discs (EDGE_SHIFT), so
             // its punch is too, and so is the peeling path's that unloads
             // the cohesive zone's punch (Kendall -0.07, -0.26, -0.60 % at
@@ -170,7 +170,20 @@ impl Scene {
                 }
                 _ => 0.0,
             };
-            return Grid::new(cells, cells, equal_area_spacing(radius, n, cells, shift));
+            let spacing = equal_area_spacing(radius, n, cells, shift);
+            // A ring of cells off the face all round (the peeling path
+            // needs its rim inside the grid): the spacing is within 2 % of
+            // `2a / n`, so the face may reach `n + 2` cells' outer ring
+            // (at 68, 78, 88, 106 cells across, among others). The next
+            // size of the same parity keeps the staircase (the punch
+            // centred on a cell or a corner as before).
+            for _ in 0..MAX_WIDENINGS {
+                if !face_reaches_outer_ring(radius / spacing, cells) {
+                    break;
+                }
+                cells = next_fft_friendly_of_parity(cells);
+            }
+            return Grid::new(cells, cells, spacing);
         }
         let peak = self.contact_radius_estimate()?;
         let (peak, resolved) = match self.adhesive_radii(peak) {
@@ -208,6 +221,32 @@ impl Scene {
         let cells = fft_friendly(cells as usize);
         Grid::new(cells, cells, spacing)
     }
+}
+
+/// Widenings of a punch's grid tried before it is used as it is.
+const MAX_WIDENINGS: usize = 16;
+
+/// Whether a disc of `radius` cells about the centre of a `cells`-wide
+/// square grid holds the centre of a cell of its outer ring.
+fn face_reaches_outer_ring(radius: f64, cells: usize) -> bool {
+    let edge = 0.5 * cells as f64 - 0.5;
+    let off = if cells.is_multiple_of(2) { 0.5 } else { 0.0 };
+    radius >= edge.hypot(off)
+}
+
+/// The next FFT-friendly size above `cells` of the same parity (bounded:
+/// even sizes are every power of two apart at most; odd ones are products
+/// of 3, 5 and 7).
+fn next_fft_friendly_of_parity(cells: usize) -> usize {
+    let mut candidate = cells + 1;
+    for _ in 0..64 {
+        let size = fft_friendly(candidate);
+        if size % 2 == cells % 2 {
+            return size;
+        }
+        candidate = size + 1;
+    }
+    cells + 2
 }
 
 /// A spacing within 2 % of `2 radius / n` for which the cells of a
