@@ -1,0 +1,104 @@
+//! The peeling path on a periodic grid: an array of flat punches, one per
+//! period, comes off at Kendall's force of the lone punch as the period
+//! grows (the images stiffen the contact, by a share falling about like
+//! `(a / L)^2.5`); a scene of an untilted punch on a periodic grid takes
+//! the cohesive zone and this path.
+
+use std::f64::consts::PI;
+
+use layered_contact::indenter::FlatPunch;
+use layered_contact::solver::{ContactSolver, SolverParams};
+use layered_contact::{Boundary, Grid, Material, Substrate};
+
+#[test]
+fn a_periodic_array_of_punches_tends_to_kendalls_lone_punch() {
+    let (e, nu, work, a): (f64, f64, f64, f64) = (1e6, 0.5, 0.3, 1e-3);
+    let material = Material::new(e, nu).unwrap();
+    let kendall = (8.0 * PI * a.powi(3) * material.contact_modulus() * work).sqrt();
+    let spacing = 2.0 * a / 32.0;
+    let pull_off = |cells: usize, boundary: Boundary| {
+        let grid = Grid::square_of_side(cells, cells as f64 * spacing).unwrap();
+        let mut solver = ContactSolver::new(
+            &Substrate::half_space(material),
+            &grid,
+            boundary,
+            SolverParams::default(),
+        )
+        .unwrap();
+        let path = solver
+            .peel_punch(&FlatPunch::new(a).unwrap(), work)
+            .unwrap();
+        assert!(path.detaches_at_onset());
+        -path.pull_off().force / kendall
+    };
+    // Measured: 1.2691, 1.0775, 1.0356, 1.0129, 1.0074 at periods of 1.12,
+    // 1.5, 2, 3, 4 diameters; the lone punch on the same cells 0.9996.
+    let lone = pull_off(48, Boundary::Isolated);
+    assert!((lone - 1.0).abs() < 0.005, "{lone}");
+    let arrays: Vec<f64> = [48, 64, 96]
+        .iter()
+        .map(|&n| pull_off(n, Boundary::Periodic))
+        .collect();
+    assert!(arrays.windows(2).all(|w| w[1] < w[0]), "{arrays:?}");
+    assert!(arrays[2] > lone && arrays[2] - lone < 0.02, "{arrays:?}");
+    // The excess falls about like the period to the power -2.5 (2.76
+    // from two to three diameters).
+    let fall = (arrays[1] - lone) / (arrays[2] - lone);
+    assert!((2.0..3.5).contains(&fall), "{fall}");
+}
+
+#[test]
+fn a_punch_scene_on_a_periodic_grid_comes_off_along_its_path() {
+    use layered_contact::scene::{
+        Adhesion, AdhesionMethod, IndenterSpec, Protocol, Resolution, Scene, SubstrateSpec,
+    };
+    let (e, nu, work, a): (f64, f64, f64, f64) = (1e6, 0.5, 0.3, 1e-3);
+    let scene = Scene {
+        boundary: Boundary::Periodic,
+        substrate: SubstrateSpec::HalfSpace {
+            youngs_modulus: e,
+            poisson_ratio: nu,
+        },
+        indenter: IndenterSpec::FlatPunch { radius: a },
+        adhesion: Adhesion::Constant {
+            work_of_adhesion: work,
+        },
+        protocol: Protocol::Cycle {
+            max_depth: 2e-5,
+            steps: 4,
+        },
+        resolution: Resolution {
+            cells_across: 32,
+            ..Resolution::default()
+        },
+        ..Scene::default()
+    };
+    // The energy balance refuses a contact spanning over half the period.
+    assert_eq!(
+        scene.resolved_adhesion_method(),
+        AdhesionMethod::CohesiveZone
+    );
+    let curve = scene.run(&mut |_| {}).unwrap();
+    let grid = scene.grid().unwrap();
+    let material = Material::new(e, nu).unwrap();
+    let mut solver = ContactSolver::new(
+        &Substrate::half_space(material),
+        &grid,
+        Boundary::Periodic,
+        SolverParams::default(),
+    )
+    .unwrap();
+    let path = solver
+        .peel_punch(&FlatPunch::new(a).unwrap(), work)
+        .unwrap();
+    let (scene_force, library) = (curve.pull_off().unwrap().force, path.pull_off().force);
+    assert!(
+        (scene_force / library - 1.0).abs() < 1e-6,
+        "{scene_force} {library}"
+    );
+    // Its period about 1.1 diameters: the images stiffen it (1.27 times
+    // Kendall's lone punch at a period of 1.12 diameters, above).
+    let kendall = (8.0 * PI * a.powi(3) * material.contact_modulus() * work).sqrt();
+    let ratio = -scene_force / kendall;
+    assert!((1.1..1.4).contains(&ratio), "{ratio}");
+}
