@@ -180,6 +180,31 @@ fn cases() -> Result<Vec<Case>> {
         cells: (8, 512),
         order: 1.0,
     });
+    // The same punch by the local criterion: loaded through the cohesive
+    // zone, unloaded along its peeling path (the automatic method of a
+    // tilted punch; named here, the untilted one taking the energy
+    // balance).
+    let mut peeled = base(
+        layer(h),
+        IndenterSpec::FlatPunch { radius: a },
+        Adhesion::Constant {
+            work_of_adhesion: 0.326,
+        },
+        Protocol::Cycle {
+            max_depth: 2e-4,
+            steps: 20,
+        },
+    );
+    peeled.solver.adhesion_method = AdhesionMethod::CohesiveZone;
+    cases.push(Case {
+        name: "punch_jkr_layer_pull_off/peeling_path",
+        scene: peeled,
+        quantity: Quantity::PullOffForce,
+        reference: pull_off,
+        exact: (seconds, exact_error),
+        cells: (16, 256),
+        order: 1.0,
+    });
     cases.extend(sphere_pull_off_cases()?);
     Ok(cases)
 }
