@@ -35,6 +35,7 @@
 //! | JKR sphere pull-off, energy balance (default) | 0.0005-0.07 % (0.3 % or less at 16 cells) | staircase noise, up to 0.25 % below 64 cells |
 //! | JKR sphere pull-off, mesh-dependent criterion | 0.02-4.2 % | about `3/N` on a half-space, irregular on layers |
 //! | Kendall pull-off (flat punch, energy balance) | 0.02 % | staircase noise below 0.15 % |
+//! | Kendall pull-off on a layer, the cohesive zone and the peeling path (`punch_jkr_layer_pull_off/peeling_path`) | 0.25 % | 0.14 % at 16 cells, 0.59 / 0.55 % at 128 / 256: a bias of about -0.5 % that does not vanish (the largest smoothed release rate of the staircase's edge) |
 //!
 //! The row of the incompressible layer is `layered-contact run
 //! examples/scenes/punch_on_incompressible_film.toml` at 64, 128 and 256
