@@ -102,3 +102,54 @@ fn a_punch_scene_on_a_periodic_grid_comes_off_along_its_path() {
     let ratio = -scene_force / kendall;
     assert!((1.1..1.4).contains(&ratio), "{ratio}");
 }
+
+#[test]
+fn a_small_bonded_patch_is_refused_not_a_panic() {
+    // Blocks of 4 x 4 to 7 x 7 cells bonded in the middle of a large
+    // face: their pull-off is held by fewer than 64 cells, refused as
+    // unresolved (measured: all four); whatever the path, a typed error or
+    // a finite tensile pull-off.
+    let material = Material::new(1e6, 0.5).unwrap();
+    let grid = Grid::square_of_side(48, 48.0 * 1e-4).unwrap();
+    let mut solver = ContactSolver::new(
+        &Substrate::half_space(material),
+        &grid,
+        Boundary::Isolated,
+        SolverParams::default(),
+    )
+    .unwrap();
+    let punch = FlatPunch::new(2e-3).unwrap();
+    for side in 4..=7usize {
+        let lo = 24 - side / 2;
+        let block: Vec<bool> = (0..grid.len())
+            .map(|c| {
+                let (i, j) = (c / 48, c % 48);
+                (lo..lo + side).contains(&i) && (lo..lo + side).contains(&j)
+            })
+            .collect();
+        match solver.peel_punch_from(&punch, 0.3, &block) {
+            Ok(path) => {
+                let p = path.pull_off();
+                assert!(p.force.is_finite() && p.force < 0.0, "{side}: {p:?}");
+            }
+            Err(e) => assert!(
+                matches!(e, layered_contact::Error::Unsupported { .. }),
+                "{side}: {e}"
+            ),
+        }
+    }
+    // Four blocks of two by two, apart (16 cells): no edge direction
+    // anywhere, so no edge cell releases at the start.
+    let blocks: Vec<bool> = (0..grid.len())
+        .map(|c| {
+            let (i, j) = (c / 48, c % 48);
+            [(16, 16), (16, 30), (30, 16), (30, 30)]
+                .iter()
+                .any(|&(r, k)| (r..r + 2).contains(&i) && (k..k + 2).contains(&j))
+        })
+        .collect();
+    assert!(matches!(
+        solver.peel_punch_from(&punch, 0.3, &blocks),
+        Err(layered_contact::Error::Unsupported { .. })
+    ));
+}

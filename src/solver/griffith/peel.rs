@@ -46,6 +46,16 @@ fn peel_window(cells: usize) -> f64 {
     EDGE_WINDOW.max(across.sqrt())
 }
 
+/// The refusal of a contact whose edge never releases the work of
+/// adhesion.
+fn never_releases() -> Error {
+    Error::Unsupported {
+        feature: "peeling a contact whose edge never releases the work of adhesion",
+        reason: "a pulled punch's edge releases energy without bound; this contact's rates do \
+                 not grow as it is pulled (or it is under the window's size)",
+    }
+}
+
 /// One bonded contact along a punch's peeling path, at the depth and force
 /// where its first edge cell, pulled, releases the work of adhesion.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -141,11 +151,15 @@ impl PeelingPath {
     /// [`EDGE_WINDOW`] (its rates then average its whole edge): a steeply
     /// tilted face pressed in part comes off at a sliver by its rim, whose
     /// force is the grid's, not the punch's. A disc of 1 mm tilted by 0.05
-    /// rad, pressed to 0.4 of its rise, on rubber: -19, -4.9, -8.8 mN at 16,
-    /// 32, 64 cells across from remnants of 32 cells and 1 to 4 % of the
-    /// start, -5.0 mN at 128 from 12 %.
+    /// rad, pressed to 0.4 of its rise, on rubber (the equal-area
+    /// staircase): -19, -4.9, -8.8 mN at 16, 32, 64 cells across from
+    /// remnants of 32 cells and 1 to 4 % of the start, -5.0 mN at 128 from
+    /// 12 %.
     fn resolved(&self) -> Result<()> {
-        let start = self.points[0].contact_cells;
+        let Some(first) = self.points.first() else {
+            return Err(never_releases());
+        };
+        let start = first.contact_cells;
         let least_visited = self
             .visited()
             .into_iter()
@@ -403,11 +417,7 @@ impl ContactSolver {
                     // come off with the path's end.
                     break;
                 }
-                return Err(Error::Unsupported {
-                    feature: "peeling a contact whose edge never releases the work of adhesion",
-                    reason: "a pulled punch's edge releases energy without bound; this contact's \
-                             rates do not grow as it is pulled",
-                });
+                return Err(never_releases());
             };
             let (stiffness, shape_force) = (0..n)
                 .filter(|&c| attached[c])
@@ -444,6 +454,11 @@ impl ContactSolver {
             .flat_map(|p| [p.force, p.depth, p.stiffness])
             .collect();
         crate::solver::all_finite("peeling path", &values)?;
+        if points.is_empty() {
+            // A bonded set under the window's size whose facets cancel at
+            // the start: no edge cell ever released.
+            return Err(never_releases());
+        }
         let path = PeelingPath {
             points,
             iterations,
