@@ -2,7 +2,8 @@
 //! period, comes off at Kendall's force of the lone punch as the period
 //! grows (the images stiffen the contact, by a share falling about like
 //! `(a / L)^2.5`); a scene of an untilted punch on a periodic grid takes
-//! the cohesive zone and this path.
+//! the cohesive zone and this path. Small bonded patches end in a typed
+//! error.
 
 use std::f64::consts::PI;
 
