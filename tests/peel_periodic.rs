@@ -11,22 +11,31 @@ use layered_contact::indenter::FlatPunch;
 use layered_contact::solver::{ContactSolver, SolverParams};
 use layered_contact::{Boundary, Grid, Material, Substrate};
 
+/// Incompressible rubber.
+const E: f64 = 1e6;
+const NU: f64 = 0.5;
+
+/// A solver for the rubber half-space on `grid`.
+fn solver_on(grid: &Grid, boundary: Boundary) -> ContactSolver {
+    let rubber = Material::new(E, NU).unwrap();
+    ContactSolver::new(
+        &Substrate::half_space(rubber),
+        grid,
+        boundary,
+        SolverParams::default(),
+    )
+    .unwrap()
+}
+
 #[test]
 fn a_periodic_array_of_punches_tends_to_kendalls_lone_punch() {
-    let (e, nu, work, a): (f64, f64, f64, f64) = (1e6, 0.5, 0.3, 1e-3);
-    let material = Material::new(e, nu).unwrap();
+    let (work, a): (f64, f64) = (0.3, 1e-3);
+    let material = Material::new(E, NU).unwrap();
     let kendall = (8.0 * PI * a.powi(3) * material.contact_modulus() * work).sqrt();
     let spacing = 2.0 * a / 32.0;
     let pull_off = |cells: usize, boundary: Boundary| {
         let grid = Grid::square_of_side(cells, cells as f64 * spacing).unwrap();
-        let mut solver = ContactSolver::new(
-            &Substrate::half_space(material),
-            &grid,
-            boundary,
-            SolverParams::default(),
-        )
-        .unwrap();
-        let path = solver
+        let path = solver_on(&grid, boundary)
             .peel_punch(&FlatPunch::new(a).unwrap(), work)
             .unwrap();
         assert!(path.detaches_at_onset());
@@ -53,12 +62,12 @@ fn a_punch_scene_on_a_periodic_grid_comes_off_along_its_path() {
     use layered_contact::scene::{
         Adhesion, AdhesionMethod, IndenterSpec, Protocol, Resolution, Scene, SubstrateSpec,
     };
-    let (e, nu, work, a): (f64, f64, f64, f64) = (1e6, 0.5, 0.3, 1e-3);
+    let (work, a): (f64, f64) = (0.3, 1e-3);
     let scene = Scene {
         boundary: Boundary::Periodic,
         substrate: SubstrateSpec::HalfSpace {
-            youngs_modulus: e,
-            poisson_ratio: nu,
+            youngs_modulus: E,
+            poisson_ratio: NU,
         },
         indenter: IndenterSpec::FlatPunch { radius: a },
         adhesion: Adhesion::Constant {
@@ -81,15 +90,8 @@ fn a_punch_scene_on_a_periodic_grid_comes_off_along_its_path() {
     );
     let curve = scene.run(&mut |_| {}).unwrap();
     let grid = scene.grid().unwrap();
-    let material = Material::new(e, nu).unwrap();
-    let mut solver = ContactSolver::new(
-        &Substrate::half_space(material),
-        &grid,
-        Boundary::Periodic,
-        SolverParams::default(),
-    )
-    .unwrap();
-    let path = solver
+    let material = Material::new(E, NU).unwrap();
+    let path = solver_on(&grid, Boundary::Periodic)
         .peel_punch(&FlatPunch::new(a).unwrap(), work)
         .unwrap();
     let (scene_force, library) = (curve.pull_off().unwrap().force, path.pull_off().force);
@@ -110,15 +112,8 @@ fn a_small_bonded_patch_is_refused_not_a_panic() {
     // face: their pull-off is held by fewer than 64 cells, refused as
     // unresolved (measured: all four); whatever the path, a typed error or
     // a finite tensile pull-off.
-    let material = Material::new(1e6, 0.5).unwrap();
     let grid = Grid::square_of_side(48, 48.0 * 1e-4).unwrap();
-    let mut solver = ContactSolver::new(
-        &Substrate::half_space(material),
-        &grid,
-        Boundary::Isolated,
-        SolverParams::default(),
-    )
-    .unwrap();
+    let mut solver = solver_on(&grid, Boundary::Isolated);
     let punch = FlatPunch::new(2e-3).unwrap();
     for side in 4..=7usize {
         let lo = 24 - side / 2;

@@ -286,13 +286,7 @@ proptest::proptest! {
                 }
                 proptest::prop_assert!(path.pull_off().force <= path.points()[0].force);
             }
-            Err(e) => {
-                let typed = matches!(
-                    e,
-                    Error::InvalidParameter { .. } | Error::Unsupported { .. } | Error::NoConvergence { .. }
-                );
-                proptest::prop_assert!(typed, "{e}");
-            }
+            Err(e) => proptest::prop_assert!(common::refused(&e), "{e}"),
         }
     }
 }

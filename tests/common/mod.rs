@@ -13,6 +13,19 @@ pub fn case_seconds() -> u64 {
         .unwrap_or(60)
 }
 
+/// Whether `e` is one of the typed refusals a solve may end in on an
+/// input it cannot represent: an invalid parameter, an unsupported case,
+/// or no convergence (never a panic or NaN).
+#[allow(dead_code)]
+pub fn refused(e: &layered_contact::Error) -> bool {
+    matches!(
+        e,
+        layered_contact::Error::InvalidParameter { .. }
+            | layered_contact::Error::Unsupported { .. }
+            | layered_contact::Error::NoConvergence { .. }
+    )
+}
+
 /// Runs `f` on its own thread and returns its value, or panics with "hang"
 /// if it takes longer than [`case_seconds`] (the thread is left behind; the
 /// test has failed). A panic inside `f` is passed on.
