@@ -2,8 +2,8 @@
 //! critical force along a peeling path, from the local release rates of
 //! [`ContactSolver::edge_release`].
 //!
-//! A flat punch (a disc, a square or a rectangle, `N` cells across its
-//! short side) bonded over its whole face on the rubber half-space
+//! A flat punch (a disc, a square, a 2:1 rectangle or a 2:1 ellipse, `N`
+//! cells across its short side) bonded over its whole face on the rubber half-space
 //! (`E = 1 MPa`, `nu = 0.48`, `dgamma = 0.05 J/m^2`) is held at a depth;
 //! the force at which its largest release rate reaches the work of adhesion
 //! is `F_crit = F sqrt(dgamma / G_max)` (`G` grows like the force squared).
@@ -15,12 +15,15 @@
 //! peeled contacts hold more.
 //!
 //! ```text
-//! cargo run --release --example punch_peel -- [disc|square|rectangle] N [fraction [degrees]]
+//! cargo run --release --example punch_peel -- [disc|square|rectangle|ellipse] N [fraction [degrees]]
 //! ```
 //!
 //! The face turned by `degrees` on the grid; the environment variable
 //! `STRETCH` scales the cells by a factor (1 by default), the face kept,
-//! to measure another grid's staircase. A negative fraction runs the
+//! to measure another grid's staircase, and `OFFSET=x,y` moves the face's
+//! centre by that many cells (0,0 by default: the grid's centre, a cell
+//! corner). With `ellipse` and a fraction of 0 the onset and pull-off are
+//! also printed over the exact onset `F = 2 b sqrt(2 pi E* dgamma a)`. A negative fraction runs the
 //! mesh-dependent criterion instead (`solve_depth_hysteretic`, pulled in
 //! steps of 1/200 of the inscribed disc's critical depth to contact loss,
 //! the least force). A fraction of 0 runs
@@ -39,20 +42,27 @@ use layered_contact::solver::{ContactSolver, Reach, SolverParams, EDGE_WINDOW};
 use layered_contact::{Boundary, Grid, Material, Result, Substrate};
 use ndarray::Array2;
 
-/// A flat face: a disc of radius `half` (`ratio` 0) or a rectangle of
-/// half-sides `half` and `ratio * half`, turned by `angle`.
+/// A flat face: a disc of radius `half` (`ratio` 0), a rectangle of
+/// half-sides `half` and `ratio * half`, or (`elliptic`) an ellipse of
+/// semi-axes `half` and `ratio * half`; turned by `angle`, its centre at
+/// `centre` (m).
 struct Face {
     half: f64,
     ratio: f64,
     angle: f64,
+    elliptic: bool,
+    centre: (f64, f64),
 }
 
 impl Indenter for Face {
     fn height(&self, x: f64, y: f64) -> f64 {
+        let (x, y) = (x - self.centre.0, y - self.centre.1);
         let (s, c) = self.angle.sin_cos();
         let (x, y) = (c * x + s * y, -s * x + c * y);
         let inside = if self.ratio == 0.0 {
             x.hypot(y) <= self.half
+        } else if self.elliptic {
+            (y / self.half).powi(2) + (x / (self.half * self.ratio)).powi(2) < 1.0
         } else {
             x.abs() <= self.half && y.abs() <= self.half * self.ratio
         };
@@ -64,17 +74,24 @@ impl Indenter for Face {
     }
 
     fn bounding_radius(&self) -> f64 {
-        self.half * (1.0 + self.ratio * self.ratio).sqrt()
+        let radius = if self.elliptic {
+            self.half * self.ratio
+        } else {
+            self.half * (1.0 + self.ratio * self.ratio).sqrt()
+        };
+        radius + self.centre.0.hypot(self.centre.1)
     }
 }
 
 fn main() -> Result<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let ratio = match args.first().map(String::as_str) {
+    let shape = args.first().map(String::as_str);
+    let ratio = match shape {
         Some("square") => 1.0,
-        Some("rectangle") => 2.0,
+        Some("rectangle" | "ellipse") => 2.0,
         _ => 0.0,
     };
+    let elliptic = shape == Some("ellipse");
     let cells: usize = args.get(1).and_then(|a| a.parse().ok()).unwrap_or(32);
     let fraction: f64 = args.get(2).and_then(|a| a.parse().ok()).unwrap_or(0.9);
     let degrees: f64 = args.get(3).and_then(|a| a.parse().ok()).unwrap_or(0.0);
@@ -82,10 +99,20 @@ fn main() -> Result<()> {
     let work = 0.05;
     let delta = 1e-4;
     let half = 0.5 * cells as f64 * delta;
+    // OFFSET=x,y moves the face's centre by that many cells.
+    let offset: Vec<f64> = std::env::var("OFFSET")
+        .ok()
+        .map(|s| s.split(',').filter_map(|v| v.parse().ok()).collect())
+        .unwrap_or_default();
     let face = Face {
         half,
         ratio,
         angle: degrees.to_radians(),
+        elliptic,
+        centre: match offset[..] {
+            [x, y] => (x * delta, y * delta),
+            _ => (0.0, 0.0),
+        },
     };
     // Even, so that the face lies symmetrically on the cells.
     let n = 2 * (face.bounding_radius() / delta).ceil() as usize + 8;
@@ -112,6 +139,18 @@ fn main() -> Result<()> {
         // and the energy balance's pull-off beside it.
         let path = solver.peel_punch(&face, work)?;
         let peeled = path.pull_off();
+        if elliptic {
+            // The exact onset at the ends of the major axis.
+            let (a, estar) = (ratio * half, rubber.contact_modulus());
+            let exact = -2.0 * half * (2.0 * std::f64::consts::PI * estar * work * a).sqrt();
+            println!(
+                "ellipse: onset {:+.3} %, pull-off {:+.3} % over the exact onset ({} steps)",
+                100.0 * (path.points()[0].force / exact - 1.0),
+                100.0 * (peeled.force / exact - 1.0),
+                path.points().len()
+            );
+            return Ok(());
+        }
         let branches = solver.adhesive_branches(&face, Reach::Depth(1e-6), work, work, &mut ())?;
         let balance = branches.pull_off(f64::INFINITY)?;
         println!(
