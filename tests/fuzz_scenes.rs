@@ -28,7 +28,7 @@ fn fuzz_cases() -> u32 {
 fn seeds() -> Vec<(bool, String)> {
     let toml = |s: &str| (true, s.to_string());
     let json = |s: &str| (false, s.to_string());
-    vec![
+    let seeds = vec![
         toml(include_str!("../examples/scenes/sphere_on_film.toml")),
         json(include_str!("../examples/scenes/punch_on_half_space.json")),
         json(
@@ -60,8 +60,14 @@ fn seeds() -> Vec<(bool, String)> {
              long_cutoff = 32e-6\nshort_cutoff = 4e-6\nseed = 3\ncells = 32\nspacing = 1e-6\n\
              [protocol]\nkind = \"force\"\nforce = 1e-4\n",
         ),
-    ]
+        toml(include_str!("../examples/scenes/punch_array.toml")),
+    ];
+    assert_eq!(seeds.len(), SEEDS);
+    seeds
 }
+
+/// How many seed files [`seeds`] holds (every one is mutated).
+const SEEDS: usize = 7;
 
 const WILD: [&str; 16] = [
     "0",
@@ -228,7 +234,7 @@ proptest! {
     /// Mutated scene files: a curve with finite numbers or a typed error.
     #[test]
     fn mutated_scene_files(
-        seed in 0usize..5,
+        seed in 0usize..SEEDS,
         mutations in proptest::collection::vec((any::<u8>(), any::<usize>(), any::<usize>()), 1..4),
     ) {
         let (toml_text, mut text) = seeds().swap_remove(seed);
@@ -246,7 +252,7 @@ proptest! {
 fn mutations_reach_parse_errors_validation_errors_and_runs() {
     let (mut parse_errors, mut invalid, mut valid) = (0, 0, 0);
     for k in 0..60usize {
-        let (toml_text, text) = seeds().swap_remove(k % 5);
+        let (toml_text, text) = seeds().swap_remove(k % SEEDS);
         let text = mutate(&text, (k / 5) as u8, k * 7919, k * 104_729);
         let parsed: Option<Scene> = if toml_text {
             Scene::from_toml(&text).ok()

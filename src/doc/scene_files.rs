@@ -25,7 +25,7 @@
 //! ```
 //!
 //! `examples/scenes/` has more (an adhesive cycle, a stack, stresses below
-//! the surface, a periodic punch in JSON).
+//! the surface, a flat punch in JSON, a periodic array of pillars).
 //!
 //! **Validation.** `layered-contact schema` prints the JSON Schema of a
 //! scene ([`Scene::json_schema`](crate::scene::Scene::json_schema),

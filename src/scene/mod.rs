@@ -131,8 +131,11 @@ pub struct Resolution {
     /// pull-off contact (exact layered JKR) if that is smaller.
     pub cells_across: usize,
     /// Extra width around the largest contact, as a fraction of its
-    /// diameter on each side, at most 10 (curved indenters only; the grid
-    /// grows if the contact reaches its edge).
+    /// diameter on each side, at most 10: for curved indenters (the grid
+    /// grows if the contact reaches its edge), and for a flat punch on a
+    /// periodic grid, whose period is then the diameter times `1 + 2
+    /// margin` (an array of punches; an isolated punch's grid holds its
+    /// face and a ring of cells, whatever the margin).
     pub margin: f64,
 }
 

@@ -134,6 +134,9 @@ impl Scene {
     /// A [custom](IndenterSpec::Custom) indenter is treated like a curved
     /// one whose peak contact is its bounding disc. The height-map kinds are
     /// solved on their own grid.
+    /// A flat punch's grid holds its face and a ring of cells; on a periodic
+    /// grid it is the period of an array of punches, the diameter times `1 +
+    /// 2 margin` (at least two cells more).
     /// For a flat punch (untilted or not) the spacing is adjusted within 2 %
     /// of `2a / cells_across` so that the cells whose centres lie on the
     /// punch have the punch's area (with the energy-balance or the
@@ -153,7 +156,24 @@ impl Scene {
         self.indenter.build(self.tilt)?;
         let n = self.resolution.cells_across;
         if let IndenterSpec::FlatPunch { radius } = self.indenter {
-            let mut cells = fft_friendly(n + 2);
+            // On a periodic grid the period: the diameter and the margin
+            // on each side (an isolated grid holds the face and a ring).
+            let across = match self.boundary {
+                crate::grid::Boundary::Periodic => {
+                    let period = n as f64 * (1.0 + 2.0 * self.resolution.margin);
+                    (period.ceil() as usize).max(n + 2)
+                }
+                crate::grid::Boundary::Isolated => n + 2,
+            };
+            if across > MAX_GRID_CELLS {
+                return Err(Error::InvalidParameter {
+                    name: "resolution.margin",
+                    value: self.resolution.margin,
+                    expected: "a period of at most 8192 cells (the punch's cells across \
+                               times 1 + 2 margin)",
+                });
+            }
+            let mut cells = fft_friendly(across);
             // The energy balance's sets are shifted discs (EDGE_SHIFT), so
             // its punch is too, and so is the peeling path's that unloads
             // the cohesive zone's punch (Kendall -0.07, -0.26, -0.60 % at
