@@ -23,7 +23,13 @@
 //! to measure another grid's staircase, and `OFFSET=x,y` moves the face's
 //! centre by that many cells (0,0 by default: the grid's centre, a cell
 //! corner). With `ellipse` and a fraction of 0 the onset and pull-off are
-//! also printed over the exact onset `F = 2 b sqrt(2 pi E* dgamma a)`. A negative fraction runs the
+//! also printed over the exact onset `F = 2 b sqrt(2 pi E* dgamma a)`;
+//! with `disc`, a fraction of 0 and `TILT=rise,degrees` the face is tilted
+//! towards `degrees` so that it rises by `rise` of Kendall's critical
+//! depth across the radius, and the onset and pull-off are printed over the
+//! exact onset of a punch under force and moment, `F = 2 E* a (2 a beta -
+//! d_c)`, for the staircase's radius (`sqrt(A / pi) - EDGE_SHIFT` cells) and
+//! for the punch's own. A negative fraction runs the
 //! mesh-dependent criterion instead (`solve_depth_hysteretic`, pulled in
 //! steps of 1/200 of the inscribed disc's critical depth to contact loss,
 //! the least force). A fraction of 0 runs
@@ -45,13 +51,15 @@ use ndarray::Array2;
 /// A flat face: a disc of radius `half` (`ratio` 0), a rectangle of
 /// half-sides `half` and `ratio * half`, or (`elliptic`) an ellipse of
 /// semi-axes `half` and `ratio * half`; turned by `angle`, its centre at
-/// `centre` (m).
+/// `centre` (m), its plane rising by `tilt` (rad) towards `towards`.
 struct Face {
     half: f64,
     ratio: f64,
     angle: f64,
     elliptic: bool,
     centre: (f64, f64),
+    tilt: f64,
+    towards: f64,
 }
 
 impl Indenter for Face {
@@ -67,7 +75,8 @@ impl Indenter for Face {
             x.abs() <= self.half && y.abs() <= self.half * self.ratio
         };
         if inside {
-            0.0
+            let (s, c) = (self.towards - self.angle).sin_cos();
+            self.tilt * (c * x + s * y)
         } else {
             f64::INFINITY
         }
@@ -113,6 +122,23 @@ fn main() -> Result<()> {
             [x, y] => (x * delta, y * delta),
             _ => (0.0, 0.0),
         },
+        tilt: 0.0,
+        towards: 0.0,
+    };
+    // TILT=rise,degrees tilts a disc's face.
+    let tilted: Vec<f64> = std::env::var("TILT")
+        .ok()
+        .map(|s| s.split(',').filter_map(|v| v.parse().ok()).collect())
+        .unwrap_or_default();
+    let estar = rubber.contact_modulus();
+    let kendall_depth = |radius: f64| (2.0 * std::f64::consts::PI * radius * work / estar).sqrt();
+    let face = match tilted[..] {
+        [rise, towards] if ratio == 0.0 => Face {
+            tilt: rise * kendall_depth(half) / half,
+            towards: towards.to_radians(),
+            ..face
+        },
+        _ => face,
     };
     // Even, so that the face lies symmetrically on the cells.
     let n = 2 * (face.bounding_radius() / delta).ceil() as usize + 8;
@@ -139,9 +165,28 @@ fn main() -> Result<()> {
         // and the energy balance's pull-off beside it.
         let path = solver.peel_punch(&face, work)?;
         let peeled = path.pull_off();
+        if face.tilt != 0.0 {
+            // The exact onset of a punch under force and moment, for the
+            // staircase's radius and for the punch's.
+            let onset = |radius: f64| {
+                2.0 * estar * radius * (2.0 * radius * face.tilt - kendall_depth(radius))
+            };
+            let staircase = (path.points()[0].contact_area / std::f64::consts::PI).sqrt()
+                - layered_contact::solver::EDGE_SHIFT * delta;
+            let first = path.points()[0].force;
+            println!(
+                "tilted disc: onset {:+.3} % (the punch's radius {:+.3} %), pull-off {:+.3} % \
+                 over the exact onset ({} steps)",
+                100.0 * (first / onset(staircase) - 1.0),
+                100.0 * (first / onset(half) - 1.0),
+                100.0 * (peeled.force / onset(staircase) - 1.0),
+                path.points().len()
+            );
+            return Ok(());
+        }
         if elliptic {
             // The exact onset at the ends of the major axis.
-            let (a, estar) = (ratio * half, rubber.contact_modulus());
+            let a = ratio * half;
             let exact = -2.0 * half * (2.0 * std::f64::consts::PI * estar * work * a).sqrt();
             println!(
                 "ellipse: onset {:+.3} %, pull-off {:+.3} % over the exact onset ({} steps)",

@@ -226,10 +226,12 @@ fn tilted_punch(cells: usize, direction: f64) -> (f64, f64) {
 
 #[test]
 fn tilted_punch_release_follows_the_moment() {
-    // Measured (BENCHMARKS.md), the same to 0.3 % for tilts along the
-    // grid, at 22.5 and at 45 degrees: mean errors -4.4, -1.05, -0.42 % at
-    // 16, 32, 64 cells across (order 1.7); worst single points 15, 2.1,
-    // 1.8 % (G varies by a factor 5.4 round this edge).
+    // Measured (BENCHMARKS.md), the same to 0.02 % for tilts along the
+    // grid, at 22.5 and at 45 degrees, the disc's edge fitted by its
+    // angular modes 0 to 2: mean errors -1.78, -0.49, -0.19 % at 16, 32, 64
+    // cells across (order 1.6); worst single points 1.97, 0.69, 0.34 % (G
+    // varies by a factor 5.4 round this edge). With a window of 8 cells
+    // along the edge: means -4.4, -1.05, -0.42 %, worst 15, 2.1, 1.8 %.
     let mut means = Vec::new();
     for direction in [0.0, PI / 8.0, PI / 4.0] {
         let errors: Vec<(f64, f64)> = [16, 32, 64]
@@ -239,8 +241,8 @@ fn tilted_punch_release_follows_the_moment() {
         println!("tilted {direction:.3}: {errors:?}");
         let order = (errors[0].1 / errors[2].1).abs().log2() / 2.0;
         assert!(order > 1.0, "{direction}: order {order}");
-        assert!(errors[2].1.abs() < 6e-3, "{errors:?}");
-        assert!(errors[2].0 < 0.03, "{errors:?}");
+        assert!(errors[2].1.abs() < 3e-3, "{errors:?}");
+        assert!(errors[2].0 < 5e-3, "{errors:?}");
         means.push(errors[2].1);
     }
     assert!((means[0] - means[2]).abs() < 1e-3, "{means:?}");

@@ -199,16 +199,17 @@ fn tilted_disc(cells: usize, direction: f64, rise: f64) -> (f64, f64) {
 #[test]
 fn a_tilted_disc_starts_to_detach_at_the_exact_onset() {
     // Measured (BENCHMARKS.md), onset / pull-off over the exact onset at 32
-    // and 64 cells across: tilted along the grid by a tenth of Kendall's
-    // critical depth 1.0098 / 1.0123, 1.0031 / 1.0168; by a quarter
-    // 1.0155 / 1.1526, 1.0072 / 1.1190; towards 30 degrees by a tenth
-    // 1.0043 / 1.0187, 1.0003 / 1.0100; by a quarter 1.0063 / 1.1400,
-    // 1.0109 / 1.1246. The onset is exact to the staircase's 1 %; the
-    // tilted punch then peels stably from its high side, and comes off at
-    // a force 1 to 2 % (a tenth) and 12 % (a quarter) beyond it, whatever
-    // the tilt's direction on the grid.
+    // and 64 cells across, the disc's edge fitted by its angular modes 0 to
+    // 2: tilted along the grid by a tenth of Kendall's critical depth
+    // 1.0049 / 1.0049, 1.0027 / 1.0088; towards 30 degrees 1.0049 /
+    // 1.0049, 1.0027 / 1.0027; by a quarter along the grid 1.0081 / 1.1514,
+    // 1.0040 / 1.1190; towards 30 degrees 1.0084 / 1.1340, 1.0044 / 1.1349
+    // (with a window of 8 cells along the edge the onsets were 1.0003 to
+    // 1.0155 and scattered by -1.7 to +2.6 % over sub-cell positions).
+    // The onset converges at first order whatever the tilt's direction;
+    // the punch tilted by a tenth comes off within 1 % of it, by a quarter
+    // it peels stably from its high side and comes off 12 to 15 % beyond.
     for rise in [0.1, 0.25] {
-        let mut pull_offs = Vec::new();
         for direction in [0.0, PI / 6.0] {
             let ratios: Vec<_> = [32, 64]
                 .iter()
@@ -216,15 +217,21 @@ fn a_tilted_disc_starts_to_detach_at_the_exact_onset() {
                 .collect();
             println!("tilted {direction:.3} by {rise}: {ratios:?}");
             for (onset, pull_off) in &ratios {
-                assert!((onset - 1.0).abs() < 0.02, "{ratios:?}");
+                assert!((onset - 1.0).abs() < 0.012, "{ratios:?}");
                 assert!(pull_off >= onset, "{ratios:?}");
             }
-            assert!((ratios[1].0 - 1.0).abs() < 0.015, "{ratios:?}");
-            pull_offs.push(ratios[1].1);
-        }
-        let beyond = if rise > 0.2 { 0.12 } else { 0.014 };
-        for p in &pull_offs {
-            assert!((p - 1.0 - beyond).abs() < 0.01, "{pull_offs:?}");
+            // Within 0.5 % at 64 cells, about half the error at 32.
+            let (coarse, fine) = (ratios[0].0 - 1.0, ratios[1].0 - 1.0);
+            assert!(
+                fine.abs() < 0.005 && fine.abs() < 0.7 * coarse.abs(),
+                "{ratios:?}"
+            );
+            let beyond = ratios[1].1 - ratios[1].0;
+            if rise > 0.2 {
+                assert!((0.1..0.16).contains(&beyond), "{ratios:?}");
+            } else {
+                assert!(beyond < 0.015, "{ratios:?}");
+            }
         }
     }
 }

@@ -60,8 +60,10 @@ def operator(multiplier, single=False):
     return lambda x: np.fft.irfft2(np.fft.rfft2(x) * multiplier, s=x.shape)
 
 
-def pressure_space(h, tol, rule="fr", single=False):
-    """Pressures and iterations of the constrained conjugate gradients."""
+def pressure_space(h, tol, rule="fr", single=False, precondition=None):
+    """Pressures and iterations of the constrained conjugate gradients;
+    `precondition(W, r)`, if given, replaces the stiffness on the working
+    set `W` (`two_level.py`)."""
     stiffness, compliance = spectra(h.shape[0])
     K, M = operator(compliance), operator(stiffness, single)
     p = np.full(h.shape, PBAR)
@@ -72,7 +74,7 @@ def pressure_space(h, tol, rule="fr", single=False):
         joining = (p == 0) & (g < 0)
         W = (p > 0) | joining
         r = np.where(W, g - g[W].mean(), 0.0)
-        z = np.where(W, M(r), 0.0)
+        z = np.where(W, M(r) if precondition is None else precondition(W, r), 0.0)
         z = np.where(W, z - z[W].mean(), 0.0)
         rz = np.sum(r * z)
         if rz_old <= 0:

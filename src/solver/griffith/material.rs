@@ -36,9 +36,12 @@ pub(super) struct EdgeForces {
     pub(super) facets: Vec<[f64; 2]>,
     /// `[p1, pf]` per edge cell: its pressure is `d p1 - pf`.
     pub(super) pressures: Vec<[f64; 2]>,
-    rows: usize,
-    columns: usize,
-    periodic: bool,
+    /// Whether the indenter's face over the set is a plane (its slope the
+    /// same at every cell, to rounding).
+    pub(super) planar: bool,
+    pub(super) rows: usize,
+    pub(super) columns: usize,
+    pub(super) periodic: bool,
 }
 
 impl crate::solver::ContactSolver {
@@ -95,6 +98,7 @@ impl EdgeForces {
             rows,
             columns,
             periodic,
+            planar: planar(pair, rows, columns, delta, periodic),
             ..EdgeForces::default()
         };
         for c in 0..n {
@@ -162,7 +166,22 @@ impl EdgeForces {
     /// filter), so that a rate varying smoothly along the edge is followed
     /// without the window's `O(window^2)` bias. Exact for a straight edge of
     /// uniform release, whatever its direction.
+    ///
+    /// The edge of a digital disc under a planar face is fitted instead by
+    /// its angular modes 0 to 2 ([`EdgeForces::disc_modes`]), in which the
+    /// release rate of a bonded flat punch under force and moment lies.
     pub(super) fn smoothed(&self, delta: f64, window: f64) -> Vec<EdgeRate> {
+        let mut rates = self.smoothed_locally(delta, window);
+        if let Some(modes) = self.disc_modes(delta) {
+            for (rate, quadratic) in rates.iter_mut().zip(modes) {
+                rate.quadratic = quadratic;
+            }
+        }
+        rates
+    }
+
+    /// The local fit of [`EdgeForces::smoothed`].
+    fn smoothed_locally(&self, delta: f64, window: f64) -> Vec<EdgeRate> {
         let mut index = vec![u32::MAX; self.rows * self.columns];
         for (k, &c) in self.cells.iter().enumerate() {
             index[c] = k as u32;
@@ -259,6 +278,41 @@ impl EdgeForces {
             }
         }
     }
+}
+
+/// Whether the indenter's heights over the set `pair.attached` form a plane:
+/// their central differences (where both neighbours are in the set) the
+/// same at every cell along each axis, to `1e-9` of the largest slope or of
+/// the heights over a cell.
+fn planar(pair: &ClampedPair, rows: usize, columns: usize, delta: f64, periodic: bool) -> bool {
+    let mut ranges = [[f64::INFINITY, f64::NEG_INFINITY]; 2];
+    let mut largest = 0.0f64;
+    for (c, _) in pair.attached.iter().enumerate().filter(|(_, on)| **on) {
+        let height = pair.profile[c] - pair.lowest;
+        if !height.is_finite() {
+            return false;
+        }
+        largest = largest.max(height.abs());
+        let [up, down, left, right] = super::periodic::neighbours(c, rows, columns, periodic);
+        for (axis, pair_of) in [[up, down], [left, right]].iter().enumerate() {
+            if let [Some(b), Some(f)] = *pair_of {
+                if pair.attached[b] && pair.attached[f] {
+                    let slope = (pair.profile[f] - pair.profile[b]) / (2.0 * delta);
+                    ranges[axis][0] = ranges[axis][0].min(slope);
+                    ranges[axis][1] = ranges[axis][1].max(slope);
+                }
+            }
+        }
+    }
+    let steepest = ranges
+        .iter()
+        .flatten()
+        .filter(|v| v.is_finite())
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    let tolerance = 1e-9 * steepest.max(largest / delta);
+    ranges
+        .iter()
+        .all(|[lo, hi]| !lo.is_finite() || hi - lo <= tolerance)
 }
 
 /// The value at `s = 0` of the quadratic `G(s)` whose moments against the

@@ -14,6 +14,7 @@ use crate::indenter::Indenter;
 use super::{check_finite, ContactSolver, IterationInfo, Observer};
 
 mod branches;
+mod disc_modes;
 mod discs;
 mod material;
 mod peel;

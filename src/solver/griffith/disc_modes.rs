@@ -1,0 +1,169 @@
+//! The release rate round the edge of a bonded disc under a planar face, by
+//! its three lowest angular modes instead of a window along the edge.
+//!
+//! A flat face (tilted or not) bonded over a circular contact on a body
+//! that is axisymmetric about the contact's axis (a half-space, a layer, a
+//! stack) carries a force and two moments only, and the stress intensity
+//! round the edge is `K(theta) = A + B cos theta + C sin theta` (a force
+//! excites the zeroth angular mode, a moment the first; the modes do not
+//! couple on an axisymmetric body), so `G = K^2 / (2 E*)` lies in the span
+//! of `1, cos theta, sin theta, cos 2 theta, sin 2 theta`. The edge cells'
+//! material forces are projected on these five smooth virtual motions
+//! (radial, `V = phi_k(theta) r_hat`: the sums converge to `int G phi_k (r_hat
+//! . n) ds` at first order in the cell, whatever the edge's direction) and
+//! the release rate is the Galerkin fit in their span, weighted like the
+//! local fit by the facets' lengths along `r_hat`. The fit averages over the
+//! whole edge, so the staircase's pattern of steps, which a window of a
+//! few cells does not average out (a disc tilted by a quarter of Kendall's
+//! critical depth: its onset -1.7 to +2.2 % off at 64 cells across over five
+//! sub-cell positions), leaves -0.27 to +0.25 % (`BENCHMARKS.md`, "Local
+//! release rates along an edge").
+
+use super::material::EdgeForces;
+
+/// The number of angular harmonics fitted (modes 0 to 2).
+const HARMONICS: usize = 2;
+/// Functions of the fit: the constant and a cosine and a sine per harmonic.
+const FUNCTIONS: usize = 2 * HARMONICS + 1;
+/// The fewest edge cells of a disc fitted by modes (a disc about five cells
+/// in radius); smaller ones keep the local fit.
+const MIN_EDGE_CELLS: usize = 24;
+/// The widest spread of the edge cells' distances from their centroid, in
+/// cells, of a contact taken for a digital disc (about 1.4 on digital
+/// discs of 5 to 200 cells' radius, from how the staircase cuts the
+/// circle).
+const MAX_SPREAD: f64 = 2.0;
+
+impl EdgeForces {
+    /// The quadratics `[a, b, c]` of `G(d)` (J/m^2) at every edge cell from
+    /// the modal fit, where the edge is that of one digital disc under a
+    /// planar face on an isolated grid; `None` otherwise (the caller keeps
+    /// the local fit).
+    pub(super) fn disc_modes(&self, delta: f64) -> Option<Vec<[f64; 3]>> {
+        let count = self.cells.len();
+        if self.periodic || !self.planar || count < MIN_EDGE_CELLS {
+            return None;
+        }
+        let position = |c: usize| ((c / self.columns) as f64, (c % self.columns) as f64);
+        let (mut ci, mut cj) = (0.0, 0.0);
+        for &c in &self.cells {
+            let (i, j) = position(c);
+            ci += i / count as f64;
+            cj += j / count as f64;
+        }
+        let offsets: Vec<(f64, f64)> = self
+            .cells
+            .iter()
+            .map(|&c| {
+                let (i, j) = position(c);
+                (i - ci, j - cj)
+            })
+            .collect();
+        let (near, far) = offsets
+            .iter()
+            .map(|(di, dj)| di.hypot(*dj))
+            .fold((f64::INFINITY, 0.0f64), |(lo, hi), r| {
+                (lo.min(r), hi.max(r))
+            });
+        if !(far - near <= MAX_SPREAD && near > 0.0) {
+            return None;
+        }
+        // The normal equations: M g = f, M_kl = sum (e . r_hat) phi_k phi_l,
+        // f_k = sum (F . r_hat) phi_k, for each of the three coefficients.
+        let mut matrix = [[0.0; FUNCTIONS]; FUNCTIONS];
+        let mut rhs = [[0.0; 3]; FUNCTIONS];
+        let mut functions = Vec::with_capacity(count);
+        for (k, &(di, dj)) in offsets.iter().enumerate() {
+            let r = di.hypot(dj);
+            let radial = [di / r, dj / r];
+            let phi = harmonics(di.atan2(dj));
+            let along = |v: [f64; 2]| v[0] * radial[0] + v[1] * radial[1];
+            let length = along(self.facets[k]);
+            let forces = self.coefficients[k].map(along);
+            for (row, &pk) in phi.iter().enumerate() {
+                for (entry, &pl) in matrix[row].iter_mut().zip(&phi) {
+                    *entry += length * pk * pl;
+                }
+                for (total, force) in rhs[row].iter_mut().zip(&forces) {
+                    *total += force * pk;
+                }
+            }
+            functions.push(phi);
+        }
+        let fitted = solve(matrix, rhs)?;
+        Some(
+            functions
+                .iter()
+                .map(|phi| {
+                    let mut quadratic = [0.0; 3];
+                    for (p, coefficients) in phi.iter().zip(&fitted) {
+                        for (q, g) in quadratic.iter_mut().zip(coefficients) {
+                            *q += p * g / delta;
+                        }
+                    }
+                    quadratic
+                })
+                .collect(),
+        )
+    }
+}
+
+/// `1, cos t, sin t, cos 2t, sin 2t`.
+fn harmonics(t: f64) -> [f64; FUNCTIONS] {
+    let mut phi = [1.0; FUNCTIONS];
+    for h in 1..=HARMONICS {
+        let (s, c) = (h as f64 * t).sin_cos();
+        phi[2 * h - 1] = c;
+        phi[2 * h] = s;
+    }
+    phi
+}
+
+/// `M^-1 f` for the three columns of `f`, by Gaussian elimination with
+/// partial pivoting; `None` if `M` is singular (or not finite) to working
+/// precision.
+fn solve(
+    mut matrix: [[f64; FUNCTIONS]; FUNCTIONS],
+    mut rhs: [[f64; 3]; FUNCTIONS],
+) -> Option<[[f64; 3]; FUNCTIONS]> {
+    let scale = matrix.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+    if !(scale.is_finite() && scale > 0.0) {
+        return None;
+    }
+    for col in 0..FUNCTIONS {
+        let pivot = (col..FUNCTIONS)
+            .max_by(|&a, &b| matrix[a][col].abs().total_cmp(&matrix[b][col].abs()))
+            .unwrap_or(col);
+        matrix.swap(col, pivot);
+        rhs.swap(col, pivot);
+        let diagonal = matrix[col][col];
+        if diagonal.abs() <= 1e-12 * scale {
+            return None;
+        }
+        for row in 0..FUNCTIONS {
+            if row == col {
+                continue;
+            }
+            let factor = matrix[row][col] / diagonal;
+            let source = matrix[col];
+            for (entry, s) in matrix[row].iter_mut().zip(source) {
+                *entry -= factor * s;
+            }
+            let source = rhs[col];
+            for (entry, s) in rhs[row].iter_mut().zip(source) {
+                *entry -= factor * s;
+            }
+        }
+    }
+    let mut solution = [[0.0; 3]; FUNCTIONS];
+    for (row, out) in solution.iter_mut().enumerate() {
+        for (value, r) in out.iter_mut().zip(rhs[row]) {
+            *value = r / matrix[row][row];
+        }
+    }
+    solution
+        .iter()
+        .flatten()
+        .all(|v| v.is_finite())
+        .then_some(solution)
+}
