@@ -74,7 +74,11 @@ impl ContactSolver {
     /// bonded to `indenter` at `depth`, `rows x columns` like
     /// [`Solution::pressure`](super::super::Solution::pressure)), smoothed
     /// along the edge over `window` cells ([`EDGE_WINDOW`] is a good
-    /// default).
+    /// default). The edge of one digital disc under a planar face (a flat
+    /// punch, tilted or not) on an isolated grid is fitted instead by its
+    /// angular modes 0 to 2, where a bonded flat punch's release rate lies
+    /// exactly (the window then sets only the normals; see
+    /// [`doc::adhesion`](crate::doc::adhesion)).
     ///
     /// One clamped solve gives the pressures and displacements; the release
     /// rate follows from the configurational (material) forces of the edge
