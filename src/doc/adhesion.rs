@@ -331,7 +331,7 @@
 //! balance, which averages over whole edges, stays the default.
 //!
 //! **A disc under a planar face: its angular modes.** Where the edge is
-//! that of one digital disc (its edge cells within 1.5 cells of one
+//! that of one digital disc (its edge cells within 2 cells of one
 //! distance from their centroid, about 5.7 of them per cell of radius)
 //! under a planar face (a flat punch, tilted
 //! or not) on an isolated grid, the release rate is fitted by the angular
