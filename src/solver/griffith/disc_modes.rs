@@ -6,7 +6,9 @@
 //! stack) carries a force and two moments only, and the stress intensity
 //! round the edge is `K(theta) = A + B cos theta + C sin theta` (a force
 //! excites the zeroth angular mode, a moment the first; the modes do not
-//! couple on an axisymmetric body), so `G = K^2 / (2 E*)` lies in the span
+//! couple on an axisymmetric body; on a half-space the punch of Kendall
+//! 1971, J. Phys. D 4, 1186, tilted as in Johnson 1985, Contact Mechanics,
+//! ch. 5), so `G = K^2 / (2 E*)` lies in the span
 //! of `1, cos theta, sin theta, cos 2 theta, sin 2 theta`. The edge cells'
 //! material forces are projected on these five smooth virtual motions
 //! (radial, `V = phi_k(theta) r_hat`: the sums converge to `int G phi_k (r_hat
@@ -91,9 +93,7 @@ impl EdgeForces {
                 .collect(),
         )
     }
-}
 
-impl EdgeForces {
     /// The edge cells' offsets (rows, columns) from their centroid, if they
     /// are the edge of one digital disc.
     fn disc_offsets(&self) -> Option<Vec<(f64, f64)>> {
