@@ -157,7 +157,7 @@ fn main() -> Result<()> {
     )?;
     let mut contact = Array2::from_shape_fn((n, n), |(i, j)| {
         let (x, y) = grid.cell_centre(i, j);
-        face.height(x, y) == 0.0
+        face.height(x, y).is_finite()
     });
     let per = 1e6 / (cells as f64).powf(1.5);
     if fraction == 0.0 {
