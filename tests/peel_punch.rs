@@ -324,11 +324,13 @@ impl Indenter for Ellipse {
 fn an_elliptical_punch_starts_at_its_exact_onset_and_comes_off_later() {
     // Onset at the ends of the major axis, F = 2 b sqrt(2 pi E* dgamma a)
     // (b/a = 1/2). Measured, onset / pull-off over it at 32 and 64 cells
-    // across the minor axis: along the grid +0.26 / +4.58 %, +0.32 / +5.11
-    // %; at 30 degrees +0.96 / +4.30 %, +0.76 / +4.47 % (+0.23 / +4.72 and
-    // +0.78 / +3.97 % at 64 with the window of 8 cells, 9.5 now). The ellipse peels
-    // stably from its tips (rounder contacts hold more) and comes off about
-    // 4 % beyond its onset, whatever its orientation.
+    // across the minor axis, the first contact's edge fitted in the
+    // functions of Galin's pressure (`doc::adhesion`): along the grid -0.38
+    // / +4.58 %, -0.21 / +5.10 %; at 30 degrees -0.10 / +4.74 %, -0.04 /
+    // +4.39 % (with the window along the edge, before: +0.26 / +4.58, +0.32
+    // / +5.11, +0.96 / +4.30, +0.76 / +4.47 %). The ellipse peels stably
+    // from its tips (rounder contacts hold more) and comes off about 4 to 5
+    // % beyond its onset, whatever its orientation.
     let mut pull_offs = Vec::new();
     for angle in [0.0, PI / 6.0] {
         for cells in [32, 64] {
@@ -344,7 +346,7 @@ fn an_elliptical_punch_starts_at_its_exact_onset_and_comes_off_later() {
             let onset = path.points()[0].force / exact - 1.0;
             let pull_off = path.pull_off().force / exact - 1.0;
             println!("ellipse {angle:.3} {cells}: onset {onset} pull-off {pull_off}");
-            assert!(onset.abs() < 0.012, "{onset}");
+            assert!(onset.abs() < 0.005, "{onset}");
             assert!((0.03..0.055).contains(&pull_off), "{pull_off}");
             assert!(!path.detaches_at_onset());
             if cells == 64 {

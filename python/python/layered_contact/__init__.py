@@ -99,10 +99,11 @@ def edge_release(
     """The local Griffith criterion: the energy release rate along the edge
     of ``contact`` (a boolean array of the solver's ``rows x columns``
     cells, held bonded to ``indenter`` at ``depth``, m), smoothed along the
-    edge over ``window`` cells; the edge of one digital disc under a planar
-    face (a flat punch, tilted or not) on an isolated grid is fitted
-    instead by its angular modes 0 to 2, where a bonded flat punch's
-    release rate lies exactly.
+    edge over ``window`` cells; the edge of one digital ellipse on a
+    half-space (or disc on any body) under a planar face (a flat punch,
+    tilted or not) on an isolated grid is fitted instead in the five
+    functions where a bonded flat punch's release rate lies exactly
+    (Galin's pressure; on a disc the angular modes 0 to 2).
 
     Returns a dict of arrays over the edge cells: ``row``, ``column``,
     ``x``, ``y`` (m), ``normal_x``, ``normal_y`` (outward), ``release_rate``

@@ -39,6 +39,9 @@ pub(super) struct EdgeForces {
     /// Whether the indenter's face over the set is a plane (its slope the
     /// same at every cell, to rounding).
     pub(super) planar: bool,
+    /// Whether the body is a homogeneous half-space (where an elliptical
+    /// contact's release rate has the form of `ellipse_modes.rs`).
+    pub(super) half_space: bool,
     pub(super) rows: usize,
     pub(super) columns: usize,
     pub(super) periodic: bool,
@@ -83,13 +86,15 @@ pub(super) struct ClampedPair<'a> {
 
 impl EdgeForces {
     /// The edge cells' material forces of `pair` on a `rows x columns` grid
-    /// of spacing `delta`, wrapping round if `periodic`.
+    /// of spacing `delta`, wrapping round if `periodic`, on a half-space if
+    /// `half_space`.
     pub(super) fn new(
         pair: &ClampedPair,
         rows: usize,
         columns: usize,
         delta: f64,
         periodic: bool,
+        half_space: bool,
     ) -> Self {
         let n = pair.attached.len();
         let area = delta * delta;
@@ -99,6 +104,7 @@ impl EdgeForces {
             columns,
             periodic,
             planar: planar(pair, rows, columns, delta, periodic),
+            half_space,
             ..EdgeForces::default()
         };
         for c in 0..n {
@@ -167,12 +173,13 @@ impl EdgeForces {
     /// without the window's `O(window^2)` bias. Exact for a straight edge of
     /// uniform release, whatever its direction.
     ///
-    /// The edge of a digital disc under a planar face is fitted instead by
-    /// its angular modes 0 to 2 ([`EdgeForces::disc_modes`]), in which the
-    /// release rate of a bonded flat punch under force and moment lies.
+    /// The edge of a digital ellipse on a half-space (or disc on any
+    /// body) under a planar face is fitted instead by the five functions
+    /// in which the release rate of a bonded flat punch under force and
+    /// moment lies ([`EdgeForces::ellipse_modes`]).
     pub(super) fn smoothed(&self, delta: f64, window: f64) -> Vec<EdgeRate> {
         let mut rates = self.smoothed_locally(delta, window);
-        if let Some(modes) = self.disc_modes(delta) {
+        if let Some(modes) = self.ellipse_modes(delta) {
             for (rate, quadratic) in rates.iter_mut().zip(modes) {
                 rate.quadratic = quadratic;
             }

@@ -14,8 +14,9 @@ use crate::indenter::Indenter;
 use super::{check_finite, ContactSolver, IterationInfo, Observer};
 
 mod branches;
-mod disc_modes;
 mod discs;
+mod ellipse_fit;
+mod ellipse_modes;
 mod material;
 mod peel;
 mod periodic;

@@ -398,7 +398,14 @@ impl ContactSolver {
                 shape: &shape,
                 shape_displacement: &shape_displacement,
             };
-            let forces = EdgeForces::new(&pair, rows, columns, spacing, periodic);
+            let forces = EdgeForces::new(
+                &pair,
+                rows,
+                columns,
+                spacing,
+                periodic,
+                matches!(self.substrate, crate::Substrate::HalfSpace(_)),
+            );
             let rates = forces.smoothed(spacing, peel_window(cells));
             // The first edge cell to release the work as the depth falls.
             let first = rates

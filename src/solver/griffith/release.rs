@@ -74,11 +74,12 @@ impl ContactSolver {
     /// bonded to `indenter` at `depth`, `rows x columns` like
     /// [`Solution::pressure`](super::super::Solution::pressure)), smoothed
     /// along the edge over `window` cells ([`EDGE_WINDOW`] is a good
-    /// default). The edge of one digital disc under a planar face (a flat
-    /// punch, tilted or not) on an isolated grid is fitted instead by its
-    /// angular modes 0 to 2, where a bonded flat punch's release rate lies
-    /// exactly (the window then sets only the normals; see
-    /// [`doc::adhesion`](crate::doc::adhesion)).
+    /// default). The edge of one digital ellipse on a half-space, or disc
+    /// on any body, under a planar face (a flat punch, tilted or not) on an
+    /// isolated grid is fitted instead in the five functions where a bonded
+    /// flat punch's release rate lies exactly (Galin's pressure; on a
+    /// circle the angular modes 0 to 2; the window then sets only the
+    /// normals; see [`doc::adhesion`](crate::doc::adhesion)).
     ///
     /// One clamped solve gives the pressures and displacements; the release
     /// rate follows from the configurational (material) forces of the edge
@@ -171,7 +172,14 @@ impl ContactSolver {
             shape: &zero,
             shape_displacement: &zero,
         };
-        let forces = EdgeForces::new(&pair, rows, columns, grid.spacing(), periodic);
+        let forces = EdgeForces::new(
+            &pair,
+            rows,
+            columns,
+            grid.spacing(),
+            periodic,
+            matches!(self.substrate, crate::Substrate::HalfSpace(_)),
+        );
         let rates = forces.smoothed(grid.spacing(), window);
         let modulus = self.surface_contact_modulus;
         let mut points = Vec::with_capacity(rates.len());
