@@ -101,9 +101,9 @@ def edge_release(
     cells, held bonded to ``indenter`` at ``depth``, m), smoothed along the
     edge over ``window`` cells; the edge of one digital ellipse on a
     half-space (or disc on any body) under a planar face (a flat punch,
-    tilted or not) on an isolated grid is fitted instead in the five
-    functions where a bonded flat punch's release rate lies exactly
-    (Galin's pressure; on a disc the angular modes 0 to 2).
+    tilted or not) or a quadratic one (a paraboloid) on an isolated grid is
+    fitted instead in the five (nine) functions where the release rate lies
+    exactly (Galin's pressure; on a disc the angular modes 0 to 2 (4)).
 
     Returns a dict of arrays over the edge cells: ``row``, ``column``,
     ``x``, ``y`` (m), ``normal_x``, ``normal_y`` (outward), ``release_rate``

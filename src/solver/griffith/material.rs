@@ -36,9 +36,9 @@ pub(super) struct EdgeForces {
     pub(super) facets: Vec<[f64; 2]>,
     /// `[p1, pf]` per edge cell: its pressure is `d p1 - pf`.
     pub(super) pressures: Vec<[f64; 2]>,
-    /// Whether the indenter's face over the set is a plane (its slope the
-    /// same at every cell, to rounding).
-    pub(super) planar: bool,
+    /// The degree of the polynomial that the indenter's face over the set
+    /// is, to rounding: 1 (a plane), 2 (a quadratic), `None` (neither).
+    pub(super) face_degree: Option<usize>,
     /// Whether the body is a homogeneous half-space (where an elliptical
     /// contact's release rate has the form of `ellipse_modes.rs`).
     pub(super) half_space: bool,
@@ -103,7 +103,7 @@ impl EdgeForces {
             rows,
             columns,
             periodic,
-            planar: planar(pair, rows, columns, delta, periodic),
+            face_degree: super::face::degree(pair, rows, columns, delta, periodic),
             half_space,
             ..EdgeForces::default()
         };
@@ -285,41 +285,6 @@ impl EdgeForces {
             }
         }
     }
-}
-
-/// Whether the indenter's heights over the set `pair.attached` form a plane:
-/// their central differences (where both neighbours are in the set) the
-/// same at every cell along each axis, to `1e-9` of the largest slope or of
-/// the heights over a cell.
-fn planar(pair: &ClampedPair, rows: usize, columns: usize, delta: f64, periodic: bool) -> bool {
-    let mut ranges = [[f64::INFINITY, f64::NEG_INFINITY]; 2];
-    let mut largest = 0.0f64;
-    for (c, _) in pair.attached.iter().enumerate().filter(|(_, on)| **on) {
-        let height = pair.profile[c] - pair.lowest;
-        if !height.is_finite() {
-            return false;
-        }
-        largest = largest.max(height.abs());
-        let [up, down, left, right] = super::periodic::neighbours(c, rows, columns, periodic);
-        for (axis, pair_of) in [[up, down], [left, right]].iter().enumerate() {
-            if let [Some(b), Some(f)] = *pair_of {
-                if pair.attached[b] && pair.attached[f] {
-                    let slope = (pair.profile[f] - pair.profile[b]) / (2.0 * delta);
-                    ranges[axis][0] = ranges[axis][0].min(slope);
-                    ranges[axis][1] = ranges[axis][1].max(slope);
-                }
-            }
-        }
-    }
-    let steepest = ranges
-        .iter()
-        .flatten()
-        .filter(|v| v.is_finite())
-        .fold(0.0f64, |m, v| m.max(v.abs()));
-    let tolerance = 1e-9 * steepest.max(largest / delta);
-    ranges
-        .iter()
-        .all(|[lo, hi]| !lo.is_finite() || hi - lo <= tolerance)
 }
 
 /// The value at `s = 0` of the quadratic `G(s)` whose moments against the

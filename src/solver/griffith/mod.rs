@@ -17,6 +17,7 @@ mod branches;
 mod discs;
 mod ellipse_fit;
 mod ellipse_modes;
+mod face;
 mod material;
 mod peel;
 mod periodic;

@@ -75,11 +75,12 @@ impl ContactSolver {
     /// [`Solution::pressure`](super::super::Solution::pressure)), smoothed
     /// along the edge over `window` cells ([`EDGE_WINDOW`] is a good
     /// default). The edge of one digital ellipse on a half-space, or disc
-    /// on any body, under a planar face (a flat punch, tilted or not) on an
-    /// isolated grid is fitted instead in the five functions where a bonded
-    /// flat punch's release rate lies exactly (Galin's pressure; on a
-    /// circle the angular modes 0 to 2; the window then sets only the
-    /// normals; see [`doc::adhesion`](crate::doc::adhesion)).
+    /// on any body, under a planar face (a flat punch, tilted or not) or a
+    /// quadratic one (a paraboloid) on an isolated grid is fitted instead
+    /// in the five (nine) functions where the release rate lies exactly
+    /// (Galin's pressure; on a circle the angular modes 0 to 2 (4); the
+    /// window then sets only the normals; see
+    /// [`doc::adhesion`](crate::doc::adhesion)).
     ///
     /// One clamped solve gives the pressures and displacements; the release
     /// rate follows from the configurational (material) forces of the edge
@@ -87,12 +88,13 @@ impl ContactSolver {
     /// over any smooth virtual motion `V` of the edge converges to
     /// `int G V.n ds` at first order in the cell size whatever the edge's
     /// direction on the grid (see [`doc::adhesion`](crate::doc::adhesion)).
-    /// On the JKR sphere's digital disc the mean over the edge is off by
-    /// -3.1, -1.3, -0.67 % at 16, 32, 64 cells across and then levels at
-    /// about -0.4 %; single cells on the disc's flat facets stray by up to
-    /// 10 % at 64 cells, more on larger discs with the window fixed, less
-    /// with a window of a quarter of the contact (about order one half):
-    /// see [`doc::adhesion`](crate::doc::adhesion).
+    /// On the JKR sphere's pull-off contact (fitted by its modes) the mean
+    /// over the edge is off by -0.39 to -0.57 % at 64 cells across and
+    /// -0.095 to -0.116 % at 256, the worst cell by 0.42 to 3.8 % and 0.17
+    /// to 0.40 % (four sub-cell positions); on other contacts, smoothed by
+    /// the window, single cells on the digital edge's flat facets stray by
+    /// up to 10 % at 64 cells, more on larger contacts with the window
+    /// fixed: see [`doc::adhesion`](crate::doc::adhesion).
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for a non-finite depth, a window outside
