@@ -10,7 +10,7 @@ use std::f64::consts::PI;
 
 use layered_contact::analytic::JkrSinusoid;
 use layered_contact::indenter::{FlatPunch, HeightMap, Indenter, Paraboloid, Tilted};
-use layered_contact::solver::{ContactSolver, EdgeRelease, SolverParams, EDGE_WINDOW};
+use layered_contact::solver::{ContactSolver, EdgeFit, EdgeRelease, SolverParams, EDGE_WINDOW};
 use layered_contact::{Boundary, Grid, Substrate};
 use ndarray::Array2;
 
@@ -91,6 +91,7 @@ fn elliptical_onset_at(cells: usize, angle: f64, offset: (f64, f64)) -> f64 {
     let edge = s
         .edge_release(&punch, -1e-6, &contact, EDGE_WINDOW)
         .unwrap();
+    assert_eq!(edge.fit, EdgeFit::Modes { functions: 5 });
     let top = edge.max_release().unwrap();
     // The onset is at the ends of the major axis.
     let (x, y) = (
@@ -192,6 +193,7 @@ fn tilted_punch(cells: usize, direction: f64) -> (f64, f64) {
     let edge: EdgeRelease = s
         .edge_release(&punch, depth, &contact, EDGE_WINDOW)
         .unwrap();
+    assert_eq!(edge.fit, EdgeFit::Modes { functions: 5 });
     // Exact loads of the rigid punch: P = 2 E* a d, M = 4 E* a^3 beta / 3
     // (rising with x: the pressure is higher where the face is lower).
     let force = 2.0 * estar() * a * depth;
@@ -263,6 +265,7 @@ fn offset_sphere(cells: usize, offset: (f64, f64)) -> (f64, f64) {
     let edge = s
         .edge_release(&shifted, depth, &contact, EDGE_WINDOW)
         .unwrap();
+    assert_eq!(edge.fit, EdgeFit::Modes { functions: 9 });
     let exact = estar() * (depth - a * a / RADIUS).powi(2) / (2.0 * PI * a);
     let (mut worst, mut mean) = (0.0f64, 0.0);
     for p in &edge.points {
@@ -372,6 +375,8 @@ fn asymmetric_strip(n: usize, wave: (usize, usize), depth: f64) -> [(f64, f64); 
     let edge = s
         .edge_release(&map, depth * amplitude, &contact, EDGE_WINDOW)
         .unwrap();
+    // A periodic strip: the window, not modes.
+    assert_eq!(edge.fit, EdgeFit::Window { cells: EDGE_WINDOW });
     let pbar = edge.force / (side * side);
     let (k_lower, k_upper) = exact.strip_stress_intensity(lower, upper, pbar).unwrap();
     let mut result = [(0.0, 0.0); 2];

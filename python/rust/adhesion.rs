@@ -14,8 +14,10 @@ use super::{ContactSolver, Indenter, Material, OrPy, Shared};
 /// `rows x columns` mask of cells held bonded to `indenter` at `depth`, m),
 /// smoothed over `window` cells: a dict of arrays over the edge cells
 /// (`row`, `column`, `x`, `y`, `normal_x`, `normal_y`, `release_rate` in
-/// J/m^2, `stress_intensity` in Pa m^1/2, positive where the edge pulls)
-/// and the floats `force` (N) and `depth` (m).
+/// J/m^2, `stress_intensity` in Pa m^1/2, positive where the edge pulls),
+/// the floats `force` (N) and `depth` (m), and `fit` and `fit_functions`:
+/// `"modes"` and 5 or 9 where the rates were fitted over the whole edge
+/// (`EdgeFit::Modes`), `"window"` and 0 where smoothed by the window.
 #[pyfunction]
 #[pyo3(signature = (solver, indenter, depth, contact, window=lc::solver::EDGE_WINDOW))]
 pub(crate) fn edge_release<'py>(
@@ -55,7 +57,20 @@ pub(crate) fn edge_release<'py>(
     )?;
     d.set_item("force", edge.force)?;
     d.set_item("depth", edge.depth)?;
+    let (fit, functions) = fit_name(&edge.fit);
+    d.set_item("fit", fit)?;
+    d.set_item("fit_functions", functions)?;
     Ok(d)
+}
+
+/// `("modes", functions)`, `("window", 0)`, or `("other", 0)` for a way
+/// added since.
+fn fit_name(fit: &lc::solver::EdgeFit) -> (&'static str, usize) {
+    match fit {
+        lc::solver::EdgeFit::Modes { functions } => ("modes", *functions),
+        lc::solver::EdgeFit::Window { .. } => ("window", 0),
+        _ => ("other", 0),
+    }
 }
 
 /// The pull-off of a flat punch (tilted or not) bonded over its whole face,
@@ -64,7 +79,8 @@ pub(crate) fn edge_release<'py>(
 /// (`ContactSolver::peel_punch`): a dict of arrays over the
 /// path's contacts (`depth` m, `force` N, each the critical one of that
 /// contact; `stiffness` N/m, its bonded `dF/dd`; `contact_cells`; `contact_area` m^2; `peels_x`, `peels_y` m,
-/// where it peels next) and `pull_off_force`, `pull_off_depth`,
+/// where it peels next; `fitted_by_modes`, whether that contact's rates
+/// were fitted over its whole edge) and `pull_off_force`, `pull_off_depth`,
 /// `jump_off_depth`, `jump_off_force`, `detaches_at_onset`, `iterations`.
 #[pyfunction]
 #[pyo3(signature = (solver, indenter, work_of_adhesion, bonded=None))]
@@ -104,6 +120,11 @@ pub(crate) fn peel_punch<'py>(
     )?;
     d.set_item("peels_x", PyArray1::from_vec(py, column(&|p| p.peels_at.0)))?;
     d.set_item("peels_y", PyArray1::from_vec(py, column(&|p| p.peels_at.1)))?;
+    let modes: Vec<bool> = points
+        .iter()
+        .map(|p| fit_name(&p.fit).0 == "modes")
+        .collect();
+    d.set_item("fitted_by_modes", PyArray1::from_vec(py, modes))?;
     d.set_item("pull_off_force", path.pull_off().force)?;
     d.set_item("pull_off_depth", path.pull_off().depth)?;
     d.set_item("jump_off_depth", path.jump_off().depth)?;

@@ -89,7 +89,7 @@ pub use cohesive_law::{
 pub(crate) use cohesive_pull_off::pinned_at_rim;
 pub use cohesive_pull_off::CohesivePullOff;
 pub use griffith::{
-    AdhesiveBranches, BranchPoint, EdgePoint, EdgeRelease, PeelPoint, PeelingPath, Reach,
+    AdhesiveBranches, BranchPoint, EdgeFit, EdgePoint, EdgeRelease, PeelPoint, PeelingPath, Reach,
     EDGE_SHIFT, EDGE_WINDOW, PEEL_FRACTION,
 };
 pub use multiresolution::MULTIRESOLUTION_CELLS;

@@ -108,8 +108,11 @@ def edge_release(
     Returns a dict of arrays over the edge cells: ``row``, ``column``,
     ``x``, ``y`` (m), ``normal_x``, ``normal_y`` (outward), ``release_rate``
     (J/m^2) and ``stress_intensity`` (Pa m^1/2, positive where the edge
-    pulls), and the floats ``force`` (N) and ``depth`` (m). The edge starts
-    to detach where ``release_rate`` first reaches the work of adhesion."""
+    pulls), and the floats ``force`` (N) and ``depth`` (m); ``fit`` is
+    ``"modes"`` (``fit_functions`` 5 or 9) where the rates were fitted over
+    the whole edge, ``"window"`` (0) where smoothed by the window. The edge
+    starts to detach where ``release_rate`` first reaches the work of
+    adhesion."""
     import numpy as np
 
     mask = np.ascontiguousarray(np.asarray(contact, dtype=bool))

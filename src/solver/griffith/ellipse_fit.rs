@@ -255,4 +255,25 @@ mod tests {
         assert!(Ellipse::fit(&line, false).is_none());
         assert!(Ellipse::fit(&[[3.0, 4.0]; 30], true).is_none());
     }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig {
+            cases: 500,
+            rng_seed: proptest::test_runner::RngSeed::Fixed(20261128),
+            ..proptest::prelude::ProptestConfig::default()
+        })]
+        /// Any cloud of points, of any finite or non-finite coordinates: no
+        /// ellipse, or one whose every derived quantity is finite.
+        #[test]
+        fn never_a_nan(points in proptest::collection::vec(
+            (proptest::num::f64::ANY, proptest::num::f64::ANY), 0..40),
+            circle in proptest::bool::ANY) {
+            let points: Vec<[f64; 2]> = points.iter().map(|&(a, b)| [a, b]).collect();
+            if let Some(ellipse) = Ellipse::fit(&points, circle) {
+                proptest::prop_assert!(ellipse.mean_radius().is_finite());
+                proptest::prop_assert!(ellipse.edge_cells().is_finite());
+                proptest::prop_assert!(ellipse.centre.iter().all(|v| v.is_finite()));
+            }
+        }
+    }
 }

@@ -67,15 +67,19 @@ impl EdgeForces {
     /// The quadratics `[a, b, c]` of `G(d)` (J/m^2) at every edge cell from
     /// the fit in the functions of an ellipse, where the edge is that of
     /// one digital ellipse (on a half-space) or disc (on any body) under a
-    /// planar or quadratic face on an isolated grid; `None` otherwise (the
-    /// caller keeps the local fit).
-    pub(super) fn ellipse_modes(&self, delta: f64) -> Option<Vec<[f64; 3]>> {
+    /// planar or quadratic face on an isolated grid, and the number of
+    /// functions fitted; `None` otherwise (the caller keeps the local fit).
+    pub(super) fn ellipse_modes(&self, delta: f64) -> Option<(Vec<[f64; 3]>, usize)> {
         if self.periodic || self.cells.len() < MIN_EDGE_CELLS {
             return None;
         }
         match self.face_degree? {
-            1 => self.galerkin(&self.edge_ellipse()?, delta, harmonics::<5>),
-            2 => self.galerkin(&self.edge_ellipse()?, delta, harmonics::<9>),
+            1 => self
+                .galerkin(&self.edge_ellipse()?, delta, harmonics::<5>)
+                .map(|rates| (rates, 5)),
+            2 => self
+                .galerkin(&self.edge_ellipse()?, delta, harmonics::<9>)
+                .map(|rates| (rates, 9)),
             _ => None,
         }
     }
@@ -145,12 +149,17 @@ impl EdgeForces {
     fn edge_ellipse(&self) -> Option<Ellipse> {
         let points: Vec<[f64; 2]> = self.cells.iter().map(|&c| self.position(c)).collect();
         let fits = |ellipse: &Ellipse| {
-            let (near, far) = points
-                .iter()
-                .map(|&x| ellipse.distance(x))
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), d| {
-                    (lo.min(d), hi.max(d))
-                });
+            // A cell at the centre has no distance (0 / 0): no ellipse.
+            let (near, far) = points.iter().map(|&x| ellipse.distance(x)).fold(
+                (f64::INFINITY, f64::NEG_INFINITY),
+                |(lo, hi), d| {
+                    if d.is_finite() {
+                        (lo.min(d), hi.max(d))
+                    } else {
+                        (f64::NEG_INFINITY, f64::INFINITY)
+                    }
+                },
+            );
             let ratio = points.len() as f64 / ellipse.edge_cells();
             far - near <= MAX_SPREAD && EDGE_COUNT.contains(&ratio)
         };
@@ -250,7 +259,8 @@ mod tests {
                     1.0 + 0.5 * t.cos() - 0.3 * t.sin() + 0.2 * (2.0 * t).cos()
                 };
                 let forces = edge(n, half_space, |i, j| (i - ci).hypot(j - cj) < 30.0, g);
-                let fitted = forces.ellipse_modes(1.0).expect("a digital disc");
+                let (fitted, functions) = forces.ellipse_modes(1.0).expect("a digital disc");
+                assert_eq!(functions, 5);
                 let worst = fitted
                     .iter()
                     .zip(&forces.cells)
@@ -279,7 +289,7 @@ mod tests {
         };
         let disc = edge(n, false, |i, j| (i - c).hypot(j - c) < 30.0, g);
         let worst = |forces: &EdgeForces| {
-            let fitted = forces.ellipse_modes(1.0).expect("a digital disc");
+            let (fitted, _) = forces.ellipse_modes(1.0).expect("a digital disc");
             fitted
                 .iter()
                 .zip(&forces.cells)
@@ -335,7 +345,7 @@ mod tests {
                     h / b * (1.0 + 0.4 * x - 0.2 * y + 0.1 * x * x + 0.05 * x * y)
                 };
                 let forces = edge(n, true, |i, j| shape(i, j).0 < 1.0, g);
-                let fitted = forces.ellipse_modes(1.0).expect("a digital ellipse");
+                let (fitted, _) = forces.ellipse_modes(1.0).expect("a digital ellipse");
                 let worst = fitted
                     .iter()
                     .zip(&forces.cells)
@@ -397,5 +407,39 @@ mod tests {
             ..disc
         };
         assert!(curved.ellipse_modes(1.0).is_none());
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig {
+            cases: 300,
+            rng_seed: proptest::test_runner::RngSeed::Fixed(20261128),
+            ..proptest::prelude::ProptestConfig::default()
+        })]
+        /// Any super-ellipse (from diamonds to near-squares), any size,
+        /// orientation and position, any field and face: no fit, or a
+        /// finite one.
+        #[test]
+        fn never_a_nan(exponent in 0.5f64..8.0, aspect in 1.0f64..4.0, size in 1.0f64..30.0,
+                       angle in 0.0f64..3.2, ci in 25.0f64..26.0, cj in 25.0f64..26.0,
+                       scale in -300.0f64..300.0, quadratic in proptest::bool::ANY,
+                       half_space in proptest::bool::ANY) {
+            let (s, c) = angle.sin_cos();
+            let inside = |i: f64, j: f64| {
+                let (y, x) = (i - ci, j - cj);
+                let (u, v) = ((c * x + s * y) / (aspect * size), (-s * x + c * y) / size);
+                u.abs().powf(exponent) + v.abs().powf(exponent) < 1.0
+            };
+            let magnitude = 10f64.powf(scale);
+            let g = |i: f64, j: f64| magnitude * (1.0 + 0.5 * ((i - ci) * 0.3).sin() * j.cos());
+            let forces = EdgeForces {
+                face_degree: Some(if quadratic { 2 } else { 1 }),
+                ..edge(52, half_space, inside, g)
+            };
+            if let Some((fitted, functions)) = forces.ellipse_modes(1.0) {
+                proptest::prop_assert_eq!(functions, if quadratic { 9 } else { 5 });
+                proptest::prop_assert_eq!(fitted.len(), forces.cells.len());
+                proptest::prop_assert!(fitted.iter().flatten().all(|v| v.is_finite()));
+            }
+        }
     }
 }

@@ -20,6 +20,8 @@
 //! edge cells (and so every criterion built on them) carry errors of order
 //! one that depend on it.
 
+use super::release::EdgeFit;
+
 /// The material forces of the edge cells of a clamped set, as quadratics in
 /// the depth: with the pressures `d p1 - pf` and displacements `d u1 - uf`
 /// of the punch and shape solutions, `F(d) = d^2 a - d b + c` (N/m per
@@ -177,14 +179,17 @@ impl EdgeForces {
     /// body) under a planar face is fitted instead by the five functions
     /// in which the release rate of a bonded flat punch under force and
     /// moment lies ([`EdgeForces::ellipse_modes`]).
-    pub(super) fn smoothed(&self, delta: f64, window: f64) -> Vec<EdgeRate> {
+    pub(super) fn smoothed(&self, delta: f64, window: f64) -> (Vec<EdgeRate>, EdgeFit) {
         let mut rates = self.smoothed_locally(delta, window);
-        if let Some(modes) = self.ellipse_modes(delta) {
-            for (rate, quadratic) in rates.iter_mut().zip(modes) {
-                rate.quadratic = quadratic;
+        match self.ellipse_modes(delta) {
+            Some((modes, functions)) => {
+                for (rate, quadratic) in rates.iter_mut().zip(modes) {
+                    rate.quadratic = quadratic;
+                }
+                (rates, EdgeFit::Modes { functions })
             }
+            None => (rates, EdgeFit::Window { cells: window }),
         }
-        rates
     }
 
     /// The local fit of [`EdgeForces::smoothed`].

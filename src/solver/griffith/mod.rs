@@ -27,7 +27,7 @@ use branches::Raw;
 pub use branches::{AdhesiveBranches, BranchPoint};
 pub use peel::{PeelPoint, PeelingPath, PEEL_FRACTION};
 use periodic::{connected, half_period_error};
-pub use release::{EdgePoint, EdgeRelease, EDGE_WINDOW};
+pub use release::{EdgeFit, EdgePoint, EdgeRelease, EDGE_WINDOW};
 
 /// The smallest contact set of the family, in cells: below about this size
 /// the staircase is too coarse for a contact edge to mean anything.

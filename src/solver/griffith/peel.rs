@@ -8,7 +8,7 @@ use crate::indenter::Indenter;
 
 use super::super::ContactSolver;
 use super::material::{ClampedPair, EdgeForces};
-use super::EDGE_WINDOW;
+use super::{EdgeFit, EDGE_WINDOW};
 
 /// Edge cells whose release rate is at least this fraction of the largest
 /// peel together in one step of [`ContactSolver::peel_punch`]. The path
@@ -76,6 +76,10 @@ pub struct PeelPoint {
     /// The edge cell that reaches the work of adhesion first (m from the
     /// indenter's axis): where the contact peels next.
     pub peels_at: (f64, f64),
+    /// How this contact's release rates were estimated: fitted by modes
+    /// (the whole face of a disc or an ellipse) or smoothed by the window
+    /// (contacts peeled from those, other shapes).
+    pub fit: EdgeFit,
 }
 
 /// The peeling path of a bonded flat punch ([`ContactSolver::peel_punch`]).
@@ -406,7 +410,7 @@ impl ContactSolver {
                 periodic,
                 matches!(self.substrate, crate::Substrate::HalfSpace(_)),
             );
-            let rates = forces.smoothed(spacing, peel_window(cells));
+            let (rates, fit) = forces.smoothed(spacing, peel_window(cells));
             // The first edge cell to release the work as the depth falls.
             let first = rates
                 .iter()
@@ -439,6 +443,7 @@ impl ContactSolver {
                 contact_cells: cells,
                 contact_area: cells as f64 * area,
                 peels_at: grid.cell_centre(i, j),
+                fit,
             });
             let threshold = PEEL_FRACTION * work;
             let step = points.len() - 1;
