@@ -26,9 +26,9 @@
 //! half-space) is fitted to the edge cells by least squares (the conic
 //! through their centres; `ellipse_fit.rs`). Where every edge cell lies
 //! within a band of [`MAX_SPREAD`] cells of it and the cells are as many
-//! as a digital ellipse of that size has, the edge cells'
-//! material forces are projected on the five virtual motions `V = phi_k(x')
-//! x'` (`x'` the cell's position scaled onto the fitted ellipse, so `V . n =
+//! as a digital ellipse of that size has, the edge cells' material forces
+//! are projected on the five (or nine) virtual motions `V = phi_k(x') x'`
+//! (`x'` the cell's position scaled onto the fitted ellipse, so `V . n =
 //! phi_k h`: the sums converge to `int G phi_k h ds` at first order in the
 //! cell, whatever the edge's direction) and the release rate is the
 //! Galerkin fit `G = h sum g_l phi_l` in their span. The fit averages over
@@ -51,8 +51,12 @@ const MIN_EDGE_CELLS: usize = 24;
 /// 2 keeps the first contacts of a peeling path (a disc less a few edge
 /// cells) on the modes (with 1.5 they fall back to the window sooner, and
 /// a disc tilted by a tenth of Kendall's depth came off 1.2 and 2.0 %
-/// beyond its onset at 32 and 64 cells instead of 0 and 0.9 %). Squares of
-/// up to 10 cells fit a circle closer: see [`EDGE_COUNT`].
+/// beyond its onset at 32 and 64 cells instead of 0 and 0.9 %; with 3,
+/// tried on 2026-11-28, the ten such discs at 64 cells all came off at
+/// their onsets and at 128 cells 0.5 to 0.9 % beyond: the band decides
+/// where a barely stable path switches estimator, not how exact the fit
+/// is, so it stays at 2). Squares of up to 10 cells fit a circle closer:
+/// see [`EDGE_COUNT`].
 const MAX_SPREAD: f64 = 2.0;
 /// The edge cells of a digital ellipse over the number expected of the
 /// fitted one (the integral of `max(|n_x|, |n_y|)` along it: a straight

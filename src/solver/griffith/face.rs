@@ -31,8 +31,8 @@ pub(super) fn degree(
 
 /// Whether the indenter's heights over the set `pair.attached` form a plane:
 /// their central differences (where both neighbours are in the set) the
-/// same at every cell along each axis, to [`ROUNDING`] of the largest slope or of
-/// the heights over a cell.
+/// same at every cell along each axis, to [`ROUNDING`] of the largest slope
+/// or of the heights over a cell.
 fn planar(pair: &ClampedPair, rows: usize, columns: usize, delta: f64, periodic: bool) -> bool {
     let mut ranges = [[f64::INFINITY, f64::NEG_INFINITY]; 2];
     let mut largest = 0.0f64;
