@@ -176,9 +176,9 @@ impl EdgeForces {
     /// uniform release, whatever its direction.
     ///
     /// The edge of a digital ellipse on a half-space (or disc on any
-    /// body) under a planar face is fitted instead by the five functions
-    /// in which the release rate of a bonded flat punch under force and
-    /// moment lies ([`EdgeForces::ellipse_modes`]).
+    /// body) under a planar or quadratic face is fitted instead by the
+    /// five or nine functions in which its release rate lies
+    /// ([`EdgeForces::ellipse_modes`]); the second value says which.
     pub(super) fn smoothed(&self, delta: f64, window: f64) -> (Vec<EdgeRate>, EdgeFit) {
         let mut rates = self.smoothed_locally(delta, window);
         match self.ellipse_modes(delta) {
