@@ -122,7 +122,7 @@ pub(crate) fn peel_punch<'py>(
     d.set_item("peels_y", PyArray1::from_vec(py, column(&|p| p.peels_at.1)))?;
     let modes: Vec<bool> = points
         .iter()
-        .map(|p| fit_name(&p.fit).0 == "modes")
+        .map(|p| matches!(p.fit, lc::solver::EdgeFit::Modes { .. }))
         .collect();
     d.set_item("fitted_by_modes", PyArray1::from_vec(py, modes))?;
     d.set_item("pull_off_force", path.pull_off().force)?;

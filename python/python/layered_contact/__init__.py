@@ -140,7 +140,9 @@ def peel_punch(
     ``force`` (N) at which each comes off, ``stiffness`` (N/m, its bonded
     ``dF/dd``), ``contact_cells``,
     ``contact_area`` (m^2), ``peels_x``, ``peels_y`` (m, where it peels
-    next); and ``pull_off_force``, ``pull_off_depth`` (the most tensile
+    next), ``fitted_by_modes`` (whether that contact's release rates were
+    fitted over its whole edge, a disc's or an ellipse's, rather than
+    smoothed by the window); and ``pull_off_force``, ``pull_off_depth`` (the most tensile
     force along the path: the pull-off under force control),
     ``jump_off_depth``, ``jump_off_force`` (under fixed grips),
     ``detaches_at_onset`` (a disc: True; a punch with corners comes off
