@@ -99,8 +99,9 @@ fn kendalls_disc_comes_off_at_its_onset() {
         let estar = rubber().contact_modulus();
         let kendall = -(8.0 * PI * estar * WORK * radius.powi(3)).sqrt();
         let error = path.pull_off().force / kendall - 1.0;
+        // Measured +0.66 and +0.37 % (the disc's edge by its modes).
         println!("disc {cells}: {error}");
-        assert!(error.abs() < 0.02, "{error}");
+        assert!(error.abs() < 0.01, "{error}");
         // The depth of that force on the face's stiffness 2 E* a.
         let stiffness = face.force / face.depth;
         assert!((stiffness / (2.0 * estar * radius) - 1.0).abs() < 0.02);
@@ -111,7 +112,9 @@ fn kendalls_disc_comes_off_at_its_onset() {
 fn a_square_comes_off_after_its_corners_start_to_detach() {
     // Measured (BENCHMARKS.md, over N^1.5): the onset at the corners 451.0,
     // 400.5 uN at 32, 64 cells across (falling with the cell), the
-    // pull-off 476.3, 472.2 (then 472.4 at 128); turned by 30 and 45
+    // pull-off 477.1, 472.2 (476.3 at 32 before 2026-11-28, when the
+    // rounded contacts of the path took the fitted circle's modes; 472.4
+    // at 128 measured before); turned by 30 and 45
     // degrees 471.4 and 476.0 at 64 cells (472.3 and 471.8 at 128): the
     // orientation moves it by less than 1 %. Kendall's disc inscribed in
     // the square: 451.8.
@@ -120,7 +123,7 @@ fn a_square_comes_off_after_its_corners_start_to_detach() {
     println!("square: {coarse} {fine}, onsets {onset} {fine_onset}");
     assert!(!at_onset);
     assert!(fine_onset < 0.9 * onset, "{onset} {fine_onset}");
-    assert!((coarse - 476.3).abs() < 1.0 && (fine - 472.2).abs() < 1.0);
+    assert!((coarse - 477.1).abs() < 0.5 && (fine - 472.2).abs() < 0.5);
     for angle in [PI / 6.0, PI / 4.0] {
         let (turned, at_onset, _) = square(64, angle);
         println!("square at {angle}: {turned}");
@@ -254,8 +257,9 @@ fn kendalls_disc_on_a_film_comes_off_at_the_exact_layered_force() {
     // A rubber film on glass as thick as the punch's radius, and twice as
     // thin: the layered Kendall force (Axisymmetric), radius the
     // staircase's area less the edge shift as on the half-space. Measured
-    // at 32 cells across: +0.37 and +0.42 % (the half-space +0.33 %); at
-    // 64 on the thinner film -0.16 %.
+    // at 32 cells across: +0.38 and +0.39 % (the half-space +0.37 %); at
+    // 64 on the thinner film +0.23 % (the disc's edge by its modes since
+    // 2026-11-27; by the window +0.37, +0.42, -0.16 %).
     for (ratio, cells, bound) in [(1.0, 32, 6e-3), (2.0, 32, 6e-3), (2.0, 64, 3e-3)] {
         let a = 0.5 * cells as f64 * DELTA;
         let film = Substrate::layer_on_rigid_base(rubber(), a / ratio).unwrap();
