@@ -389,7 +389,9 @@
 //! over the edge -0.39 to -0.57, -0.20 to -0.26, -0.095 to -0.116 % at 64,
 //! 128, 256 cells across (the window -0.61 to -0.79 % at 64), the worst
 //! edge cell 0.42 to 3.8, 0.42 to 1.2, 0.17 to 0.40 % (the window 2 to 6.7
-//! % at 256, not converging). Which estimator a contact's rates came from
+//! % at 256, not converging); on a film (`a/h = 1.75`, rigid base) at the
+//! exact layered JKR state the mean -0.38 to -0.40 % at 64 cells and -0.22
+//! % at 128. Which estimator a contact's rates came from
 //! is on the result: [`EdgeRelease::fit`](crate::solver::EdgeRelease::fit)
 //! and [`PeelPoint::fit`](crate::solver::PeelPoint::fit)
 //! ([`EdgeFit`](crate::solver::EdgeFit); in Python the `fit` of
