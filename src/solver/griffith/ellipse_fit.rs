@@ -73,7 +73,7 @@ impl Ellipse {
         })
     }
 
-    /// `q y` and `y^T q y` for `y = x - centre`.
+    /// `y = x - centre`, `q y` and `y^T q y` (1 on the ellipse).
     fn level(&self, x: [f64; 2]) -> ([f64; 2], [f64; 2], f64) {
         let y = [x[0] - self.centre[0], x[1] - self.centre[1]];
         let g = [
