@@ -17,7 +17,9 @@ use super::material::{ClampedPair, EdgeForces};
 /// punch's onset at 64 cells across is 0.2 to 0.8 % off at 8 cells, 0.5 to
 /// 0.9 % at 12 and 0.9 to 1.3 % at 16 (a wider window blurs the peak at the
 /// tips); the worst edge cell of the JKR sphere's disc on the cell centres
-/// is 2.5 % off at 8 cells.
+/// is 2.5 % off at 8 cells. (Both measured before those edges were fitted
+/// by their modes, [`EdgeFit::Modes`], where the window sets only the
+/// normals.)
 pub const EDGE_WINDOW: f64 = 8.0;
 /// The widest smoothing window accepted, cells.
 const MAX_WINDOW: f64 = 64.0;
