@@ -22,32 +22,18 @@ impl Ellipse {
     /// it), with `A = C, B = 0` if `circle`; `None` unless it is a real
     /// ellipse.
     pub(super) fn fit(points: &[[f64; 2]], circle: bool) -> Option<Self> {
-        let n = points.len() as f64;
-        let mut mean = [0.0; 2];
-        for p in points {
-            mean[0] += p[0] / n;
-            mean[1] += p[1] / n;
-        }
-        let spread = (points
-            .iter()
-            .map(|p| (p[0] - mean[0]).powi(2) + (p[1] - mean[1]).powi(2))
-            .sum::<f64>()
-            / n)
-            .sqrt();
-        if !(spread.is_finite() && spread > 0.0) {
-            return None;
-        }
+        let (mean, spread) = centroid(points)?;
         let scaled = |p: &[f64; 2]| [(p[0] - mean[0]) / spread, (p[1] - mean[1]) / spread];
         let [a, b, c, d, e] = if circle {
             let [a, d, e] = least_squares(points.iter().map(|p| {
                 let [u, v] = scaled(p);
-                [u * u + v * v, u, v]
+                ([u * u + v * v, u, v], 1.0)
             }))?;
             [a, 0.0, a, d, e]
         } else {
             least_squares(points.iter().map(|p| {
                 let [u, v] = scaled(p);
-                [u * u, u * v, v * v, u, v]
+                ([u * u, u * v, v * v, u, v], 1.0)
             }))?
         };
         let det = a * c - 0.25 * b * b;
@@ -125,17 +111,37 @@ impl Ellipse {
     }
 }
 
-/// The least-squares solution of `rows . theta = 1`, by the normal
-/// equations.
-fn least_squares<const N: usize>(rows: impl Iterator<Item = [f64; N]>) -> Option<[f64; N]> {
+/// The centroid of `points` and their root-mean-square distance from it;
+/// `None` unless that is positive and finite.
+pub(super) fn centroid(points: &[[f64; 2]]) -> Option<([f64; 2], f64)> {
+    let n = points.len() as f64;
+    let mut mean = [0.0; 2];
+    for p in points {
+        mean[0] += p[0] / n;
+        mean[1] += p[1] / n;
+    }
+    let spread = (points
+        .iter()
+        .map(|p| (p[0] - mean[0]).powi(2) + (p[1] - mean[1]).powi(2))
+        .sum::<f64>()
+        / n)
+        .sqrt();
+    (spread.is_finite() && spread > 0.0).then_some((mean, spread))
+}
+
+/// The least-squares solution of `row . theta = target` over the pairs
+/// `(row, target)`, by the normal equations.
+pub(super) fn least_squares<const N: usize>(
+    rows: impl Iterator<Item = ([f64; N], f64)>,
+) -> Option<[f64; N]> {
     let mut matrix = [[0.0; N]; N];
     let mut rhs = [[0.0; 1]; N];
-    for row in rows {
+    for (row, target) in rows {
         for (k, &rk) in row.iter().enumerate() {
             for (entry, &rl) in matrix[k].iter_mut().zip(&row) {
                 *entry += rk * rl;
             }
-            rhs[k][0] += rk;
+            rhs[k][0] += rk * target;
         }
     }
     solve(matrix, rhs).map(|x| x.map(|[value]| value))

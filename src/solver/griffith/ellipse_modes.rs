@@ -77,12 +77,14 @@ impl EdgeForces {
         if self.periodic || self.cells.len() < MIN_EDGE_CELLS {
             return None;
         }
-        match self.face_degree? {
+        let degree = self.face_degree?;
+        let ellipse = self.edge_ellipse()?;
+        match degree {
             1 => self
-                .galerkin(&self.edge_ellipse()?, delta, harmonics::<5>)
+                .galerkin(&ellipse, delta, harmonics::<5>)
                 .map(|rates| (rates, 5)),
             2 => self
-                .galerkin(&self.edge_ellipse()?, delta, harmonics::<9>)
+                .galerkin(&ellipse, delta, harmonics::<9>)
                 .map(|rates| (rates, 9)),
             _ => None,
         }

@@ -4,7 +4,7 @@
 //! `sqrt(1 - f)` (Galin 1953), so its release rate round the edge lies in a
 //! span of `4 n + 1` functions (`ellipse_modes.rs`).
 
-use super::ellipse_fit::solve;
+use super::ellipse_fit::{centroid, least_squares};
 use super::material::ClampedPair;
 
 /// The tolerance of the fits, relative to the largest height or slope.
@@ -79,48 +79,24 @@ fn quadratic(pair: &ClampedPair, columns: usize) -> bool {
     if cells.len() < 6 || heights.iter().any(|h| !h.is_finite()) {
         return false;
     }
-    let count = cells.len() as f64;
-    let position = |c: usize| [(c / columns) as f64, (c % columns) as f64];
-    let mut mean = [0.0; 2];
-    for &c in &cells {
-        let [i, j] = position(c);
-        mean[0] += i / count;
-        mean[1] += j / count;
-    }
-    let spread = (cells
+    let points: Vec<[f64; 2]> = cells
         .iter()
-        .map(|&c| {
-            let [i, j] = position(c);
-            (i - mean[0]).powi(2) + (j - mean[1]).powi(2)
-        })
-        .sum::<f64>()
-        / count)
-        .sqrt();
-    if !(spread.is_finite() && spread > 0.0) {
+        .map(|&c| [(c / columns) as f64, (c % columns) as f64])
+        .collect();
+    let Some((mean, spread)) = centroid(&points) else {
         return false;
-    }
-    let basis = |c: usize| {
-        let [i, j] = position(c);
-        let (u, v) = ((i - mean[0]) / spread, (j - mean[1]) / spread);
+    };
+    let basis = |p: &[f64; 2]| {
+        let (u, v) = ((p[0] - mean[0]) / spread, (p[1] - mean[1]) / spread);
         [1.0, u, v, u * u, u * v, v * v]
     };
-    let mut matrix = [[0.0; 6]; 6];
-    let mut rhs = [[0.0; 1]; 6];
-    for (&c, &h) in cells.iter().zip(&heights) {
-        let row = basis(c);
-        for (k, &rk) in row.iter().enumerate() {
-            for (entry, &rl) in matrix[k].iter_mut().zip(&row) {
-                *entry += rk * rl;
-            }
-            rhs[k][0] += rk * h;
-        }
-    }
-    let Some(fitted) = solve(matrix, rhs) else {
+    let Some(fitted) = least_squares(points.iter().zip(&heights).map(|(p, &h)| (basis(p), h)))
+    else {
         return false;
     };
     let largest = heights.iter().fold(0.0f64, |m, h| m.max(h.abs()));
-    cells.iter().zip(&heights).all(|(&c, &h)| {
-        let value: f64 = basis(c).iter().zip(&fitted).map(|(b, [g])| b * g).sum();
+    points.iter().zip(&heights).all(|(p, &h)| {
+        let value: f64 = basis(p).iter().zip(&fitted).map(|(b, g)| b * g).sum();
         (value - h).abs() <= ROUNDING * largest
     })
 }
