@@ -35,7 +35,10 @@ ZONE = 4
 SLOPE = 1.0 / (2 * ZONE)  # sigma' in E* / Delta
 
 
-def rates(radius, width=ZONE):
+def ring_map(radius, width=ZONE):
+    """The fixed point's linear map ``I - J`` on a ring of zone cells
+    ``width`` wide round a disc of contact of ``radius`` cells, and the zone
+    cells' centres."""
     n = radius + width + 2
     x, y = np.meshgrid(np.arange(-n, n + 1) + 0.0, np.arange(-n, n + 1) + 0.0)
     # Cell centres at half-integers so that the disc is symmetric.
@@ -48,9 +51,13 @@ def rates(radius, width=ZONE):
     k_zz = love(xz[:, None] - xz[None, :], yz[:, None] - yz[None, :])
     s_z = k_zz - k_cz.T @ np.linalg.solve(k_cc, k_cz)
     s_z = 0.5 * (s_z + s_z.T)
-    a = np.eye(len(xz)) - SLOPE * s_z
+    return np.eye(len(xz)) - SLOPE * s_z, xz, yz, len(xc)
+
+
+def rates(radius, width=ZONE):
+    a, xz, yz, contact_cells = ring_map(radius, width)
     mu = 1.0 - np.linalg.eigvalsh(a)
-    out = [radius, len(xc), len(xz), mu.max(), 1.0 / (1.0 - mu.max())]
+    out = [radius, contact_cells, len(xz), mu.max(), 1.0 / (1.0 - mu.max())]
     theta = np.arctan2(yz, xz)
     for harmonics in (0, 2, 4, 8, 16):
         columns = [np.ones_like(theta)]

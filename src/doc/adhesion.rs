@@ -419,12 +419,17 @@
 //! constrained conjugate gradients; the tensions follow from its gaps. The
 //! fixed point is mixed by Anderson acceleration (Walker & Ni 2011, SIAM J.
 //! Numer. Anal. 49, 1715) and each inner solve is only as tight as the
-//! fixed point has come: 19 rounds and about 80 conjugate-gradient
-//! iterations a solve at 32 cells across a tilted paraboloid's pull-off
-//! contact, 28 and 115 at 64 (the rounds grow with the grid: the zone's
-//! slowest modes, the edge's low angular harmonics, contract more slowly
-//! as the zone spans more cells against the law's; measured in
-//! `BENCHMARKS.md`, "Adhesive scene cycles: error and cost"). Where the mixing makes no progress for 25 rounds
+//! fixed point has come. The zone's slowest modes are its long modes along
+//! the edge (the edge's low angular harmonics round a disc), which contract
+//! more slowly as the zone spans more cells against the law's; each
+//! round's residual is smoothed along the zone by a Gaussian of 4 cells
+//! and amplified three times on those modes before it is mixed (a
+//! preconditioner of the map; components of the zone under 100 cells, a
+//! rough contact's small patches, are left as they are). A solve then
+//! takes 13 rounds and about 57 conjugate-gradient iterations at 32 cells
+//! across a tilted paraboloid's pull-off contact, 19 and 79 at 64 (19 and
+//! 81, 28 and 115 without the smoothing; measured in `BENCHMARKS.md`,
+//! "Adhesive scene cycles: error and cost"). Where the mixing makes no progress for 25 rounds
 //! (contact sets flipping) the fixed point takes damped plain steps; a
 //! contact that grows or shrinks six rounds in a row (an edge zipping in or
 //! peeling off cell by cell on a rough surface, the quasi-static jump

@@ -60,6 +60,7 @@ mod cg_ends;
 mod cohesive;
 mod cohesive_law;
 mod cohesive_pull_off;
+mod cohesive_smoothing;
 mod cohesive_steps;
 mod curvature;
 mod griffith;
