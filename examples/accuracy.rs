@@ -342,10 +342,23 @@ fn main() -> Result<()> {
     }
     std::fs::create_dir_all(&out)?;
     let mut rows = Vec::new();
-    for case in cases()?
+    let all = cases()?;
+    let names: Vec<&'static str> = all.iter().map(|c| c.name).collect();
+    let chosen: Vec<_> = all
         .into_iter()
         .filter(|c| only.as_ref().is_none_or(|o| c.name.starts_with(o.as_str())))
-    {
+        .collect();
+    if chosen.is_empty() {
+        // An empty table has no axes to plot (and the plot's log axes
+        // over an empty range ran out of memory).
+        return Err(format!(
+            "no case starts with {:?}; the cases are: {}",
+            only.unwrap_or_default(),
+            names.join(", ")
+        )
+        .into());
+    }
+    for case in chosen {
         let mut previous: Option<(usize, f64, f64)> = None;
         rows.push(Row {
             case: format!("{}/exact", case.name),
@@ -472,6 +485,10 @@ fn plot(path: &std::path::Path, rows: &[Row]) -> Result<()> {
         .iter()
         .filter(|r| r.rel_error > 0.0 && r.seconds > 0.0)
         .collect();
+    if positive.is_empty() {
+        // Nothing to place on log axes (every error or time zero).
+        return Ok(());
+    }
     let t0 = positive
         .iter()
         .map(|r| r.seconds)
