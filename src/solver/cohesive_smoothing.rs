@@ -100,14 +100,14 @@ impl ZoneSmoothing {
         self.along.resize(zone.len(), 0.0);
         self.components(zone);
         let mut start = 0;
-        while start < self.order.len() {
-            let end = self.ends[self.ends.partition_point(|&e| e <= start)];
-            self.cells.clear();
-            self.cells.extend_from_slice(&self.order[start..end]);
-            start = end;
-            if self.cells.len() >= MIN_COMPONENT_CELLS {
+        for k in 0..self.ends.len() {
+            let end = self.ends[k];
+            if end - start >= MIN_COMPONENT_CELLS {
+                self.cells.clear();
+                self.cells.extend_from_slice(&self.order[start..end]);
                 self.precondition_cells(mapped, tension, target);
             }
+            start = end;
         }
     }
 
