@@ -129,13 +129,7 @@ impl ZoneSmoothing {
             while next < self.order.len() {
                 let c = self.order[next];
                 next += 1;
-                let (i, j) = (c / columns, c % columns);
-                let around = [
-                    self.shift(i, -1, rows).map(|m| m * columns + j),
-                    self.shift(i, 1, rows).map(|m| m * columns + j),
-                    self.shift(j, -1, columns).map(|m| i * columns + m),
-                    self.shift(j, 1, columns).map(|m| i * columns + m),
-                ];
+                let around = super::wrapped_neighbours(c, rows, columns, self.periodic);
                 for m in around.into_iter().flatten() {
                     if zone[m] && !self.seen[m] {
                         self.seen[m] = true;

@@ -510,4 +510,24 @@ pub(super) fn neighbours(c: usize, rows: usize, columns: usize) -> [Option<usize
     ]
 }
 
+/// The 4-neighbours of cell `c` (up, down, left, right), wrapping round a
+/// periodic grid.
+pub(super) fn wrapped_neighbours(
+    c: usize,
+    rows: usize,
+    columns: usize,
+    periodic: bool,
+) -> [Option<usize>; 4] {
+    if !periodic {
+        return neighbours(c, rows, columns);
+    }
+    let (i, j) = (c / columns, c % columns);
+    [
+        Some(((i + rows - 1) % rows) * columns + j),
+        Some(((i + 1) % rows) * columns + j),
+        Some(i * columns + (j + columns - 1) % columns),
+        Some(i * columns + (j + 1) % columns),
+    ]
+}
+
 pub(crate) use crate::error::finite as check_finite;

@@ -115,23 +115,7 @@ impl ContactSolver {
 }
 
 /// The 4-neighbours of cell `c`, wrapping round a periodic grid.
-pub(super) fn neighbours(
-    c: usize,
-    rows: usize,
-    columns: usize,
-    periodic: bool,
-) -> [Option<usize>; 4] {
-    if !periodic {
-        return crate::solver::neighbours(c, rows, columns);
-    }
-    let (i, j) = (c / columns, c % columns);
-    [
-        Some(((i + rows - 1) % rows) * columns + j),
-        Some(((i + 1) % rows) * columns + j),
-        Some(i * columns + (j + columns - 1) % columns),
-        Some(i * columns + (j + 1) % columns),
-    ]
-}
+pub(super) use crate::solver::wrapped_neighbours as neighbours;
 
 /// The error of a periodic family whose sets would span more than half the
 /// period.
