@@ -49,8 +49,11 @@ pub(super) struct ZoneSmoothing {
     rows: usize,
     columns: usize,
     periodic: bool,
-    /// `exp(-k^2 / rho^2)` for `k = 0..=reach`.
-    weights: Vec<f64>,
+    /// The Gaussian's taps `exp(-k^2 / rho^2)`, `k = -reach..=reach`, along
+    /// the rows and along the columns (a periodic axis narrower than the
+    /// kernel cuts it at half its period, so that no cell is visited twice).
+    along_taps: Vec<f64>,
+    down_taps: Vec<f64>,
     /// The zone's cells.
     cells: Vec<usize>,
     /// Per zone cell, `D^-1/2`, and the scaled residual `D^-1/2 r`.
@@ -67,16 +70,26 @@ pub(super) struct ZoneSmoothing {
 
 impl ZoneSmoothing {
     pub(super) fn new(rows: usize, columns: usize, periodic: bool) -> Self {
-        let radius = SMOOTHING_RADIUS;
-        let reach = (3.0 * radius).ceil() as usize;
-        let weights = (0..=reach)
-            .map(|k| (-((k * k) as f64) / (radius * radius)).exp())
-            .collect();
+        let reach = (3.0 * SMOOTHING_RADIUS).ceil() as usize;
+        let taps = |cells: usize| -> Vec<f64> {
+            let r = if periodic {
+                reach.min(cells.saturating_sub(1) / 2)
+            } else {
+                reach
+            };
+            (0..=2 * r)
+                .map(|k| {
+                    let d = k.abs_diff(r) as f64;
+                    (-d * d / (SMOOTHING_RADIUS * SMOOTHING_RADIUS)).exp()
+                })
+                .collect()
+        };
         ZoneSmoothing {
             rows,
             columns,
             periodic,
-            weights,
+            along_taps: taps(columns),
+            down_taps: taps(rows),
             cells: Vec::new(),
             scale: Vec::new(),
             residual: Vec::new(),
@@ -180,25 +193,14 @@ impl ZoneSmoothing {
     /// rows' pass cleared after it.
     fn gaussian(&mut self, x: &[f64], out: &mut [f64]) {
         let (rows, columns) = (self.rows, self.columns);
-        let reach = self.weights.len() - 1;
-        // A kernel wider than a periodic grid would visit cells twice.
-        let half = |cells: usize| {
-            if self.periodic {
-                reach.min((cells - 1) / 2)
-            } else {
-                reach
-            }
-        };
-        let (rc, rr) = (half(columns), half(rows));
-        let taps =
-            |r: usize| -> Vec<f64> { (0..=2 * r).map(|k| self.weights[k.abs_diff(r)]).collect() };
-        let (along_taps, down_taps) = (taps(rc), taps(rr));
+        let (along_taps, down_taps) = (&self.along_taps, &self.down_taps);
+        let (rc, rr) = (along_taps.len() / 2, down_taps.len() / 2);
         let mut along = std::mem::take(&mut self.along);
         for (&c, &v) in self.cells.iter().zip(x) {
             let (i, j) = (c / columns, c % columns);
             let row = &mut along[i * columns..(i + 1) * columns];
             if j >= rc && j + rc < columns {
-                for (a, w) in row[j - rc..=j + rc].iter_mut().zip(&along_taps) {
+                for (a, w) in row[j - rc..=j + rc].iter_mut().zip(along_taps) {
                     *a += w * v;
                 }
             } else {
@@ -215,7 +217,7 @@ impl ZoneSmoothing {
                 along[(i - rr) * columns + j..]
                     .iter()
                     .step_by(columns)
-                    .zip(&down_taps)
+                    .zip(down_taps)
                     .map(|(a, w)| a * w)
                     .sum()
             } else {
