@@ -19,10 +19,16 @@
 //!   reference: the two methods' difference);
 //! * `sinusoid`: Johnson's (1995) sinusoid, `alpha = 0.3`, `N` cells per
 //!   wavelength with the crests along the grid (`N^2` cells) and at 45
-//!   degrees (`(N sqrt 2)^2` cells).
+//!   degrees (`(N sqrt 2)^2` cells);
+//! * `strip`: the same sinusoid along the grid on `N x 8` cells (a straight
+//!   edge along the grid, cheap enough for thousands of cells per
+//!   wavelength).
 //!
-//! `cargo run --release --example cohesive_convergence -- [zone cells] [case N...]...`,
-//! for example `-- 8 sphere 16 32 64 punch 16 32 sinusoid 128 181`.
+//! `cargo run --release --example cohesive_convergence -- [zone cells | auto] [case N...]...`,
+//! for example `-- 8 sphere 16 32 64 punch 16 32 sinusoid 128 181`; `auto`
+//! grows the zone with the cells across the pull-off contact
+//! ([`CohesiveZone::with_resolution`]; the sinusoid's contact from its exact
+//! pull-off half-width).
 use std::f64::consts::PI;
 use std::time::Instant;
 
@@ -36,13 +42,18 @@ const RADIUS: f64 = 0.01;
 
 fn main() -> Result<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let k: f64 = args.first().and_then(|a| a.parse().ok()).unwrap_or(8.0);
+    // `auto`: the zone grown with the resolution (`CohesiveZone::with_resolution`).
+    let auto = args.first().is_some_and(|a| a == "auto");
+    let k: f64 = args
+        .first()
+        .and_then(|a| a.parse().ok())
+        .unwrap_or(if auto { 4.0 } else { 8.0 });
     // CURVATURE_CORRECTION=c overrides the default (0 turns it off).
     let correction: f64 = std::env::var("CURVATURE_CORRECTION")
         .ok()
         .and_then(|c| c.parse().ok())
         .unwrap_or(layered_contact::solver::CURVATURE_CORRECTION);
-    let zone = CohesiveZone::new(WORK, WORK)?
+    let base = CohesiveZone::new(WORK, WORK)?
         .with_zone_cells(k)?
         .with_curvature_correction(correction)?;
     let rubber = Material::new(1e6, 0.48)?;
@@ -53,6 +64,13 @@ fn main() -> Result<()> {
             continue;
         };
         let clock = Instant::now();
+        // The zone for `n` cells across the pull-off contact.
+        let zone = if auto {
+            base.with_resolution(n as f64)?
+        } else {
+            base
+        };
+        let k = zone.zone_cells();
         match case.as_str() {
             "sphere" | "layer" | "stack" => {
                 let jkr = JkrSphere::new(&rubber, RADIUS, WORK)?;
@@ -99,7 +117,7 @@ fn main() -> Result<()> {
                     &case,
                     k,
                     n,
-                    cells,
+                    &format!("{cells}^2"),
                     p.force / exact - 1.0,
                     p.solves,
                     p.iterations,
@@ -153,7 +171,7 @@ fn main() -> Result<()> {
                     "punch (walked)",
                     k,
                     n,
-                    cells,
+                    &format!("{cells}^2"),
                     error,
                     solves,
                     iterations,
@@ -197,14 +215,23 @@ fn main() -> Result<()> {
                     ((1, 1), (n as f64 * 2f64.sqrt()).round() as usize),
                 ] {
                     let clock = Instant::now();
-                    let (error, solves, iterations) = sinusoid(&rubber, &zone, wave, cells)?;
+                    let (error, solves, iterations, k) =
+                        sinusoid(&rubber, &base, auto, wave, (cells, cells))?;
                     let name = if wave == (1, 0) {
                         "sinusoid along"
                     } else {
                         "sinusoid 45 deg"
                     };
-                    report(name, k, n, cells, error, solves, iterations, clock);
+                    let grid = format!("{cells}^2");
+                    report(name, k, n, &grid, error, solves, iterations, clock);
                 }
+            }
+            "strip" => {
+                // Crests along the grid on a strip eight cells wide.
+                let (error, solves, iterations, k) =
+                    sinusoid(&rubber, &base, auto, (1, 0), (n, 8))?;
+                let grid = format!("{n} x 8");
+                report("strip along", k, n, &grid, error, solves, iterations, clock);
             }
             other => println!("unknown case {other:?}"),
         }
@@ -227,48 +254,64 @@ fn report(
     case: &str,
     k: f64,
     n: usize,
-    cells: usize,
+    grid: &str,
     error: f64,
     solves: usize,
     iterations: usize,
     clock: Instant,
 ) {
     println!(
-        "{case:16} zone {k:>4} cells  N {n:>4} ({cells}^2)  error {:+.4} %  {solves} solves  {iterations} iterations  {:.1} s",
+        "{case:16} zone {k:>5.2} cells  N {n:>4} ({grid})  error {:+.4} %  {solves} solves  {iterations} iterations  {:.1} s",
         100.0 * error,
         clock.elapsed().as_secs_f64()
     );
 }
 
-/// The pull-off error of Johnson's sinusoid with wave vector `wave` on
-/// `cells^2` periodic cells, its solves and iterations.
+/// The pull-off error of Johnson's sinusoid with wave vector `wave` (in
+/// waves along the rows and the columns) on `rows x columns` periodic
+/// cells, its solves, iterations and zone's cells (with `auto`, grown
+/// with the cells across the pull-off contact's width).
 fn sinusoid(
     rubber: &Material,
-    zone: &CohesiveZone,
+    base: &CohesiveZone,
+    auto: bool,
     wave: (usize, usize),
-    cells: usize,
-) -> Result<(f64, usize, usize)> {
+    (rows, columns): (usize, usize),
+) -> Result<(f64, usize, usize, f64)> {
     let delta = 1e-5;
-    let side = cells as f64 * delta;
-    let wavelength = side / ((wave.0 * wave.0 + wave.1 * wave.1) as f64).sqrt();
+    let (kx, ky) = (wave.0 as f64 / rows as f64, wave.1 as f64 / columns as f64);
+    let wavelength = delta / kx.hypot(ky);
     let amplitude = (2.0 * wavelength * WORK / (PI * PI * rubber.contact_modulus())).sqrt() / 0.3;
     let exact = JkrSinusoid::new(rubber, wavelength, amplitude, WORK)?;
-    let grid = Grid::square_of_side(cells, side)?;
+    let grid = Grid::new(rows, columns, delta)?;
     let values = (0..grid.len())
         .map(|c| {
-            let (i, j) = (c / cells, c % cells);
-            let phase = ((wave.0 * i + wave.1 * j) % cells) as f64 / cells as f64;
+            let (i, j) = (c / columns, c % columns);
+            let phase = (kx * i as f64 + ky * j as f64).fract();
             amplitude * (1.0 - (2.0 * PI * phase).cos())
         })
         .collect();
     let map = HeightMap::new(grid, values)?;
     let mut solver = half_space(rubber, &grid, Boundary::Periodic)?;
-    let (pull_off, _) = exact.pull_off()?;
-    let p =
-        solver.cohesive_pull_off(&map, zone, 0.6 * amplitude, amplitude / 40.0, None, &mut ())?;
+    let (pull_off, half_width) = exact.pull_off()?;
+    let zone = if auto {
+        base.with_resolution(2.0 * half_width / delta)?
+    } else {
+        *base
+    };
+    let p = solver.cohesive_pull_off(
+        &map,
+        &zone,
+        0.6 * amplitude,
+        amplitude / 40.0,
+        None,
+        &mut (),
+    )?;
+    let area = grid.len() as f64 * grid.cell_area();
     Ok((
-        p.force / (side * side) / pull_off - 1.0,
+        p.force / area / pull_off - 1.0,
         p.solves,
         p.iterations,
+        zone.zone_cells(),
     ))
 }

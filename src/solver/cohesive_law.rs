@@ -24,7 +24,9 @@ use super::ContactSolver;
 /// trapping, but each nearer the limit). An elliptic paraboloid against
 /// the energy balance at 16, 32, 64 cells: -4.58, -1.41, -0.37 % with 8,
 /// -1.55, -0.25, -0.049 % with 4. About 1.5 times the iterations of 8
-/// cells on the sphere at 64 cells across.
+/// cells on the sphere at 64 cells across. Beyond about 128 cells across
+/// the contact a zone of four cells stops converging (its lattice
+/// trapping): [`CohesiveZone::with_resolution`] grows it with the grid.
 pub const COHESIVE_ZONE_CELLS: f64 = 4.0;
 
 /// The default first-order correction of the zone's bias on curved edges
@@ -109,6 +111,46 @@ impl CohesiveZone {
             zone_cells: cells,
             ..self
         })
+    }
+
+    /// The same law with its zone grown with the resolution: `max(4,
+    /// sqrt(N) / 2)` cells for `N` = `cells_across` cells across the
+    /// pull-off contact (its narrow side; 4 up to 64 cells, 8 at 256, 16
+    /// at 1024). A zone of a fixed number of cells stops converging to the
+    /// JKR limit once its own discretisation is the largest error: a
+    /// straight contact edge along the grid is trapped by the lattice and
+    /// the least force of the unloading, which ripples as the edge steps
+    /// from cell to cell, is too strong by about +0.4 % with 4 cells,
+    /// +0.07 % with 8 and +0.005 % with 16 at any resolution (Johnson's
+    /// sinusoid, `BENCHMARKS.md`, "The cohesive zone grown with the
+    /// resolution"); on curved edges the ripple averages out to less
+    /// (+0.06 to +0.09 % on a sphere with 4 cells). The zone's length
+    /// against the contact costs `-c (k / N)^2` (`c` about 44 % on the
+    /// sphere), so a zone growing like `sqrt(N)` lets both fall: about
+    /// first order in `1/N`. Convergence studies (the accuracy harness,
+    /// `examples/cohesive_convergence.rs`) size the zone so.
+    ///
+    /// ```
+    /// use layered_contact::solver::CohesiveZone;
+    ///
+    /// let zone = CohesiveZone::new(0.05, 0.05)?;
+    /// assert_eq!(zone.with_resolution(32.0)?.zone_cells(), 4.0);
+    /// assert_eq!(zone.with_resolution(256.0)?.zone_cells(), 8.0);
+    /// Ok::<(), layered_contact::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for `cells_across` not in `[1, 2^18]`
+    /// (the zone would pass 256 cells).
+    pub fn with_resolution(self, cells_across: f64) -> Result<Self> {
+        if !(1.0..=262_144.0).contains(&cells_across) {
+            return Err(Error::InvalidParameter {
+                name: "cells across the pull-off contact",
+                value: cells_across,
+                expected: "in [1, 262144]",
+            });
+        }
+        self.with_zone_cells(COHESIVE_ZONE_CELLS.max(0.5 * cells_across.sqrt()))
     }
 
     /// The same law with the zone's first-order bias on curved edges taken

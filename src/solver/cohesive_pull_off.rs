@@ -1,6 +1,7 @@
 //! The pull-off of an unloading through the cohesive zone of
 //! [`cohesive`](super::cohesive): the indenter withdrawn in steps, the
-//! least force searched between the last two ([`least_force`]).
+//! least force searched between the steps around the least one
+//! ([`least_force`]).
 
 use crate::error::{Error, Result};
 use crate::indenter::Indenter;
@@ -23,6 +24,11 @@ pub struct CohesivePullOff {
     pub iterations: usize,
 }
 
+/// Steps in a row whose force is above the least one before
+/// [`ContactSolver::cohesive_pull_off`] takes the least as the pull-off's
+/// neighbourhood.
+const RISES: usize = 3;
+
 /// Unloading steps before [`ContactSolver::cohesive_pull_off`] gives up.
 const MAX_UNLOADING_STEPS: usize = 10_000;
 
@@ -30,8 +36,14 @@ impl ContactSolver {
     /// The pull-off force under displacement control: from the equilibrium
     /// at `depth` (reached from `warm`, or cold), the indenter is withdrawn
     /// in steps of `step` (m) with [`solve_depth_cohesive`](Self::solve_depth_cohesive)
-    /// until the force rises again or the contact is lost; the least force
-    /// of the last two steps is then bracketed by golden sections to a
+    /// until the force has stayed above its least value for three steps
+    /// in a row or the contact is lost (a contact edge trapped by the
+    /// lattice makes the force ripple about its trend, so one rise is not
+    /// yet the pull-off: a straight edge along the grid with the zone of
+    /// four cells stopped a third short of Johnson's sinusoid's pull-off
+    /// at 4096 cells per wavelength when the walk ended at the first rise);
+    /// the least force
+    /// of the steps on either side of the least one is then bracketed by golden sections to a
     /// sixteenth of a step, each equilibrium reached from the nearest one
     /// above it, and solved at the vertex of the parabola through the
     /// least three (exact to third order in the bracket where the force is
@@ -84,13 +96,15 @@ impl ContactSolver {
                 expected: "a depth at which the indenter is in contact",
             });
         }
-        // The last three (depth, force, state) of the walk.
+        // The last three (depth, force, state) of the walk, and those around
+        // the least force so far once a step above it has been solved.
         let mut walk = vec![(depth, force, end)];
+        let mut around_least = None;
+        let (mut least, mut rises) = (force, 0usize);
         for k in 1..=MAX_UNLOADING_STEPS {
             let d = depth - k as f64 * step;
             let (force, contact, end) = solve(self, d, Some(&walk[walk.len() - 1].2))?;
-            let rising = force > walk[walk.len() - 1].1;
-            if rising && walk.len() == 1 {
+            if force > least && k == 1 {
                 return Err(Error::InvalidParameter {
                     name: "start depth of the unloading (m)",
                     value: depth,
@@ -101,7 +115,20 @@ impl ContactSolver {
             if walk.len() > 3 {
                 walk.remove(0);
             }
-            if rising || contact == 0 {
+            if force < least {
+                (least, rises) = (force, 0);
+            } else {
+                rises += 1;
+                if rises == 1 {
+                    around_least = Some(walk.clone());
+                }
+            }
+            // The force rising for RISES steps in a row: a contact edge
+            // trapped by the lattice holds a little longer and then steps,
+            // so that the force ripples about its trend (by up to 5 % of a
+            // step's force on a straight edge along the grid with a zone of
+            // four cells) and one rise is not yet the pull-off.
+            if rises >= RISES || contact == 0 {
                 break;
             }
             if k == MAX_UNLOADING_STEPS {
@@ -112,8 +139,9 @@ impl ContactSolver {
                 });
             }
         }
-        // The least force between the last three steps.
-        let walked: Vec<Probe<WarmStart>> = walk
+        // The least force between the steps around the least one.
+        let walked: Vec<Probe<WarmStart>> = around_least
+            .unwrap_or(walk)
             .into_iter()
             .map(|(depth, force, kept)| Probe { depth, force, kept })
             .collect();
