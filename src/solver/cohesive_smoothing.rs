@@ -56,9 +56,11 @@ pub(super) struct ZoneSmoothing {
     down_taps: Vec<f64>,
     /// The zone's cells.
     cells: Vec<usize>,
-    /// Per zone cell, `D^-1/2`, and the scaled residual `D^-1/2 r`.
+    /// Per zone cell, `D^-1/2`, the scaled residual `D^-1/2 r` and its
+    /// smoothing `G D^-1/2 r`.
     scale: Vec<f64>,
     residual: Vec<f64>,
+    smoothed: Vec<f64>,
     /// The pass along the rows, of the grid's size, zero between uses.
     along: Vec<f64>,
     /// The zone's components (`ZoneSmoothing::components`) and the cells
@@ -93,6 +95,7 @@ impl ZoneSmoothing {
             cells: Vec::new(),
             scale: Vec::new(),
             residual: Vec::new(),
+            smoothed: Vec::new(),
             along: Vec::new(),
             order: Vec::new(),
             ends: Vec::new(),
@@ -169,12 +172,14 @@ impl ZoneSmoothing {
             *s = if *s > 0.0 { 1.0 / s.sqrt() } else { 0.0 };
             *v = *s * (mapped[c] - tension[c]);
         }
-        let mut smoothed = vec![0.0; self.cells.len()];
+        let mut smoothed = std::mem::take(&mut self.smoothed);
+        smoothed.clear();
+        smoothed.resize(self.cells.len(), 0.0);
         self.gaussian(&values, &mut smoothed);
         for ((w, s), &c) in smoothed.iter().zip(&sums).zip(&self.cells) {
             target[c] += SMOOTHING_GAIN * s * w;
         }
-        (self.scale, self.residual) = (values, sums);
+        (self.scale, self.residual, self.smoothed) = (values, sums, smoothed);
     }
 
     /// Neighbour `k` cells along an axis of `period` cells from `i`, if on
