@@ -120,11 +120,12 @@ impl CohesiveZone {
     /// JKR limit once its own discretisation is the largest error: a
     /// straight contact edge along the grid is trapped by the lattice and
     /// the least force of the unloading, which ripples as the edge steps
-    /// from cell to cell, is too strong by about +0.4 % with 4 cells,
-    /// +0.07 % with 8 and +0.005 % with 16 at any resolution (Johnson's
-    /// sinusoid, `BENCHMARKS.md`, "The cohesive zone grown with the
-    /// resolution"); on curved edges the ripple averages out to less
-    /// (+0.06 to +0.09 % on a sphere with 4 cells). The zone's length
+    /// from cell to cell, is too strong by +0.26 to +0.49 % with 4 cells,
+    /// +0.02 to +0.11 % with 8 and under +0.01 % with 16 at 512 to 4096
+    /// cells per wavelength (Johnson's sinusoid, `BENCHMARKS.md`, "The
+    /// cohesive zone grown with the resolution"); on curved edges the
+    /// ripple averages out to less (the sphere's +0.045 % at 256 cells
+    /// across with 4 cells). The zone's length
     /// against the contact costs `-c (k / N)^2` (`c` about 44 % on the
     /// sphere), so a zone growing like `sqrt(N)` lets both fall: about
     /// first order in `1/N` (the JKR sphere: -0.131, -0.064, -0.0135,

@@ -42,12 +42,11 @@ impl ContactSolver {
     /// yet the pull-off: a straight edge along the grid with the zone of
     /// four cells stopped a third short of Johnson's sinusoid's pull-off
     /// at 4096 cells per wavelength when the walk ended at the first rise);
-    /// the least force
-    /// of the steps on either side of the least one is then bracketed by golden sections to a
-    /// sixteenth of a step, each equilibrium reached from the nearest one
-    /// above it, and solved at the vertex of the parabola through the
-    /// least three (exact to third order in the bracket where the force is
-    /// smooth; about nine more solves).
+    /// the least force between the steps on either side of the least one
+    /// is then bracketed by golden sections to a sixteenth of a step, each
+    /// equilibrium reached from the nearest one above it, and solved at the
+    /// vertex of the parabola through the least three (exact to third order
+    /// in the bracket where the force is smooth; about nine more solves).
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for a step that is not positive and
@@ -125,9 +124,9 @@ impl ContactSolver {
             }
             // The force rising for RISES steps in a row: a contact edge
             // trapped by the lattice holds a little longer and then steps,
-            // so that the force ripples about its trend (by up to 5 % of a
-            // step's force on a straight edge along the grid with a zone of
-            // four cells) and one rise is not yet the pull-off.
+            // so that the force ripples about its trend (a straight edge
+            // along the grid with a zone of four cells held one step 9 %
+            // beyond it) and one rise is not yet the pull-off.
             if rises >= RISES || contact == 0 {
                 break;
             }
