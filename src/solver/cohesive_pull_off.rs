@@ -29,6 +29,10 @@ pub struct CohesivePullOff {
 /// neighbourhood.
 const RISES: usize = 3;
 
+/// Halvings of an unloading step whose equilibrium the fixed point did not
+/// reach from the step before: 2, 4, 8, then 16 substeps.
+const SUBSTEP_LEVELS: u32 = 4;
+
 /// Unloading steps before [`ContactSolver::cohesive_pull_off`] gives up.
 const MAX_UNLOADING_STEPS: usize = 10_000;
 
@@ -47,6 +51,8 @@ impl ContactSolver {
     /// equilibrium reached from the nearest one above it, and solved at the
     /// vertex of the parabola through the least three (exact to third order
     /// in the bracket where the force is smooth; about nine more solves).
+    /// A step whose equilibrium the fixed point does not reach is taken
+    /// again in 2, 4, 8 or 16 substeps.
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for a step that is not positive and
@@ -54,7 +60,8 @@ impl ContactSolver {
     /// force rises at the first step); [`Error::Unsupported`] if the contact at the pull-off
     /// is pinned at the rim of the indenter's face (a cell in contact next
     /// to one it cannot reach: a flat punch), which the zone does not
-    /// represent; [`Error::NoConvergence`] after 10000 steps; as
+    /// represent; [`Error::NoConvergence`] after 10000 steps or where 16
+    /// substeps do not reach a step's equilibrium; as
     /// [`solve_depth_cohesive`](Self::solve_depth_cohesive) otherwise.
     pub fn cohesive_pull_off<I: Indenter + ?Sized>(
         &mut self,
@@ -102,7 +109,14 @@ impl ContactSolver {
         let (mut least, mut rises) = (force, 0usize);
         for k in 1..=MAX_UNLOADING_STEPS {
             let d = depth - k as f64 * step;
-            let (force, contact, end) = solve(self, d, Some(&walk[walk.len() - 1].2))?;
+            let from = &walk[walk.len() - 1].2;
+            let (force, contact, end) = match solve(self, d, Some(from)) {
+                Err(failed @ Error::NoConvergence { .. }) => {
+                    let from = from.clone();
+                    substeps(self, &mut solve, (d + step, d), from, failed)?
+                }
+                other => other?,
+            };
             if force > least && k == 1 {
                 return Err(Error::InvalidParameter {
                     name: "start depth of the unloading (m)",
@@ -199,4 +213,40 @@ pub(crate) fn pinned_at_rim() -> Error {
                  (ContactSolver::peel_punch, peel_punch_from; Python: \
                  layered_contact.peel_punch), a round one also by the energy balance",
     }
+}
+
+/// The equilibrium at `to` (m) reached from `from`, the state at `above`,
+/// in 2, 4, 8 or 16 equal substeps (the first division that converges):
+/// near a fold of a force curve that ripples as a trapped edge steps, the
+/// fixed point can creep for thousands of rounds from a whole step away
+/// and converge from half of it (Johnson's sinusoid along the grid at
+/// 8192 cells per wavelength, `BENCHMARKS.md`, "The cohesive zone grown
+/// with the resolution"). Returns the force, the contact cells and the
+/// state; the last division's [`Error::NoConvergence`] (`failed`, the
+/// whole step's, if none was tried) if none converges.
+fn substeps<F>(
+    solver: &mut ContactSolver,
+    solve: &mut F,
+    (above, to): (f64, f64),
+    from: WarmStart,
+    failed: Error,
+) -> Result<(f64, usize, WarmStart)>
+where
+    F: FnMut(&mut ContactSolver, f64, Option<&WarmStart>) -> Result<(f64, usize, WarmStart)>,
+{
+    let mut last = failed;
+    for level in 1..=SUBSTEP_LEVELS {
+        let parts = 1usize << level;
+        let mut reached = Ok((0.0, 0, from.clone()));
+        for m in 1..=parts {
+            let depth = above + (to - above) * m as f64 / parts as f64;
+            let Ok((_, _, state)) = &reached else { break };
+            reached = solve(solver, depth, Some(state));
+        }
+        match reached {
+            Err(e @ Error::NoConvergence { .. }) => last = e,
+            other => return other,
+        }
+    }
+    Err(last)
 }
