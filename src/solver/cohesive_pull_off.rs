@@ -112,7 +112,6 @@ impl ContactSolver {
             let from = &walk[walk.len() - 1].2;
             let (force, contact, end) = match solve(self, d, Some(from)) {
                 Err(failed @ Error::NoConvergence { .. }) => {
-                    let from = from.clone();
                     substeps(self, &mut solve, (d + step, d), from, failed)?
                 }
                 other => other?,
@@ -129,7 +128,8 @@ impl ContactSolver {
                 walk.remove(0);
             }
             if force < least {
-                (least, rises) = (force, 0);
+                // A new least: the steps around an earlier one no longer apply.
+                (least, rises, around_least) = (force, 0, None);
             } else {
                 rises += 1;
                 if rises == 1 {
@@ -228,7 +228,7 @@ fn substeps<F>(
     solver: &mut ContactSolver,
     solve: &mut F,
     (above, to): (f64, f64),
-    from: WarmStart,
+    from: &WarmStart,
     failed: Error,
 ) -> Result<(f64, usize, WarmStart)>
 where
@@ -237,11 +237,11 @@ where
     let mut last = failed;
     for level in 1..=SUBSTEP_LEVELS {
         let parts = 1usize << level;
-        let mut reached = Ok((0.0, 0, from.clone()));
-        for m in 1..=parts {
-            let depth = above + (to - above) * m as f64 / parts as f64;
+        let depth = |m: usize| above + (to - above) * m as f64 / parts as f64;
+        let mut reached = solve(solver, depth(1), Some(from));
+        for m in 2..=parts {
             let Ok((_, _, state)) = &reached else { break };
-            reached = solve(solver, depth, Some(state));
+            reached = solve(solver, depth(m), Some(state));
         }
         match reached {
             Err(e @ Error::NoConvergence { .. }) => last = e,
