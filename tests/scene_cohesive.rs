@@ -290,3 +290,30 @@ fn a_force_cycle_through_the_cohesive_zone_follows_jkr_and_jumps_off_at_the_pull
     println!("force {error}");
     assert!(error.abs() < 0.025, "{error}");
 }
+
+/// A scene's unloading step that the cohesive zone's fixed point cannot
+/// reach (the cycle loaded and unloaded in whole steps of its peak depth,
+/// the inner solves held to ten iterations: the first unloading step, from
+/// the peak back to the depth of first touch, returned `NoConvergence`)
+/// is taken in substeps: the same pull-off as the unrestricted scene's.
+#[test]
+fn a_scene_step_out_of_reach_is_taken_in_substeps() {
+    let pull_off = |max_iterations: usize| {
+        let mut scene = tilted_cycle(24);
+        if let Protocol::Cycle { steps, .. } = &mut scene.protocol {
+            *steps = 1;
+        }
+        scene.solver.adhesion_method = AdhesionMethod::CohesiveZone;
+        scene.solver.max_iterations = max_iterations;
+        let curve = scene.run(&mut |_| {}).unwrap();
+        let iterations: usize = curve.steps.iter().map(|s| s.iterations).sum();
+        (curve.pull_off().unwrap().force, iterations)
+    };
+    let free = pull_off(1000);
+    let held = pull_off(10);
+    // The substeps' solves are counted (measured: 671 iterations against
+    // 641); equal counts would mean no step needed them.
+    assert!(held.1 > free.1, "{held:?} {free:?}");
+    // Measured 8e-16 apart: the same equilibria, to the search's rounding.
+    assert!((held.0 / free.0 - 1.0).abs() < 1e-9, "{held:?} {free:?}");
+}

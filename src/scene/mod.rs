@@ -252,11 +252,15 @@ pub enum AdhesionMethod {
     /// only.
     MeshCriterion,
     /// A cohesive zone resolved on the grid
-    /// ([`ContactSolver::solve_depth_cohesive`] with the default
-    /// [`CohesiveZone`](crate::solver::CohesiveZone)): the JKR limit for any
-    /// contact shape, orientation and number of patches, on isolated and
-    /// periodic grids, converging at second order (a sphere's pull-off
-    /// -0.13 % at 64 cells across, [`doc::accuracy`](crate::doc::accuracy)).
+    /// ([`ContactSolver::solve_depth_cohesive`] with the law of
+    /// [`Scene::cohesive_zone`]: four cells up to 64 across the contact,
+    /// growing like the square root of `cells_across` beyond): the JKR
+    /// limit for any contact shape, orientation and number of patches, on
+    /// isolated and periodic grids (a sphere's pull-off -0.13 % at 64 cells
+    /// across, [`doc::accuracy`](crate::doc::accuracy); a tilted
+    /// paraboloid's cycle -0.099, -0.041, +0.0052 % at 64, 128, 256).
+    /// A step whose equilibrium the zone's fixed point does not reach is
+    /// taken again in 2, 4, 8 or 16 substeps.
     /// The pull-off of a cycle is searched between the two steps around the
     /// least force (golden sections to a sixteenth of a step, then the
     /// parabola's vertex: about nine more solves). Under force control

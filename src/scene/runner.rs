@@ -13,7 +13,7 @@ mod cohesive;
 mod cohesive_force;
 mod peeled;
 
-use super::{AdhesionMethod, Curve, IndenterSpec, Phase, Protocol, Scene, Step, MAX_PULL_DEPTHS};
+use super::{Curve, IndenterSpec, Phase, Protocol, Scene, Step, MAX_PULL_DEPTHS};
 
 pub(super) enum Outcome {
     Done(Box<Curve>),
@@ -46,12 +46,7 @@ impl<'a> Runner<'a> {
         indenter: &'a (dyn Indenter + Send + Sync),
         observer: &'a mut dyn Observer,
     ) -> Result<Self> {
-        let cohesive = match (scene.adhesion.works(), scene.resolved_adhesion_method()) {
-            (Some((loading, unloading)), AdhesionMethod::CohesiveZone) => {
-                Some(CohesiveZone::new(loading, unloading)?)
-            }
-            _ => None,
-        };
+        let cohesive = scene.cohesive_zone()?;
         Ok(Runner {
             scene,
             solver,
@@ -156,8 +151,9 @@ impl<'a> Runner<'a> {
 
     /// [`Runner::solve`] at the most loaded point: keeps the requested fields
     /// of this very solve as the curve's peak.
-    fn solve_peak(&mut self, control: Control) -> Result<Solution> {
-        let (solution, kept) = self.with_kept_fields(|runner| runner.solve(control))?;
+    fn solve_peak(&mut self, control: Control, above: Option<f64>) -> Result<Solution> {
+        let (solution, kept) =
+            self.with_kept_fields(|runner| runner.solve_after(above, control))?;
         if kept {
             self.peak = Some(solution.clone());
         }
@@ -184,7 +180,7 @@ impl<'a> Runner<'a> {
     pub(super) fn run(mut self, progress: &mut dyn FnMut(&Step)) -> Result<Outcome> {
         match self.scene.protocol {
             Protocol::Depth { depth } => {
-                let s = self.solve_peak(Control::Depth(depth))?;
+                let s = self.solve_peak(Control::Depth(depth), None)?;
                 if !self.record(s, Phase::Loading, progress) {
                     return Ok(Outcome::ReachedEdge);
                 }
@@ -200,7 +196,7 @@ impl<'a> Runner<'a> {
                 }
             }
             Protocol::Force { force } => {
-                let s = self.solve_peak(Control::Force(force))?;
+                let s = self.solve_peak(Control::Force(force), None)?;
                 if !self.record(s, Phase::Loading, progress) {
                     return Ok(Outcome::ReachedEdge);
                 }
@@ -209,10 +205,12 @@ impl<'a> Runner<'a> {
                 let increment = max_depth / steps as f64;
                 for k in 0..=steps {
                     let control = Control::Depth(k as f64 * increment);
+                    // The step before's depth, for the cohesive zone's substeps.
+                    let above = k.checked_sub(1).map(|j| j as f64 * increment);
                     let s = if k == steps {
-                        self.solve_peak(control)?
+                        self.solve_peak(control, above)?
                     } else {
-                        self.solve(control)?
+                        self.solve_after(above, control)?
                     };
                     if !self.record(s, Phase::Loading, progress) {
                         return Ok(Outcome::ReachedEdge);
@@ -248,7 +246,7 @@ impl<'a> Runner<'a> {
                     };
                     let control = Control::Force(k as f64 * increment);
                     let s = if n == steps {
-                        self.solve_peak(control)?
+                        self.solve_peak(control, None)?
                     } else {
                         self.solve(control)?
                     };

@@ -5,6 +5,8 @@ use crate::error::{Error, Result};
 use crate::grid::fft_friendly;
 use crate::grid::Grid;
 
+use crate::solver::CohesiveZone;
+
 use super::{Adhesion, AdhesionMethod, IndenterSpec, Protocol, Scene};
 
 /// Grid sizing consults the exact solution only up to this `a/h` (a few
@@ -118,6 +120,51 @@ impl Scene {
             }
         };
         Some((peak.contact_radius, pull_off))
+    }
+
+    /// The cohesive zone this scene's adhesion is solved with, `None`
+    /// where the scene takes another method (or has no adhesion). Its zone
+    /// grows with the resolution like the contact it resolves:
+    /// [`CohesiveZone::with_resolution`] of
+    /// [`cells_across`](super::Resolution::cells_across) (four cells up to
+    /// 64 across, eight at 256), so that a scene's pull-off converges as
+    /// `cells_across` grows instead of settling on the lattice's bias of a
+    /// fixed zone (`BENCHMARKS.md`, "The cohesive zone grown with the
+    /// resolution"). A height map or rough surface, solved on its own grid
+    /// and not sized from a contact, keeps
+    /// [`COHESIVE_ZONE_CELLS`](crate::solver::COHESIVE_ZONE_CELLS).
+    ///
+    /// ```
+    /// use layered_contact::scene::{Adhesion, AdhesionMethod, IndenterSpec, Scene};
+    ///
+    /// let mut scene = Scene {
+    ///     indenter: IndenterSpec::Sphere { radius: 1e-2 },
+    ///     adhesion: Adhesion::Constant { work_of_adhesion: 0.05 },
+    ///     ..Scene::default()
+    /// };
+    /// scene.solver.adhesion_method = AdhesionMethod::CohesiveZone;
+    /// scene.resolution.cells_across = 256;
+    /// assert_eq!(scene.cohesive_zone()?.unwrap().zone_cells(), 8.0);
+    /// scene.solver.adhesion_method = AdhesionMethod::EnergyBalance;
+    /// assert!(scene.cohesive_zone()?.is_none());
+    /// Ok::<(), layered_contact::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for a work of adhesion the law refuses
+    /// ([`CohesiveZone::new`]).
+    pub fn cohesive_zone(&self) -> Result<Option<CohesiveZone>> {
+        let (Some((loading, unloading)), AdhesionMethod::CohesiveZone) =
+            (self.adhesion.works(), self.resolved_adhesion_method())
+        else {
+            return Ok(None);
+        };
+        let zone = CohesiveZone::new(loading, unloading)?;
+        if self.indenter.is_map() {
+            return Ok(Some(zone));
+        }
+        zone.with_resolution(self.resolution.cells_across as f64)
+            .map(Some)
     }
 
     /// The grid the scene is solved on (before any growth).

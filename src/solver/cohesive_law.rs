@@ -135,8 +135,9 @@ impl CohesiveZone {
     /// lattice well beyond the ripple: 8 cells on the sinusoid at about
     /// 1000 cells across its contact (this gives 15.5) reached a pinned
     /// state 4.6 % beyond the pull-off.
-    /// `examples/cohesive_convergence.rs` sizes the zone so with `auto`;
-    /// scenes keep [`COHESIVE_ZONE_CELLS`].
+    /// `examples/cohesive_convergence.rs` sizes the zone so with `auto`,
+    /// and scenes with their `cells_across`
+    /// ([`Scene::cohesive_zone`](crate::scene::Scene::cohesive_zone)).
     ///
     /// ```
     /// use layered_contact::solver::CohesiveZone;

@@ -92,9 +92,9 @@ impl ContactSolver {
             let (s, end) = solver.solve_depth_cohesive(indenter, d, zone, w, observer)?;
             tally.solves += 1;
             tally.iterations += s.iterations;
-            Ok::<_, Error>((s.force, s.contact_cells, end))
+            Ok::<_, Error>(((s.force, s.contact_cells), end))
         };
-        let (force, contact, end) = solve(self, depth, warm)?;
+        let ((force, contact), end) = solve(self, depth, warm)?;
         if contact == 0 {
             return Err(Error::InvalidParameter {
                 name: "start depth of the unloading (m)",
@@ -110,7 +110,7 @@ impl ContactSolver {
         for k in 1..=MAX_UNLOADING_STEPS {
             let d = depth - k as f64 * step;
             let from = &walk[walk.len() - 1].2;
-            let (force, contact, end) = match solve(self, d, Some(from)) {
+            let ((force, contact), end) = match solve(self, d, Some(from)) {
                 Err(failed @ Error::NoConvergence { .. }) => {
                     substeps(self, &mut solve, (d + step, d), from, failed)?
                 }
@@ -163,7 +163,7 @@ impl ContactSolver {
             detail: "the walk ended with fewer than three steps".into(),
         })?;
         let probes = least_force(bracket, STEP_FRACTION * step, |d, from| {
-            let (force, _, kept) = solve(self, d, Some(&from.kept))?;
+            let ((force, _), kept) = solve(self, d, Some(&from.kept))?;
             Ok::<_, Error>(Probe {
                 depth: d,
                 force,
@@ -221,18 +221,18 @@ pub(crate) fn pinned_at_rim() -> Error {
 /// fixed point can creep for thousands of rounds from a whole step away
 /// and converge from half of it (Johnson's sinusoid along the grid at
 /// 8192 cells per wavelength, `BENCHMARKS.md`, "The cohesive zone grown
-/// with the resolution"). Returns the force, the contact cells and the
-/// state; the last division's [`Error::NoConvergence`] (`failed`, the
+/// with the resolution"). Returns what `solve` returns at `to` (its
+/// result and the state); the last division's [`Error::NoConvergence`] (`failed`, the
 /// whole step's, if none was tried) if none converges.
-fn substeps<F>(
+pub(crate) fn substeps<T, F>(
     solver: &mut ContactSolver,
     solve: &mut F,
     (above, to): (f64, f64),
     from: &WarmStart,
     failed: Error,
-) -> Result<(f64, usize, WarmStart)>
+) -> Result<(T, WarmStart)>
 where
-    F: FnMut(&mut ContactSolver, f64, Option<&WarmStart>) -> Result<(f64, usize, WarmStart)>,
+    F: FnMut(&mut ContactSolver, f64, Option<&WarmStart>) -> Result<(T, WarmStart)>,
 {
     let mut last = failed;
     for level in 1..=SUBSTEP_LEVELS {
@@ -240,7 +240,7 @@ where
         let depth = |m: usize| above + (to - above) * m as f64 / parts as f64;
         let mut reached = solve(solver, depth(1), Some(from));
         for m in 2..=parts {
-            let Ok((_, _, state)) = &reached else { break };
+            let Ok((_, state)) = &reached else { break };
             reached = solve(solver, depth(m), Some(state));
         }
         match reached {

@@ -88,6 +88,7 @@ pub use cohesive_law::{
     CohesiveZone, COHESIVE_ZONE_CELLS, CURVATURE_CORRECTION, ZONE_LAYER_FRACTION,
 };
 pub(crate) use cohesive_pull_off::pinned_at_rim;
+pub(crate) use cohesive_pull_off::substeps;
 pub use cohesive_pull_off::CohesivePullOff;
 pub use griffith::{
     AdhesiveBranches, BranchPoint, EdgeFit, EdgePoint, EdgeRelease, PeelPoint, PeelingPath, Reach,

@@ -3,9 +3,9 @@
 //! the last two where the force turns (golden sections to a sixteenth of
 //! a step, then the parabola's vertex: `solver::least_force`).
 
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::solver::least_force::{least_force, Probe, STEP_FRACTION};
-use crate::solver::{Solution, WarmStart};
+use crate::solver::{substeps, ContactSolver, Solution, WarmStart};
 
 use super::super::{Phase, Step};
 use super::{next_increment, still_attached, unloading_steps, Control, Runner};
@@ -15,6 +15,43 @@ use super::{next_increment, still_attached, unloading_steps, Control, Runner};
 type Kept = (Option<WarmStart>, Option<Solution>);
 
 impl Runner<'_> {
+    /// One solve (as [`Runner::solve`]) from the scene's last state, which
+    /// is the equilibrium at depth `above` (m) when given: where the
+    /// cohesive zone's fixed point does not reach `control`'s depth from
+    /// it, the step is taken again in 2, 4, 8 or 16 substeps (as
+    /// [`ContactSolver::cohesive_pull_off`] does); the solution then counts
+    /// the iterations of every substep.
+    pub(super) fn solve_after(&mut self, above: Option<f64>, control: Control) -> Result<Solution> {
+        let failed = match self.solve(control) {
+            Err(failed @ Error::NoConvergence { .. }) => failed,
+            other => return other,
+        };
+        let (Some(above), Control::Depth(depth), Some(zone), Some(from)) =
+            (above, control, self.cohesive, self.warm.take())
+        else {
+            return Err(failed);
+        };
+        let (indenter, observer) = (self.indenter, &mut *self.observer);
+        let mut iterations = 0;
+        let mut solve = |solver: &mut ContactSolver, d: f64, w: Option<&WarmStart>| {
+            let (solution, end) = solver.solve_depth_cohesive(indenter, d, &zone, w, observer)?;
+            iterations += solution.iterations;
+            Ok((solution, end))
+        };
+        let reached = substeps(self.solver, &mut solve, (above, depth), &from, failed);
+        match reached {
+            Ok((mut solution, state)) => {
+                solution.iterations = iterations;
+                self.warm = Some(state);
+                Ok(solution)
+            }
+            Err(e) => {
+                self.warm = Some(from);
+                Err(e)
+            }
+        }
+    }
+
     /// Retracts from `max_depth` by `increment` (doubled at each step
     /// beyond `-max_depth`, as [`Runner::unload`]) until the contact is
     /// lost. Each step is recorded one step late: where the force rises
@@ -52,7 +89,7 @@ impl Runner<'_> {
             };
             increment = next;
             depth -= increment;
-            let solution = self.solve(Control::Depth(depth))?;
+            let solution = self.solve_after(Some(depth + increment), Control::Depth(depth))?;
             let lost = solution.contact_cells == 0;
             let current = Probe {
                 depth,
@@ -118,7 +155,7 @@ impl Runner<'_> {
         let width = STEP_FRACTION * 0.5 * (bracket[0].depth - bracket[2].depth);
         let probes = least_force(bracket, width, |depth, from: &Probe<Kept>| {
             self.warm = from.kept.0.clone();
-            let solution = self.solve(Control::Depth(depth))?;
+            let solution = self.solve_after(Some(from.depth), Control::Depth(depth))?;
             Ok::<_, crate::Error>(Probe {
                 depth,
                 force: solution.force,

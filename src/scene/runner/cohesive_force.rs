@@ -268,7 +268,7 @@ impl Runner<'_> {
                 return Ok(Reached::At(nearer(near, far, force)));
             }
             self.warm = near.kept.0.clone();
-            let solution = self.solve(Control::Depth(depth))?;
+            let solution = self.solve_after(Some(near.depth), Control::Depth(depth))?;
             path.iterations += solution.iterations;
             let lost = solution.contact_cells == 0;
             let probe = Probe {
@@ -355,7 +355,7 @@ impl Runner<'_> {
         let width = STEP_FRACTION * 0.5 * (bracket[0].depth - bracket[2].depth);
         let mut probes = least_force(bracket, width, |depth, from: &Probe<Kept>| {
             self.warm = from.kept.0.clone();
-            let solution = self.solve(Control::Depth(depth))?;
+            let solution = self.solve_after(Some(from.depth), Control::Depth(depth))?;
             path.iterations += solution.iterations;
             Ok::<_, Error>(Probe {
                 depth,
