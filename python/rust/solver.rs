@@ -251,9 +251,12 @@ impl ContactSolver {
     /// cohesive zone resolved on the grid (any contact shape, isolated or
     /// periodic; the crate's `doc::adhesion`): works of adhesion
     /// `advancing` and `receding` (J/m^2, `receding` defaults to
-    /// `advancing`), the zone `zone_cells` cells wide. `warm_start` carries
-    /// the history (which cells are bonded).
-    #[pyo3(signature = (indenter, depth, advancing, receding=None, zone_cells=lc::solver::COHESIVE_ZONE_CELLS, warm_start=false))]
+    /// `advancing`), the zone `zone_cells` cells wide (default 4), or
+    /// grown with the resolution for `cells_across` cells across the
+    /// pull-off contact (`max(4, sqrt(cells_across) / 2)` cells: the crate's
+    /// `CohesiveZone::with_resolution`, for convergence studies; not both).
+    /// `warm_start` carries the history (which cells are bonded).
+    #[pyo3(signature = (indenter, depth, advancing, receding=None, zone_cells=None, warm_start=false, cells_across=None))]
     #[allow(clippy::too_many_arguments)]
     fn solve_depth_cohesive(
         &mut self,
@@ -262,20 +265,24 @@ impl ContactSolver {
         depth: f64,
         advancing: f64,
         receding: Option<f64>,
-        zone_cells: f64,
+        zone_cells: Option<f64>,
         warm_start: bool,
+        cells_across: Option<f64>,
     ) -> PyResult<Solution> {
-        let zone = cohesive_zone(advancing, receding, zone_cells)?;
+        let zone = cohesive_zone(advancing, receding, zone_cells, cells_across)?;
         self.solve(py, indenter, warm_start, move |solver, shape, warm| {
             solver.solve_depth_cohesive(shape, depth, &zone, warm, &mut ())
         })
     }
 
-    /// The pull-off under displacement control through the cohesive zone:
-    /// from the equilibrium at `depth` (m, reached cold), withdrawn in
-    /// steps of `step` (m) until the force rises again, the minimum refined
-    /// on steps eight times finer. Returns `(force, depth)` (N, m).
-    #[pyo3(signature = (indenter, depth, step, advancing, receding=None, zone_cells=lc::solver::COHESIVE_ZONE_CELLS))]
+    /// The pull-off under displacement control through the cohesive zone
+    /// (the law as in `solve_depth_cohesive`): from the equilibrium at
+    /// `depth` (m, reached cold), withdrawn in steps of `step` (m) until
+    /// the force has stayed above its least value for three steps, the
+    /// least force then searched to a sixteenth of a step (the crate's
+    /// `ContactSolver::cohesive_pull_off`; a step out of the fixed point's
+    /// reach is taken in substeps). Returns `(force, depth)` (N, m).
+    #[pyo3(signature = (indenter, depth, step, advancing, receding=None, zone_cells=None, cells_across=None))]
     #[allow(clippy::too_many_arguments)]
     fn cohesive_pull_off(
         &mut self,
@@ -285,9 +292,10 @@ impl ContactSolver {
         step: f64,
         advancing: f64,
         receding: Option<f64>,
-        zone_cells: f64,
+        zone_cells: Option<f64>,
+        cells_across: Option<f64>,
     ) -> PyResult<(f64, f64)> {
-        let zone = cohesive_zone(advancing, receding, zone_cells)?;
+        let zone = cohesive_zone(advancing, receding, zone_cells, cells_across)?;
         let shape = Shared(indenter.inner.clone());
         let inner = &mut self.inner;
         let pull_off = py
@@ -304,15 +312,25 @@ impl ContactSolver {
     }
 }
 
-/// The cohesive law of the given works of adhesion and zone width.
+/// The cohesive law of the given works of adhesion, its zone `zone_cells`
+/// wide (default four) or grown for `cells_across` cells across the
+/// pull-off contact.
 fn cohesive_zone(
     advancing: f64,
     receding: Option<f64>,
-    zone_cells: f64,
+    zone_cells: Option<f64>,
+    cells_across: Option<f64>,
 ) -> PyResult<lc::solver::CohesiveZone> {
-    lc::solver::CohesiveZone::new(advancing, receding.unwrap_or(advancing))
-        .and_then(|zone| zone.with_zone_cells(zone_cells))
-        .py_err()
+    let zone = lc::solver::CohesiveZone::new(advancing, receding.unwrap_or(advancing));
+    match (zone_cells, cells_across) {
+        (Some(_), Some(_)) => Err(InvalidInputError::new_err(
+            "give zone_cells (the zone's width) or cells_across (the zone grown with the \
+             resolution), not both",
+        )),
+        (Some(cells), None) => zone.and_then(|z| z.with_zone_cells(cells)).py_err(),
+        (None, Some(across)) => zone.and_then(|z| z.with_resolution(across)).py_err(),
+        (None, None) => zone.py_err(),
+    }
 }
 
 type Solved = lc::Result<(lc::solver::Solution, lc::solver::WarmStart)>;

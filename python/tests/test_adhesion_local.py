@@ -168,3 +168,23 @@ def test_peel_punch_disc_at_kendall_and_square_later():
     assert disc["pull_off_force"] < part["pull_off_force"] < 0.0
     with pytest.raises(lc.LayeredContactError):
         lc.peel_punch(solver, lc.Indenter.flat_punch(a), work, bonded=half[:40])
+
+
+def test_cohesive_zone_grown_with_the_resolution():
+    # cells_across sizes the zone as the crate's CohesiveZone::with_resolution:
+    # max(4, sqrt(N) / 2) cells, 8 at 256 across, 4 up to 64.
+    substrate = lc.Substrate.half_space(RUBBER)
+    sphere = lc.Indenter.sphere(1e-2)
+    depth = 1e-6
+
+    def solved(**law):
+        solver = lc.ContactSolver(substrate, 32, 32, 4e-5)
+        return solver.solve_depth_cohesive(sphere, depth, 0.05, **law).force
+
+    assert solved(cells_across=256.0) == solved(zone_cells=8.0)
+    assert solved(cells_across=32.0) == solved()
+    assert solved(zone_cells=8.0) != solved()
+    with pytest.raises(lc.InvalidInputError):
+        solved(zone_cells=8.0, cells_across=256.0)
+    with pytest.raises(lc.InvalidInputError):
+        solved(cells_across=0.5)

@@ -152,8 +152,9 @@ class ContactSolver:
         depth: float,
         advancing: float,
         receding: float | None = None,
-        zone_cells: float = ...,
+        zone_cells: float | None = None,
         warm_start: bool = False,
+        cells_across: float | None = None,
     ) -> Solution: ...
     def cohesive_pull_off(
         self,
@@ -162,7 +163,8 @@ class ContactSolver:
         step: float,
         advancing: float,
         receding: float | None = None,
-        zone_cells: float = ...,
+        zone_cells: float | None = None,
+        cells_across: float | None = None,
     ) -> Tuple[float, float]: ...
     @property
     def grid(self) -> Tuple[int, int, float]: ...
