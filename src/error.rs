@@ -251,6 +251,26 @@ pub fn positive_finite(name: &'static str, value: f64) -> Result<f64> {
     }
 }
 
+/// `value` if it lies in `[lo, hi]` (so not NaN), else
+/// [`Error::InvalidParameter`] naming it, with `expected` stating the
+/// range as a person reads it. Counts pass as `f64` (exact up to 2^53).
+pub(crate) fn within(
+    name: &'static str,
+    value: f64,
+    (lo, hi): (f64, f64),
+    expected: &'static str,
+) -> Result<f64> {
+    if (lo..=hi).contains(&value) {
+        Ok(value)
+    } else {
+        Err(Error::InvalidParameter {
+            name,
+            value,
+            expected,
+        })
+    }
+}
+
 /// `value` if it is non-negative and finite, else
 /// [`Error::InvalidParameter`] naming it.
 ///

@@ -309,13 +309,12 @@ impl ComplianceOperator {
     ) -> Result<Self> {
         check_film(substrate, grid)?;
         let cell_compliance = grid.spacing() / substrate.surface_material().contact_modulus();
-        if !(MIN_CELL_COMPLIANCE..=MAX_CELL_COMPLIANCE).contains(&cell_compliance) {
-            return Err(Error::InvalidParameter {
-                name: "cell compliance Delta / E* (m/Pa)",
-                value: cell_compliance,
-                expected: "within [1e-280, 1e280]: rescale lengths or moduli",
-            });
-        }
+        crate::error::within(
+            "cell compliance Delta / E* (m/Pa)",
+            cell_compliance,
+            (MIN_CELL_COMPLIANCE, MAX_CELL_COMPLIANCE),
+            "within [1e-280, 1e280]: rescale lengths or moduli",
+        )?;
         let size = fft_size(grid, boundary);
         // The big buffers: reserve all at once first, so that a grid too
         // large for this machine is a typed error carrying the estimate

@@ -428,13 +428,12 @@ impl Scene {
                 reason: "use the energy balance or the cohesive zone for adhesive force control",
             });
         }
-        if !(MIN_CELLS_ACROSS..=8192).contains(&self.resolution.cells_across) {
-            return Err(Error::InvalidParameter {
-                name: "cells_across",
-                value: self.resolution.cells_across as f64,
-                expected: "between 8 and 8192 (fewer cells cannot describe a contact)",
-            });
-        }
+        crate::error::within(
+            "cells_across",
+            self.resolution.cells_across as f64,
+            (MIN_CELLS_ACROSS as f64, 8192.0),
+            "between 8 and 8192 (fewer cells cannot describe a contact)",
+        )?;
         let margin = crate::error::non_negative_finite("margin", self.resolution.margin)?;
         if margin > MAX_MARGIN {
             return Err(Error::InvalidParameter {

@@ -457,13 +457,12 @@ impl IndenterSpec {
         else {
             return Ok(None);
         };
-        if !(2..=MAX_ROUGH_CELLS).contains(&cells) {
-            return Err(Error::InvalidParameter {
-                name: "cells",
-                value: cells as f64,
-                expected: "between 2 and 32768 cells along a side",
-            });
-        }
+        crate::error::within(
+            "cells",
+            cells as f64,
+            (2.0, MAX_ROUGH_CELLS as f64),
+            "between 2 and 32768 cells along a side",
+        )?;
         let grid = Grid::new(cells, cells, spacing)?;
         let surface = SelfAffine {
             hurst,

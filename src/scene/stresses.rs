@@ -70,13 +70,12 @@ impl StressOutputs {
     pub fn plane_depths(&self, substrate: &Substrate) -> Result<Vec<f64>> {
         let mut depths = self.depths.clone();
         if let Some(grid) = self.depth_grid {
-            if !(2..=MAX_STRESS_PLANES).contains(&grid.planes) {
-                return Err(Error::InvalidParameter {
-                    name: "outputs.stresses.depth_grid.planes",
-                    value: grid.planes as f64,
-                    expected: "between 2 and 1000",
-                });
-            }
+            crate::error::within(
+                "outputs.stresses.depth_grid.planes",
+                grid.planes as f64,
+                (2.0, MAX_STRESS_PLANES as f64),
+                "between 2 and 1000",
+            )?;
             let step = grid.to / (grid.planes - 1) as f64;
             depths.extend((0..grid.planes).map(|k| k as f64 * step));
         }

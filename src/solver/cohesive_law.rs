@@ -3,10 +3,12 @@
 //! ([`CohesiveZone`]), and the defaults measured for it. The fixed point
 //! that solves with it is in [`cohesive`](super::cohesive).
 
-use crate::error::{Error, Result};
+use crate::error::Result;
 
 #[cfg(doc)]
 use super::ContactSolver;
+#[cfg(doc)]
+use crate::error::Error;
 
 /// The default width of the cohesive zone, in cells.
 ///
@@ -100,13 +102,12 @@ impl CohesiveZone {
     /// # Errors
     /// [`Error::InvalidParameter`] outside `[2, 256]`.
     pub fn with_zone_cells(self, cells: f64) -> Result<Self> {
-        if !(2.0..=256.0).contains(&cells) {
-            return Err(Error::InvalidParameter {
-                name: "cohesive zone width (cells)",
-                value: cells,
-                expected: "in [2, 256]",
-            });
-        }
+        crate::error::within(
+            "cohesive zone width (cells)",
+            cells,
+            (2.0, 256.0),
+            "in [2, 256]",
+        )?;
         Ok(CohesiveZone {
             zone_cells: cells,
             ..self
@@ -152,13 +153,12 @@ impl CohesiveZone {
     /// [`Error::InvalidParameter`] for `cells_across` not in `[1, 2^18]`
     /// (the zone would pass 256 cells).
     pub fn with_resolution(self, cells_across: f64) -> Result<Self> {
-        if !(1.0..=262_144.0).contains(&cells_across) {
-            return Err(Error::InvalidParameter {
-                name: "cells across the pull-off contact",
-                value: cells_across,
-                expected: "in [1, 262144]",
-            });
-        }
+        crate::error::within(
+            "cells across the pull-off contact",
+            cells_across,
+            (1.0, 262_144.0),
+            "in [1, 262144]",
+        )?;
         self.with_zone_cells(COHESIVE_ZONE_CELLS.max(0.5 * cells_across.sqrt()))
     }
 
@@ -179,13 +179,12 @@ impl CohesiveZone {
     /// # Errors
     /// [`Error::InvalidParameter`] outside `[0, 1]`.
     pub fn with_curvature_correction(self, c: f64) -> Result<Self> {
-        if !(0.0..=1.0).contains(&c) {
-            return Err(Error::InvalidParameter {
-                name: "cohesive zone curvature correction",
-                value: c,
-                expected: "in [0, 1]",
-            });
-        }
+        crate::error::within(
+            "cohesive zone curvature correction",
+            c,
+            (0.0, 1.0),
+            "in [0, 1]",
+        )?;
         Ok(CohesiveZone {
             curvature_correction: c,
             ..self

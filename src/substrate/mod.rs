@@ -559,13 +559,12 @@ pub(crate) fn check_stack(layers: &[Layer], base: &Base) -> Result<()> {
         });
     for material in below {
         let ratio = top.material().shear_modulus() / material.shear_modulus();
-        if !(MIN_STACK_SHEAR_RATIO..=MAX_SHEAR_RATIO).contains(&ratio) {
-            return Err(Error::InvalidParameter {
-                name: "shear modulus ratio mu1/mu_k (top layer over a layer or base below)",
-                value: ratio,
-                expected: "within [1e-60, 1e7] (stiffer than 1e60 times the top: a rigid base)",
-            });
-        }
+        crate::error::within(
+            "shear modulus ratio mu1/mu_k (top layer over a layer or base below)",
+            ratio,
+            (MIN_STACK_SHEAR_RATIO, MAX_SHEAR_RATIO),
+            "within [1e-60, 1e7] (stiffer than 1e60 times the top: a rigid base)",
+        )?;
     }
     let depth = layers.iter().map(Layer::thickness).sum::<f64>() / top.thickness();
     if depth.is_nan() || depth > MAX_STACK_DEPTH_RATIO {

@@ -86,13 +86,12 @@ impl ModulusFamily {
                 expected: "0 < lower < upper < inf (Pa)",
             });
         }
-        if !(MODULUS_NODES.0..=MODULUS_NODES.1).contains(&nodes) {
-            return Err(Error::InvalidParameter {
-                name: "nodes of a modulus family",
-                value: nodes as f64,
-                expected: "between 4 and 64",
-            });
-        }
+        crate::error::within(
+            "nodes of a modulus family",
+            nodes as f64,
+            (MODULUS_NODES.0 as f64, MODULUS_NODES.1 as f64),
+            "between 4 and 64",
+        )?;
         let (a, b) = (lo.ln(), hi.ln());
         let last = nodes - 1;
         let x: Vec<f64> = (0..nodes)

@@ -173,13 +173,12 @@ impl ContactSolver {
     ) -> Result<EdgeRelease> {
         self.serial_only("edge release")?;
         check_finite("depth", depth)?;
-        if !(1.0..=MAX_WINDOW).contains(&window) {
-            return Err(Error::InvalidParameter {
-                name: "window",
-                value: window,
-                expected: "between 1 and 64 cells",
-            });
-        }
+        crate::error::within(
+            "window",
+            window,
+            (1.0, MAX_WINDOW),
+            "between 1 and 64 cells",
+        )?;
         let grid = *self.grid();
         let (rows, columns) = (grid.rows(), grid.columns());
         if contact.dim() != (rows, columns) {
