@@ -14,7 +14,7 @@ from the coarse grid (issue 27)? Asked of the same numpy model:
 
 Iterations of PCG to 1e-8 on the converged contact set's linear system.
 
-Usage: python coarse_matrix.py N B [--full]   (numpy, scipy, layered_contact)
+Usage: python coarse_matrix.py N B [--full | --inner]   (numpy, scipy, layered_contact)
 """
 
 import sys
@@ -148,7 +148,54 @@ def full(n, b):
           f"{difference:.1e})")
 
 
+def inner(n, b):
+    """PCG iterations (to 1e-10) of the coarse solve `E c = s` applied on the
+    coarse grid, as a solver would (one coarse convolution per iteration):
+    `E v = f (Kc * (f v)) + (D - f^2 Kc(0)) v` on the blocks with contact,
+    preconditioned by Jacobi or by `F^-1 P Kc^-1 P F^-1` (the coarse grid's
+    masked inverse)."""
+    h = surface(n)
+    p, _ = pressure_space(h, 1e-10)
+    member = p > 0
+    nb = n // b
+    E = coarse_matrices(member, b)["coarse"]
+    i, j = np.nonzero(member)
+    ids = np.unique((i // b) * nb + j // b)
+    count = np.bincount((i // b) * nb + j // b, minlength=nb * nb)[ids]
+    f = count / b**2
+    _, compliance = spectra(n)
+    whole = np.zeros((n, n))
+    whole[:b, :b] = 1.0
+    Kc = operator(compliance)(whole).reshape(nb, b, nb, b).sum(axis=(1, 3))
+    kc_hat = np.fft.rfft2(Kc)
+    inverse = np.zeros_like(kc_hat)
+    inverse[np.abs(kc_hat) > 1e-12 * np.abs(kc_hat).max()] = 1.0 / kc_hat[
+        np.abs(kc_hat) > 1e-12 * np.abs(kc_hat).max()]
+
+    def grid(v):
+        g = np.zeros(nb * nb)
+        g[ids] = v
+        return g.reshape(nb, nb)
+
+    def conv(hat, v):
+        return np.fft.irfft2(np.fft.rfft2(grid(v)) * hat, s=(nb, nb)).ravel()[ids]
+
+    diagonal = np.diag(E) - f * f * Kc[0, 0]
+    apply = lambda v: f * conv(kc_hat, f * v) + diagonal * v  # noqa: E731
+    rng = np.random.default_rng(1)
+    rhs = rng.standard_normal(len(ids))
+    check = np.linalg.norm(apply(rhs) - E @ rhs) / np.linalg.norm(E @ rhs)
+    jacobi = pcg(apply, lambda r: r / np.diag(E), rhs, tol=1e-10)
+    masked = pcg(apply, lambda r: conv(inverse, r / f) / f, rhs, tol=1e-10)
+    print(f"| {n} | {b} | {len(ids)} | {check:.1e} | {jacobi} | {masked} |")
+
+
 if __name__ == "__main__":
+    if "--inner" in sys.argv[3:]:
+        print("| N | B | active blocks | coarse apply against E | Jacobi | masked Kc^-1 |")
+        print("|---|---|---|---|---|---|")
+        inner(int(sys.argv[1]), int(sys.argv[2]))
+        sys.exit()
     if "--full" in sys.argv[3:]:
         full(int(sys.argv[1]), int(sys.argv[2]))
         sys.exit()
