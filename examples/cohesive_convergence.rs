@@ -279,19 +279,11 @@ fn sinusoid(
     (rows, columns): (usize, usize),
 ) -> Result<(f64, usize, usize, f64)> {
     let delta = 1e-5;
-    let (kx, ky) = (wave.0 as f64 / rows as f64, wave.1 as f64 / columns as f64);
-    let wavelength = delta / kx.hypot(ky);
+    let grid = Grid::new(rows, columns, delta)?;
+    let wavelength = HeightMap::wavy_wavelength(&grid, wave)?;
     let amplitude = (2.0 * wavelength * WORK / (PI * PI * rubber.contact_modulus())).sqrt() / 0.3;
     let exact = JkrSinusoid::new(rubber, wavelength, amplitude, WORK)?;
-    let grid = Grid::new(rows, columns, delta)?;
-    let values = (0..grid.len())
-        .map(|c| {
-            let (i, j) = (c / columns, c % columns);
-            let phase = (kx * i as f64 + ky * j as f64).fract();
-            amplitude * (1.0 - (2.0 * PI * phase).cos())
-        })
-        .collect();
-    let map = HeightMap::new(grid, values)?;
+    let map = HeightMap::wavy(grid, wave, amplitude)?;
     let mut solver = half_space(rubber, &grid, Boundary::Periodic)?;
     let (pull_off, half_width) = exact.pull_off()?;
     let zone = if auto {

@@ -28,15 +28,7 @@ fn sinusoid_pull_off(n: usize, wave: (usize, usize), alpha: f64) -> f64 {
     let exact = JkrSinusoid::new(&rubber(), wavelength, amplitude, WORK).unwrap();
     assert!((exact.adhesion_parameter() / alpha - 1.0).abs() < 1e-12);
     let grid = Grid::square_of_side(n, side).unwrap();
-    // Heights from the cell indices, so that a crest's cells are equal.
-    let values = (0..grid.len())
-        .map(|c| {
-            let (i, j) = (c / n, c % n);
-            let phase = ((wave.0 * i + wave.1 * j) % n) as f64 / n as f64;
-            amplitude * (1.0 - (2.0 * PI * phase).cos())
-        })
-        .collect();
-    let map = HeightMap::new(grid, values).unwrap();
+    let map = HeightMap::wavy(grid, wave, amplitude).unwrap();
     let mut solver = rubber_solver(&grid, Boundary::Periodic);
     // Loaded to strips 0.38 of the period wide (psi = 0.6).
     let area = side * side;

@@ -208,20 +208,12 @@ fn sinusoid_pull_off(cells: usize, wave: (usize, usize), zone: f64) -> f64 {
 /// the columns.
 fn sinusoid_pull_off_on((rows, columns): (usize, usize), wave: (usize, usize), zone: f64) -> f64 {
     let delta = 1e-5;
-    let (kx, ky) = (wave.0 as f64 / rows as f64, wave.1 as f64 / columns as f64);
-    let wavelength = delta / kx.hypot(ky);
+    let grid = Grid::new(rows, columns, delta).unwrap();
+    let wavelength = HeightMap::wavy_wavelength(&grid, wave).unwrap();
     let estar = rubber().contact_modulus();
     let amplitude = (2.0 * wavelength * WORK / (PI * PI * estar)).sqrt() / 0.3;
     let exact = JkrSinusoid::new(&rubber(), wavelength, amplitude, WORK).unwrap();
-    let grid = Grid::new(rows, columns, delta).unwrap();
-    let values = (0..grid.len())
-        .map(|c| {
-            let (i, j) = (c / columns, c % columns);
-            let phase = (kx * i as f64 + ky * j as f64).fract();
-            amplitude * (1.0 - (2.0 * PI * phase).cos())
-        })
-        .collect();
-    let map = HeightMap::new(grid, values).unwrap();
+    let map = HeightMap::wavy(grid, wave, amplitude).unwrap();
     let mut solver = ContactSolver::new(
         &Substrate::half_space(rubber()),
         &grid,

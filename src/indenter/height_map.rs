@@ -10,6 +10,7 @@ use crate::grid::Grid;
 use super::Indenter;
 
 mod refine;
+mod wavy;
 
 /// An indenter given by its heights at the cell centres of a grid, centred on
 /// the axis: the value of cell `(i, j)` is the height at
