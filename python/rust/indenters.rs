@@ -243,6 +243,28 @@ impl Indenter {
         Ok(Indenter::new(shape, Recipe::Cone(half_angle, base_radius)))
     }
 
+    /// Johnson's wavy surface on a periodic `rows x columns` grid of cells
+    /// `spacing` (m) wide: `amplitude (1 - cos(2 pi phase))`, `phase = w0 i /
+    /// rows + w1 j / columns` exactly, `waves = (w0, w1)` whole waves along
+    /// the rows and columns (crests along the grid for `(w, 0)`, at 45
+    /// degrees on a square grid for `(w, w)`); its wavelength is `spacing /
+    /// hypot(w0 / rows, w1 / columns)` (the crate's `HeightMap::wavy`).
+    #[staticmethod]
+    fn wavy(
+        rows: usize,
+        columns: usize,
+        spacing: f64,
+        waves: (usize, usize),
+        amplitude: f64,
+    ) -> PyResult<Self> {
+        let grid = lc::Grid::new(rows, columns, spacing).py_err()?;
+        let map = Arc::new(lc::indenter::HeightMap::wavy(grid, waves, amplitude).py_err()?);
+        Ok(Indenter {
+            inner: map.clone(),
+            recipe: Recipe::HeightMap(map),
+        })
+    }
+
     /// Any shape as a 2D array of heights (m, `rows x columns`, `+inf` where
     /// it cannot touch) on square cells of side `spacing` (m), centred on
     /// the axis: `heights[i, j]` is the height at

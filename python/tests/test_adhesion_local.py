@@ -92,10 +92,7 @@ def test_cohesive_zone_sinusoid_along_the_grid_and_at_45_degrees():
         side = n * spacing
         wavelength = side / math.hypot(*wave)
         amplitude = math.sqrt(2 * wavelength * work / (math.pi**2 * ESTAR)) / 0.3
-        i, j = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
-        phase = ((wave[0] * i + wave[1] * j) % n) / n
-        heights = amplitude * (1 - np.cos(2 * math.pi * phase))
-        surface = lc.Indenter.height_map(heights, spacing)
+        surface = lc.Indenter.wavy(n, n, spacing, wave, amplitude)
         solver = lc.ContactSolver(lc.Substrate.half_space(RUBBER), n, n, spacing, periodic=True)
         force, _ = solver.cohesive_pull_off(surface, 0.6 * amplitude, amplitude / 40, work)
         exact, _ = lc.analytic.jkr_sinusoid_pull_off(RUBBER, wavelength, amplitude, work)
@@ -188,3 +185,20 @@ def test_cohesive_zone_grown_with_the_resolution():
         solved(zone_cells=8.0, cells_across=256.0)
     with pytest.raises(lc.InvalidInputError):
         solved(cells_across=0.5)
+
+
+def test_wavy_surface_heights():
+    # Indenter.wavy: amplitude (1 - cos(2 pi phase)), the phase an exact
+    # fraction of the period, as numpy's from the cell indices.
+    n, spacing, amplitude = 12, 1e-5, 2e-6
+    surface = lc.Indenter.wavy(n, n, spacing, (1, 2), amplitude)
+    i, j = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
+    phase = ((i + 2 * j) % n) / n
+    centres = (np.arange(n) + 0.5 - n / 2) * spacing
+    x, y = np.meshgrid(centres, centres, indexing="ij")
+    expected = amplitude * (1 - np.cos(2 * math.pi * phase))
+    assert np.abs(surface.height(x, y) - expected).max() <= 1e-21
+    with pytest.raises(lc.InvalidInputError):
+        lc.Indenter.wavy(n, n, spacing, (0, 0), amplitude)
+    with pytest.raises(lc.InvalidInputError):
+        lc.Indenter.wavy(n, n, spacing, (1, 0), -1.0)

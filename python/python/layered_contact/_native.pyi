@@ -94,6 +94,10 @@ class Indenter:
     @staticmethod
     def cone(half_angle: float, base_radius: float) -> Indenter: ...
     @staticmethod
+    def wavy(
+        rows: int, columns: int, spacing: float, waves: Tuple[int, int], amplitude: float
+    ) -> Indenter: ...
+    @staticmethod
     def height_map(heights: npt.NDArray[np.float64], spacing: float) -> Indenter: ...
     @staticmethod
     def rough_surface(
