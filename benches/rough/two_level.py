@@ -52,14 +52,17 @@ def pcg(apply, precondition, rhs, tol=1e-8, x0=None, most=2000):
 class Restricted:
     """The compliance `A` and `B = P K^-1 P` on the cells `member` of an
     n x n grid, and the coarse space of the aggregates `labels` (one per
-    member cell, 0..m)."""
+    member cell, 0..m) with its exact coarse matrix (one convolution per
+    aggregate) unless `exact` is false (`E_inv` then set by the caller)."""
 
-    def __init__(self, member, labels):
+    def __init__(self, member, labels, exact=True):
         n = member.shape[0]
         stiffness, compliance = spectra(n)
         self.K, self.M = operator(compliance), operator(stiffness)
         self.n, self.index = n, np.flatnonzero(member.ravel())
         self.labels, self.m = labels, labels.max() + 1
+        if not exact:
+            return
         self.E = np.zeros((self.m, self.m))
         for k in range(self.m):
             self.E[:, k] = self.restrict(self.A((labels == k).astype(float)))

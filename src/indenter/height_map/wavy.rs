@@ -10,9 +10,9 @@ use super::HeightMap;
 
 impl HeightMap {
     /// The wavy surface `h = A (1 - cos(2 pi phase))`, `phase = w0 i / rows
-    /// + w1 j / columns` (its fractional part, exact) at cell `(i, j)`: `waves = (w0, w1)` whole waves
-    /// along the grid's rows and columns, so that it is periodic on the
-    /// grid's period, its crests straight, along the grid for `(w, 0)` or
+    /// + w1 j / columns` (its fractional part, exact) at cell `(i, j)`:
+    /// `waves = (w0, w1)` whole waves along the grid's rows and columns, so
+    /// that it is periodic on the grid's period, its crests straight, along the grid for `(w, 0)` or
     /// `(0, w)` and at 45 degrees on a square grid for `(w, w)`; its
     /// wavelength is [`HeightMap::wavy_wavelength`]. Its troughs (height 0)
     /// touch first. The surface of Johnson's adhesive sinusoid (K. L.
