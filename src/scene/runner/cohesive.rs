@@ -88,8 +88,9 @@ impl Runner<'_> {
                 break;
             };
             increment = next;
+            let above = depth;
             depth -= increment;
-            let solution = self.solve_after(Some(depth + increment), Control::Depth(depth))?;
+            let solution = self.solve_after(Some(above), Control::Depth(depth))?;
             let lost = solution.contact_cells == 0;
             let current = Probe {
                 depth,
