@@ -79,7 +79,7 @@ const MAX_REREADS: usize = 8;
 const FRESH_ROUNDS: usize = 8;
 
 /// Fixed-point rounds of one cohesive solve before it gives up.
-const MAX_ROUNDS: usize = 2000;
+pub(super) const MAX_ROUNDS: usize = 2000;
 
 impl ContactSolver {
     /// Each cell's curvature factor of `zone`'s law, as its square root,
@@ -129,11 +129,33 @@ impl ContactSolver {
         warm: Option<&WarmStart>,
         observer: &mut dyn Observer,
     ) -> Result<(Solution, WarmStart)> {
-        self.serial_only("solve depth cohesive")?;
         check_finite("depth", depth)?;
+        let control = Control::Depth(depth);
+        let limits = (MAX_ROUNDS, &mut 0);
+        self.cohesive_fixed_point(indenter, control, depth, zone, warm, limits, observer)
+    }
+
+    /// The fixed point of the cohesive zone under `control`, its gaps first
+    /// read at `depth` (m; under force control the depth of `warm`, then
+    /// each inner solve's), in at most `max_rounds` rounds, adding the CG
+    /// iterations to `spent`.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn cohesive_fixed_point<I: Indenter + ?Sized>(
+        &mut self,
+        indenter: &I,
+        control: Control,
+        depth: f64,
+        zone: &CohesiveZone,
+        warm: Option<&WarmStart>,
+        (max_rounds, spent): (usize, &mut usize),
+        observer: &mut dyn Observer,
+    ) -> Result<(Solution, WarmStart)> {
+        self.serial_only("solve depth cohesive")?;
         self.check_warm_start(warm)?;
         self.sample_profile(indenter)?;
+        let mut depth = depth;
         let spacing = self.grid().spacing();
+        let area = self.grid().cell_area();
         let modulus = self.surface_contact_modulus;
         // The zone within a quarter of the top layer.
         let zone = &CohesiveZone {
@@ -162,6 +184,7 @@ impl ContactSolver {
             tension[c] = law.tension(g);
         }
         let mut compressive: Vec<f64> = (0..n).map(|c| (total[c] - tension[c]).max(0.0)).collect();
+        super::cohesive_force::carry(control, area, &tension, &mut compressive)?;
         let scale = receding.peak.max(f64::MIN_POSITIVE);
         let outer = self.params.tolerance;
         let tolerance = outer.max(1e-13);
@@ -197,7 +220,7 @@ impl ContactSolver {
         let mut change_of_total = vec![0.0; n];
         let mut pending = false;
         let mut since_fresh = 0usize;
-        for _ in 0..MAX_ROUNDS {
+        for _ in 0..max_rounds {
             self.check_interrupt("the cohesive zone's fixed point")?;
             // Between fresh rounds one application of the operator, to the
             // change of the total pressure, moves the profile: the inner
@@ -232,12 +255,12 @@ impl ContactSolver {
             // hundredth of the last change of the tensions.
             let inner = tolerance.max(1e-2 * change.min(scale) / scale);
             self.params.tolerance = inner;
-            let solved = self.constrained_cg(
-                Control::Depth(depth),
-                Some(Cow::Owned(start)),
-                mode,
-                observer,
-            );
+            let inner_control = match control {
+                Control::Depth(_) => control,
+                Control::Force(f) => Control::Force(f - area * tension.iter().sum::<f64>()),
+            };
+            let solved =
+                self.constrained_cg(inner_control, Some(Cow::Owned(start)), mode, observer);
             self.params.tolerance = outer;
             let (solution, end) = match solved {
                 Ok(pair) => pair,
@@ -247,6 +270,8 @@ impl ContactSolver {
                 }
             };
             iterations += solution.iterations;
+            *spent += solution.iterations;
+            depth = solution.depth;
             compressive = end.pressure;
             // The tensions the law gives at the gaps of this solution.
             let previous = change;
@@ -354,11 +379,20 @@ impl ContactSolver {
                 &target,
                 &caps,
             );
-            // The compressive part keeps the total pressure of the cells.
+            // The compressive part keeps the total pressure of the cells
+            // (under force control scaled to carry the force the tensions
+            // leave).
             for c in 0..n {
                 if compressive[c] > 0.0 {
                     compressive[c] = (compressive[c] + mapped[c] - tension[c]).max(0.0);
                 }
+            }
+            if let Err(e) = super::cohesive_force::carry(control, area, &tension, &mut compressive)
+            {
+                self.workspace.profile.copy_from_slice(&base);
+                return Err(e);
+            }
+            for c in 0..n {
                 change_of_total[c] += tension[c] + compressive[c];
             }
             pending = true;
@@ -366,27 +400,25 @@ impl ContactSolver {
         self.workspace.profile.copy_from_slice(&base);
         Err(Error::NoConvergence {
             method: "cohesive zone fixed point",
-            iterations: MAX_ROUNDS,
+            iterations: max_rounds,
             residual: change / scale,
         })
     }
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::analytic::JkrSphere;
     use crate::indenter::Sphere;
     use crate::{Boundary, Grid, Material, Substrate};
 
-    /// The JKR sphere at its pull-off contact radius, loaded and unloaded
-    /// a step, with the displacement refreshed every three iterations
-    /// (`REFRESH` in unit tests): the rounds that keep the inner solve's
-    /// displacement refresh it with their offset. A refresh that lost the
-    /// offset did not converge; the force within the staircase's error
-    /// of JKR's (12 cells across the contact radius).
-    #[test]
-    fn the_kept_displacement_survives_its_refreshes() {
+    /// The JKR sphere (`R` = 1 cm, `dgamma` = 0.05 J/m^2 on a 1 MPa rubber
+    /// half-space) on a grid of 48 cells across four pull-off contact
+    /// radii, its solver, the zone (four cells) and the equilibrium at 1.5
+    /// pull-off radii.
+    pub(in crate::solver) fn jkr_sphere_at_one_and_a_half_radii(
+    ) -> (JkrSphere, ContactSolver, Sphere, CohesiveZone, WarmStart) {
         let rubber = Material::new(1e6, 0.48).unwrap();
         let (radius, work) = (1e-2, 0.05);
         let jkr = JkrSphere::new(&rubber, radius, work).unwrap();
@@ -400,6 +432,19 @@ mod tests {
         let (_, warm) = solver
             .solve_depth_cohesive(&sphere, jkr.depth(1.5 * a), &zone, None, &mut ())
             .unwrap();
+        (jkr, solver, sphere, zone, warm)
+    }
+
+    /// The JKR sphere at its pull-off contact radius, loaded and unloaded
+    /// a step, with the displacement refreshed every three iterations
+    /// (`REFRESH` in unit tests): the rounds that keep the inner solve's
+    /// displacement refresh it with their offset. A refresh that lost the
+    /// offset did not converge; the force within the staircase's error
+    /// of JKR's (12 cells across the contact radius).
+    #[test]
+    fn the_kept_displacement_survives_its_refreshes() {
+        let (jkr, mut solver, sphere, zone, warm) = jkr_sphere_at_one_and_a_half_radii();
+        let a = jkr.pull_off_contact_radius();
         let (solution, _) = solver
             .solve_depth_cohesive(&sphere, jkr.depth(a), &zone, Some(&warm), &mut ())
             .unwrap();

@@ -58,6 +58,7 @@ mod adhesive;
 mod anderson;
 mod cg_ends;
 mod cohesive;
+mod cohesive_force;
 mod cohesive_law;
 mod cohesive_pull_off;
 mod cohesive_smoothing;

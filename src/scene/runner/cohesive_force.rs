@@ -1,6 +1,12 @@
 //! Force control through the cohesive zone. Each prescribed force is
-//! reached by searching the depth along the displacement-controlled path:
-//! steps that double until the force is passed, then regula falsi with the
+//! reached first by one fixed point under force control from the path's
+//! last equilibrium (`ContactSolver::solve_force_cohesive`, at most
+//! [`FORCE_ROUNDS`] rounds; the tilted paraboloid's force cycle in 2.3 to 3
+//! times fewer CG iterations than by the search alone, `BENCHMARKS.md`,
+//! "Adhesive scene cycles: error and cost"). Where that does not converge,
+//! loses the contact or moves the wrong way, the depth is searched along
+//! the displacement-controlled path: steps that double until the force is
+//! passed, then regula falsi with the
 //! Illinois modification (Dowell & Jarratt 1971, BIT 11, 168). Every trial
 //! equilibrium is reached from the last one on the side the step started
 //! from, as a quasi-static path reaches it, so that the history (which
@@ -33,6 +39,12 @@ const MAX_TRIALS: usize = 100;
 /// protocol's largest force (or, at zero force, the pull at first touch),
 /// unless the force lies inside a snap of the path (module docs).
 const FORCE_TOLERANCE: f64 = 1e-6;
+
+/// Fixed-point rounds of one force step taken under force control before
+/// the depth search takes it instead: a step takes 20 to 40 at 64 cells
+/// across on the tilted paraboloid (30 let one of its unloading steps fall
+/// back), and the jump-off spends them all.
+const FORCE_ROUNDS: usize = 60;
 
 /// An equilibrium of the path: its state and its solution.
 type Kept = (Option<WarmStart>, Solution);
@@ -215,12 +227,60 @@ impl Runner<'_> {
         if (near.force - aim.force).abs() <= aim.tolerance {
             return Ok(Reached::At(near));
         }
+        if let Some(at) = self.under_force(path, aim, &near)? {
+            return Ok(Reached::At(at));
+        }
         let before = path
             .before
             .as_ref()
             .filter(|b| b.depth > near.depth)
             .map(clone_probe);
         self.falsi(path, aim, step, near, None, before)
+    }
+
+    /// The equilibrium at `aim`'s force reached from `near` by the cohesive
+    /// zone's fixed point under force control, in at most
+    /// [`FORCE_ROUNDS`] rounds: `None` (and the scene's state left at
+    /// `near`) where it does not converge, loses the contact or moves the
+    /// wrong way, so that the depth search takes the step.
+    fn under_force(
+        &mut self,
+        path: &mut Path,
+        aim: Aim,
+        near: &Probe<Kept>,
+    ) -> Result<Option<Probe<Kept>>> {
+        let (Some(zone), Some(state)) = (self.cohesive, near.kept.0.as_ref()) else {
+            return Ok(None);
+        };
+        let solved = self.solver.solve_force_cohesive(
+            self.indenter,
+            aim.force,
+            &zone,
+            (state, near.depth),
+            FORCE_ROUNDS,
+            &mut path.iterations,
+            self.observer,
+        );
+        let (solution, end) = match solved {
+            Ok(pair) => pair,
+            Err(Error::NoConvergence { .. }) => return Ok(None),
+            Err(e) => return Err(e),
+        };
+        let onward = if aim.down {
+            solution.depth < near.depth
+        } else {
+            solution.depth > near.depth
+        };
+        let held = (solution.force - aim.force).abs() <= aim.tolerance;
+        if !(onward && held && solution.contact_cells > 0) {
+            return Ok(None);
+        }
+        self.warm = Some(end.clone());
+        Ok(Some(Probe {
+            depth: solution.depth,
+            force: solution.force,
+            kept: (Some(end), solution),
+        }))
     }
 
     /// [`Runner::seek`] from `near` (on the path's side of `force`), with
