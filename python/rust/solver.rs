@@ -179,7 +179,8 @@ impl Solution {
 #[pyclass(module = "layered_contact._native")]
 pub(crate) struct ContactSolver {
     pub(crate) inner: lc::solver::ContactSolver,
-    warm: Option<lc::solver::WarmStart>,
+    /// The last solve's state and depth (m).
+    warm: Option<(lc::solver::WarmStart, f64)>,
 }
 
 #[pymethods]
@@ -275,6 +276,48 @@ impl ContactSolver {
         })
     }
 
+    /// The adhesive equilibrium carrying `force` (N, negative pulls) through
+    /// the cohesive zone (the law as in `solve_depth_cohesive`), from the
+    /// last solve's equilibrium (its bonded cells are the history): one
+    /// fixed point under force control (the crate's
+    /// `ContactSolver::solve_force_cohesive`). Beyond the least force the
+    /// contact can hold there is no equilibrium: `ConvergenceError` (the
+    /// last state is kept). `InvalidInputError` without a solve before.
+    #[pyo3(signature = (indenter, force, advancing, receding=None, zone_cells=None, cells_across=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn solve_force_cohesive(
+        &mut self,
+        py: Python<'_>,
+        indenter: &Indenter,
+        force: f64,
+        advancing: f64,
+        receding: Option<f64>,
+        zone_cells: Option<f64>,
+        cells_across: Option<f64>,
+    ) -> PyResult<Solution> {
+        let zone = cohesive_zone(advancing, receding, zone_cells, cells_across)?;
+        let Some((warm, depth)) = self.warm.take() else {
+            return Err(InvalidInputError::new_err(
+                "solve_force_cohesive starts from the last solve's equilibrium: solve one first \
+                 (solve_depth_cohesive)",
+            ));
+        };
+        let shape = Shared(indenter.inner.clone());
+        let inner = &mut self.inner;
+        let solved =
+            py.detach(|| inner.solve_force_cohesive(&shape, force, &zone, (&warm, depth), &mut ()));
+        match solved {
+            Ok((solution, end)) => {
+                self.warm = Some((end, solution.depth));
+                Solution::new(py, &solution, self.inner.grid())
+            }
+            Err(e) => {
+                self.warm = Some((warm, depth));
+                Err(e).py_err()
+            }
+        }
+    }
+
     /// The pull-off under displacement control through the cohesive zone
     /// (the law as in `solve_depth_cohesive`): from the equilibrium at
     /// `depth` (m, reached cold), withdrawn in steps of `step` (m) until
@@ -351,8 +394,9 @@ impl ContactSolver {
         let shape = Shared(indenter.inner.clone());
         let warm = if warm_start { self.warm.take() } else { None };
         let inner = &mut self.inner;
-        let (solution, warm) = py.detach(|| run(inner, &shape, warm.as_ref())).py_err()?;
-        self.warm = Some(warm);
+        let from = warm.as_ref().map(|(w, _)| w);
+        let (solution, warm) = py.detach(|| run(inner, &shape, from)).py_err()?;
+        self.warm = Some((warm, solution.depth));
         Solution::new(py, &solution, self.inner.grid())
     }
 }

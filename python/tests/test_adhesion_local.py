@@ -187,6 +187,41 @@ def test_cohesive_zone_grown_with_the_resolution():
         solved(cells_across=0.5)
 
 
+def test_force_controlled_cohesive_solve_follows_jkr():
+    # From the equilibrium at 1.5 pull-off radii, JKR's force at 1.2 radii
+    # (Johnson, Kendall & Roberts 1971) by one fixed point under force
+    # control: the force to rounding, the depth within the zone's error
+    # (5 % of the critical depth at 12 cells across the radius), and the
+    # depth-controlled solve at that depth, from the state it reached, gives
+    # the same force (1e-9; the crate's unit test measures 2e-11). A pull
+    # beyond JKR's load-controlled pull-off has no equilibrium.
+    radius, work = 1e-2, 0.05
+    e_star = RUBBER.contact_modulus
+    a0 = (9 * math.pi * work * radius**2 / (8 * e_star)) ** (1 / 3)
+
+    def jkr_force(a):
+        return 4 * e_star * a**3 / (3 * radius) - math.sqrt(8 * math.pi * work * e_star * a**3)
+
+    def jkr_depth(a):
+        return a * a / radius - math.sqrt(2 * math.pi * work * a / e_star)
+
+    critical = abs(jkr_depth(a0 / 4 ** (1 / 3)))
+    substrate = lc.Substrate.half_space(RUBBER)
+    sphere = lc.Indenter.sphere(radius)
+    solver = lc.ContactSolver(substrate, 48, 48, 4 * a0 / 48)
+    with pytest.raises(lc.InvalidInputError):
+        solver.solve_force_cohesive(sphere, jkr_force(1.2 * a0), work)
+    solver.solve_depth_cohesive(sphere, jkr_depth(1.5 * a0), work)
+    force = jkr_force(1.2 * a0)
+    pulled = solver.solve_force_cohesive(sphere, force, work)
+    assert abs(pulled.force / force - 1) < 1e-12
+    assert abs(pulled.depth - jkr_depth(1.2 * a0)) < 0.05 * critical
+    again = solver.solve_depth_cohesive(sphere, pulled.depth, work, warm_start=True)
+    assert abs(again.force - pulled.force) < 1e-9 * abs(force)
+    with pytest.raises(lc.ConvergenceError):
+        solver.solve_force_cohesive(sphere, 1.2 * -1.5 * math.pi * radius * work, work)
+
+
 def test_wavy_surface_heights():
     # Indenter.wavy: amplitude (1 - cos(2 pi phase)), the phase an exact
     # fraction of the period, as numpy's from the cell indices.

@@ -636,7 +636,9 @@
 //!
 //! Under force control (`force` and `force_cycle` protocols) the cohesive
 //! zone takes each step by one fixed point under force control from the
-//! path's last equilibrium: the same rounds, each inner solve carrying the
+//! path's last equilibrium
+//! ([`ContactSolver::solve_force_cohesive`](crate::solver::ContactSolver::solve_force_cohesive),
+//! public for single steps): the same rounds, each inner solve carrying the
 //! force asked less the tensions' pull, the depth found with the contact
 //! (at most 60 rounds). Its equilibrium is a fixed point of the
 //! depth-controlled map at the depth it found (to 2e-11 of the force in

@@ -184,7 +184,7 @@ impl ContactSolver {
             tension[c] = law.tension(g);
         }
         let mut compressive: Vec<f64> = (0..n).map(|c| (total[c] - tension[c]).max(0.0)).collect();
-        super::cohesive_force::carry(control, area, &tension, &mut compressive)?;
+        super::cohesive_force::carry(control, area, &tension, (&mut compressive, 0))?;
         let scale = receding.peak.max(f64::MIN_POSITIVE);
         let outer = self.params.tolerance;
         let tolerance = outer.max(1e-13);
@@ -220,7 +220,7 @@ impl ContactSolver {
         let mut change_of_total = vec![0.0; n];
         let mut pending = false;
         let mut since_fresh = 0usize;
-        for _ in 0..max_rounds {
+        for round in 0..max_rounds {
             self.check_interrupt("the cohesive zone's fixed point")?;
             // Between fresh rounds one application of the operator, to the
             // change of the total pressure, moves the profile: the inner
@@ -387,7 +387,8 @@ impl ContactSolver {
                     compressive[c] = (compressive[c] + mapped[c] - tension[c]).max(0.0);
                 }
             }
-            if let Err(e) = super::cohesive_force::carry(control, area, &tension, &mut compressive)
+            if let Err(e) =
+                super::cohesive_force::carry(control, area, &tension, (&mut compressive, round + 1))
             {
                 self.workspace.profile.copy_from_slice(&base);
                 return Err(e);

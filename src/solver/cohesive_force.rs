@@ -13,52 +13,95 @@ use super::polonsky_keer::Control;
 use super::{check_finite, CohesiveZone, ContactSolver, Observer, Solution, WarmStart};
 
 impl ContactSolver {
-    /// Adhesive contact carrying `force` (N) through the cohesive zone, from
-    /// the equilibrium `warm` at depth `from_depth` (m): the fixed point of
+    /// Adhesive contact carrying `force` (N, negative pulls) through the
+    /// cohesive zone ([`CohesiveZone`]), from `from`: an equilibrium's
+    /// state and its depth (m; the [`Solution::depth`] of the solve that
+    /// returned the state). The fixed point of
     /// [`ContactSolver::solve_depth_cohesive`] with each inner solve under
     /// force control (the compressive part carries `force` less the
-    /// tensions' pull), the depth found with the contact. At most `rounds`
-    /// fixed-point rounds: beyond the least force the contact can hold
-    /// there is no equilibrium, and the rounds walk the contact off.
-    ///
-    /// The CG iterations spent are added to `spent`, whether it converges
-    /// or not.
+    /// tensions' pull), the depth found with the contact; the state's
+    /// bonded cells carry the history, as for the depth-controlled solve.
+    /// Beyond the least force the contact can hold (the load-controlled
+    /// pull-off) there is no equilibrium: the rounds walk the contact off
+    /// and the solve returns an error, never a number.
     ///
     /// # Errors
-    /// [`Error::NoConvergence`] if the rounds run out or the tensions
-    /// alone pull more than `force` with no contact left to carry the rest;
-    /// as [`ContactSolver::solve_depth_cohesive`] otherwise.
-    #[allow(clippy::too_many_arguments)]
-    pub(crate) fn solve_force_cohesive<I: Indenter + ?Sized>(
+    /// [`Error::InvalidParameter`] for a non-finite force or depth;
+    /// [`Error::NoConvergence`] where the fixed point does not converge
+    /// (beyond the least force, or a force inside a snap of the path where
+    /// a cell joins or leaves the zone) or the tensions alone pull more than
+    /// `force` with no contact left to carry the rest; as
+    /// [`ContactSolver::solve_depth_cohesive`] otherwise.
+    ///
+    /// # Example
+    /// ```
+    /// use layered_contact::analytic::JkrSphere;
+    /// use layered_contact::indenter::Sphere;
+    /// use layered_contact::solver::{CohesiveZone, ContactSolver, SolverParams};
+    /// use layered_contact::{Boundary, Grid, Material, Substrate};
+    ///
+    /// let rubber = Material::new(1e6, 0.48)?;
+    /// let jkr = JkrSphere::new(&rubber, 1e-2, 0.05)?;
+    /// let a = jkr.pull_off_contact_radius();
+    /// let grid = Grid::square_of_side(48, 4.0 * a)?;
+    /// let body = Substrate::half_space(rubber);
+    /// let mut solver =
+    ///     ContactSolver::new(&body, &grid, Boundary::Isolated, SolverParams::default())?;
+    /// let (sphere, zone) = (Sphere::new(1e-2)?, CohesiveZone::new(0.05, 0.05)?);
+    /// let depth = jkr.depth(1.5 * a);
+    /// let (_, state) = solver.solve_depth_cohesive(&sphere, depth, &zone, None, &mut ())?;
+    /// // Pulled with JKR's force at 1.2 pull-off radii.
+    /// let force = jkr.force(1.2 * a);
+    /// let (pulled, _) =
+    ///     solver.solve_force_cohesive(&sphere, force, &zone, (&state, depth), &mut ())?;
+    /// assert!((pulled.force / force - 1.0).abs() < 1e-12);
+    /// assert!((pulled.depth - jkr.depth(1.2 * a)).abs() < 0.05 * jkr.critical_depth().abs());
+    /// # Ok::<(), layered_contact::Error>(())
+    /// ```
+    pub fn solve_force_cohesive<I: Indenter + ?Sized>(
+        &mut self,
+        indenter: &I,
+        force: f64,
+        zone: &CohesiveZone,
+        from: (&WarmStart, f64),
+        observer: &mut dyn Observer,
+    ) -> Result<(Solution, WarmStart)> {
+        let limits = (MAX_ROUNDS, &mut 0);
+        self.solve_force_cohesive_within(indenter, force, zone, from, limits, observer)
+    }
+
+    /// [`ContactSolver::solve_force_cohesive`] in at most `rounds`
+    /// fixed-point rounds (scenes' force steps, which search the depth
+    /// where these do not suffice), adding the CG iterations spent to
+    /// `spent` whether it converges or not.
+    pub(crate) fn solve_force_cohesive_within<I: Indenter + ?Sized>(
         &mut self,
         indenter: &I,
         force: f64,
         zone: &CohesiveZone,
         (warm, from_depth): (&WarmStart, f64),
-        rounds: usize,
-        spent: &mut usize,
+        (rounds, spent): (usize, &mut usize),
         observer: &mut dyn Observer,
     ) -> Result<(Solution, WarmStart)> {
         check_finite("force", force)?;
         check_finite("depth", from_depth)?;
         let control = Control::Force(force);
-        let rounds = rounds.min(MAX_ROUNDS);
-        let warm = Some(warm);
-        let (depth, limits) = (from_depth, (rounds, spent));
+        let limits = (rounds.min(MAX_ROUNDS), spent);
+        let (depth, warm) = (from_depth, Some(warm));
         self.cohesive_fixed_point(indenter, control, depth, zone, warm, limits, observer)
     }
 }
 
 /// Under force control, scales the compressive pressures so that they
 /// carry `force` less the pull of the tensions (both times the cell's
-/// `area`); an error where the tensions pull more than the force asks (no
-/// contact can carry the rest: beyond the least force, the contact walks
-/// off). Nothing under depth control.
+/// `area`) after `rounds` rounds; an error where the tensions pull more
+/// than the force asks (no contact can carry the rest: beyond the least
+/// force, the contact walks off). Nothing under depth control.
 pub(super) fn carry(
     control: Control,
     area: f64,
     tension: &[f64],
-    compressive: &mut [f64],
+    (compressive, rounds): (&mut [f64], usize),
 ) -> Result<()> {
     let Control::Force(force) = control else {
         return Ok(());
@@ -67,9 +110,10 @@ pub(super) fn carry(
     let carried = area * compressive.iter().sum::<f64>();
     if target.is_nan() || target <= 0.0 {
         return Err(Error::NoConvergence {
-            method: "cohesive zone fixed point under force control (no contact left)",
-            iterations: 0,
-            residual: target,
+            method: "cohesive zone under force control (the tensions alone pulled more than \
+                     the force asked, leaving no contact: beyond the least force?)",
+            iterations: rounds,
+            residual: target / force.abs().max(f64::MIN_POSITIVE),
         });
     }
     if carried > 0.0 {
@@ -100,13 +144,12 @@ mod tests {
         let force = jkr.force(1.2 * a);
         let mut spent = 0;
         let (at, end) = solver
-            .solve_force_cohesive(
+            .solve_force_cohesive_within(
                 &sphere,
                 force,
                 &zone,
                 (&warm, start),
-                200,
-                &mut spent,
+                (200, &mut spent),
                 &mut (),
             )
             .unwrap();
@@ -135,22 +178,12 @@ mod tests {
         let off = (again.force - at.force).abs() / force.abs();
         assert!(off < 1e-4, "{off:e}");
         assert_eq!(again.contact_cells, at.contact_cells);
-        // Beyond the least force.
+        // Beyond the least force: the contact walks off (in 9 rounds).
         let beyond = 1.2 * jkr.pull_off_force();
-        let mut spent = 0;
-        let pulled = solver.solve_force_cohesive(
-            &sphere,
-            beyond,
-            &zone,
-            (&warm, start),
-            200,
-            &mut spent,
-            &mut (),
-        );
+        let pulled = solver.solve_force_cohesive(&sphere, beyond, &zone, (&warm, start), &mut ());
         assert!(
             matches!(pulled, Err(Error::NoConvergence { .. })),
             "{pulled:?}"
         );
-        assert!(spent > 0);
     }
 }

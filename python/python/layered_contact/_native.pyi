@@ -160,6 +160,15 @@ class ContactSolver:
         warm_start: bool = False,
         cells_across: float | None = None,
     ) -> Solution: ...
+    def solve_force_cohesive(
+        self,
+        indenter: Indenter,
+        force: float,
+        advancing: float,
+        receding: float | None = None,
+        zone_cells: float | None = None,
+        cells_across: float | None = None,
+    ) -> Solution: ...
     def cohesive_pull_off(
         self,
         indenter: Indenter,

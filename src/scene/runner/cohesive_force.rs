@@ -252,13 +252,12 @@ impl Runner<'_> {
         let (Some(zone), Some(state)) = (self.cohesive, near.kept.0.as_ref()) else {
             return Ok(None);
         };
-        let solved = self.solver.solve_force_cohesive(
+        let solved = self.solver.solve_force_cohesive_within(
             self.indenter,
             aim.force,
             &zone,
             (state, near.depth),
-            FORCE_ROUNDS,
-            &mut path.iterations,
+            (FORCE_ROUNDS, &mut path.iterations),
             self.observer,
         );
         let (solution, end) = match solved {
