@@ -7,11 +7,12 @@
 //! the cohesive zone (its sets are not discs). `BENCHMARKS.md`, "Adhesive
 //! scene cycles: error and cost". Beside it, the peeling path of a square
 //! flat punch bonded over its face (`ContactSolver::peel_punch`), 64 and
-//! 128 cells across: `BENCHMARKS.md`, "Local release rates along an edge".
+//! 128 cells across: `BENCHMARKS.md`, "Local release rates along an edge";
+//! and a force cycle of the tilted paraboloid at 64 cells.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use layered_contact::indenter::HeightMap;
-use layered_contact::scene::{AdhesionMethod, IndenterSpec};
+use layered_contact::scene::{AdhesionMethod, IndenterSpec, Protocol};
 use layered_contact::solver::{ContactSolver, SolverParams};
 use layered_contact::{Boundary, Grid, Material, Substrate};
 
@@ -44,6 +45,35 @@ fn bench_cycle(c: &mut Criterion) {
     group.finish();
 }
 
+/// The same scene with the tilted paraboloid under a force cycle to twice
+/// the pull-off force in 6 steps and back to the jump-off (each force step
+/// one fixed point under force control), 64 cells across:
+/// `BENCHMARKS.md`, "Force steps by one fixed point under force control".
+fn bench_force_cycle(c: &mut Criterion) {
+    let mut group =
+        c.benchmark_group("adhesive scene force cycle (tilted paraboloid, cohesive zone)");
+    group.sample_size(10);
+    let radius = tilted_cycle::RADIUS;
+    let jkr = tilted_cycle::jkr().unwrap();
+    let spec = IndenterSpec::Paraboloid { radius };
+    let mut scene = tilted_cycle::scene(spec, 64, AdhesionMethod::CohesiveZone).unwrap();
+    scene.protocol = Protocol::ForceCycle {
+        max_force: -2.0 * jkr.pull_off_force(),
+        steps: 6,
+    };
+    let mut solver = scene.solver().unwrap();
+    group.bench_function(BenchmarkId::from_parameter(64), |b| {
+        b.iter(|| {
+            scene
+                .run_on(&mut solver, &mut |_| {})
+                .unwrap()
+                .pull_off()
+                .map(|s| s.force)
+        })
+    });
+    group.finish();
+}
+
 fn bench_peel(c: &mut Criterion) {
     let mut group = c.benchmark_group("peeling path (square flat punch)");
     group.sample_size(10);
@@ -72,5 +102,5 @@ fn bench_peel(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_cycle, bench_peel);
+criterion_group!(benches, bench_cycle, bench_force_cycle, bench_peel);
 criterion_main!(benches);

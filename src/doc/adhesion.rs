@@ -643,7 +643,7 @@
 //! (at most 60 rounds). Its equilibrium is a fixed point of the
 //! depth-controlled map at the depth it found (to 2e-11 of the force in
 //! the unit test) and carries the force to rounding; the tilted
-//! paraboloid's force cycle costs 2.3 to 3 times fewer CG iterations than
+//! paraboloid's force cycle costs 2.2 to 2.7 times fewer CG iterations than
 //! by the depth search alone (`BENCHMARKS.md`, "Adhesive scene cycles:
 //! error and cost"). Where that fixed point does not converge, loses the
 //! contact or moves the wrong way (beyond the least force, where the

@@ -150,7 +150,10 @@ impl ContactSolver {
         (max_rounds, spent): (usize, &mut usize),
         observer: &mut dyn Observer,
     ) -> Result<(Solution, WarmStart)> {
-        self.serial_only("solve depth cohesive")?;
+        self.serial_only(match control {
+            Control::Depth(_) => "solve depth cohesive",
+            Control::Force(_) => "solve force cohesive",
+        })?;
         self.check_warm_start(warm)?;
         self.sample_profile(indenter)?;
         let mut depth = depth;

@@ -1,9 +1,9 @@
 //! Force control through the cohesive zone. Each prescribed force is
 //! reached first by one fixed point under force control from the path's
 //! last equilibrium (`ContactSolver::solve_force_cohesive`, at most
-//! [`FORCE_ROUNDS`] rounds; the tilted paraboloid's force cycle in 2.3 to 3
-//! times fewer CG iterations than by the search alone, `BENCHMARKS.md`,
-//! "Adhesive scene cycles: error and cost"). Where that does not converge,
+//! [`FORCE_ROUNDS`] rounds; the tilted paraboloid's force cycle in 2.2 to
+//! 2.7 times fewer CG iterations than by the search alone, `BENCHMARKS.md`,
+//! "Force steps by one fixed point under force control"). Where that does not converge,
 //! loses the contact or moves the wrong way, the depth is searched along
 //! the displacement-controlled path: steps that double until the force is
 //! passed, then regula falsi with the
@@ -43,6 +43,7 @@ const FORCE_TOLERANCE: f64 = 1e-6;
 /// Fixed-point rounds of one force step taken under force control before
 /// the depth search takes it instead: a step takes 20 to 40 at 64 cells
 /// across on the tilted paraboloid (30 let one of its unloading steps fall
+/// back; 40 cost 31 % more iterations at 128 cells, more steps falling
 /// back), and the jump-off spends them all.
 const FORCE_ROUNDS: usize = 60;
 
