@@ -3,11 +3,11 @@
 //! last equilibrium (`ContactSolver::solve_force_cohesive`, at most
 //! [`FORCE_ROUNDS`] rounds; the tilted paraboloid's force cycle in 2.2 to
 //! 2.7 times fewer CG iterations than by the search alone, `BENCHMARKS.md`,
-//! "Force steps by one fixed point under force control"). Where that does not converge,
-//! loses the contact or moves the wrong way, the depth is searched along
-//! the displacement-controlled path: steps that double until the force is
-//! passed, then regula falsi with the
-//! Illinois modification (Dowell & Jarratt 1971, BIT 11, 168). Every trial
+//! "Force steps by one fixed point under force control"). Where that does
+//! not converge, loses the contact or moves the wrong way, the depth is
+//! searched along the displacement-controlled path: steps that double
+//! until the force is passed, then regula falsi with the Illinois
+//! modification (Dowell & Jarratt 1971, BIT 11, 168). Every trial
 //! equilibrium is reached from the last one on the side the step started
 //! from, as a quasi-static path reaches it, so that the history (which
 //! cells are bonded) is the path's. The contact jumps in at zero force
