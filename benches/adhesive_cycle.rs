@@ -12,7 +12,7 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use layered_contact::indenter::HeightMap;
-use layered_contact::scene::{AdhesionMethod, IndenterSpec, Protocol};
+use layered_contact::scene::{AdhesionMethod, IndenterSpec, Protocol, Scene};
 use layered_contact::solver::{ContactSolver, SolverParams};
 use layered_contact::{Boundary, Grid, Material, Substrate};
 
@@ -31,18 +31,27 @@ fn bench_cycle(c: &mut Criterion) {
             scene.resolved_adhesion_method(),
             AdhesionMethod::CohesiveZone
         );
-        let mut solver = scene.solver().unwrap();
-        group.bench_function(BenchmarkId::from_parameter(n), |b| {
-            b.iter(|| {
-                scene
-                    .run_on(&mut solver, &mut |_| {})
-                    .unwrap()
-                    .pull_off()
-                    .map(|s| s.force)
-            })
-        });
+        bench_scene(&mut group, n, &scene);
     }
     group.finish();
+}
+
+/// One run of `scene` (its pull-off) as the benchmark `n` of `group`.
+fn bench_scene(
+    group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    n: usize,
+    scene: &Scene,
+) {
+    let mut solver = scene.solver().unwrap();
+    group.bench_function(BenchmarkId::from_parameter(n), |b| {
+        b.iter(|| {
+            scene
+                .run_on(&mut solver, &mut |_| {})
+                .unwrap()
+                .pull_off()
+                .map(|s| s.force)
+        })
+    });
 }
 
 /// The same scene with the tilted paraboloid under a force cycle to twice
@@ -61,16 +70,7 @@ fn bench_force_cycle(c: &mut Criterion) {
         max_force: -2.0 * jkr.pull_off_force(),
         steps: 6,
     };
-    let mut solver = scene.solver().unwrap();
-    group.bench_function(BenchmarkId::from_parameter(64), |b| {
-        b.iter(|| {
-            scene
-                .run_on(&mut solver, &mut |_| {})
-                .unwrap()
-                .pull_off()
-                .map(|s| s.force)
-        })
-    });
+    bench_scene(&mut group, 64, &scene);
     group.finish();
 }
 
