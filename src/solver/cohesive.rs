@@ -187,7 +187,10 @@ impl ContactSolver {
             tension[c] = law.tension(g);
         }
         let mut compressive: Vec<f64> = (0..n).map(|c| (total[c] - tension[c]).max(0.0)).collect();
-        super::cohesive_force::carry(control, area, &tension, (&mut compressive, 0))?;
+        // The inner solves' control: under force control the load the
+        // compressive part carries, set with each round's tensions.
+        let mut inner_control =
+            super::cohesive_force::carry(control, area, &tension, (&mut compressive, 0))?;
         let scale = receding.peak.max(f64::MIN_POSITIVE);
         let outer = self.params.tolerance;
         let tolerance = outer.max(1e-13);
@@ -258,10 +261,6 @@ impl ContactSolver {
             // hundredth of the last change of the tensions.
             let inner = tolerance.max(1e-2 * change.min(scale) / scale);
             self.params.tolerance = inner;
-            let inner_control = match control {
-                Control::Depth(_) => control,
-                Control::Force(f) => Control::Force(f - area * tension.iter().sum::<f64>()),
-            };
             let solved =
                 self.constrained_cg(inner_control, Some(Cow::Owned(start)), mode, observer);
             self.params.tolerance = outer;
@@ -390,11 +389,14 @@ impl ContactSolver {
                     compressive[c] = (compressive[c] + mapped[c] - tension[c]).max(0.0);
                 }
             }
-            if let Err(e) =
-                super::cohesive_force::carry(control, area, &tension, (&mut compressive, round + 1))
+            let rounds = round + 1;
+            match super::cohesive_force::carry(control, area, &tension, (&mut compressive, rounds))
             {
-                self.workspace.profile.copy_from_slice(&base);
-                return Err(e);
+                Ok(carried) => inner_control = carried,
+                Err(e) => {
+                    self.workspace.profile.copy_from_slice(&base);
+                    return Err(e);
+                }
             }
             for c in 0..n {
                 change_of_total[c] += tension[c] + compressive[c];

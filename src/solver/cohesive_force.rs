@@ -94,17 +94,18 @@ impl ContactSolver {
 
 /// Under force control, scales the compressive pressures so that they
 /// carry `force` less the pull of the tensions (both times the cell's
-/// `area`) after `rounds` rounds; an error where the tensions pull more
-/// than the force asks (no contact can carry the rest: beyond the least
-/// force, the contact walks off). Nothing under depth control.
+/// `area`) after `rounds` rounds, and returns the inner solves' control
+/// (that load); an error where the tensions pull more than the force asks
+/// (no contact can carry the rest: beyond the least force, the contact
+/// walks off). Under depth control, `control` itself.
 pub(super) fn carry(
     control: Control,
     area: f64,
     tension: &[f64],
     (compressive, rounds): (&mut [f64], usize),
-) -> Result<()> {
+) -> Result<Control> {
     let Control::Force(force) = control else {
-        return Ok(());
+        return Ok(control);
     };
     let target = force - area * tension.iter().sum::<f64>();
     let carried = area * compressive.iter().sum::<f64>();
@@ -120,7 +121,7 @@ pub(super) fn carry(
         let factor = target / carried;
         compressive.iter_mut().for_each(|p| *p *= factor);
     }
-    Ok(())
+    Ok(Control::Force(target))
 }
 
 #[cfg(test)]
