@@ -19,7 +19,10 @@
 //! for example `-- cohesive 16 32 64 mesh 16 32`; `STEPS=1` prints every
 //! step (phase, depth, force, iterations, contact area); `FORCE=1` runs a
 //! force cycle instead, to twice the pull-off force in 6 steps and back by
-//! the same decrement to the jump-off (a grid sized for that peak).
+//! the same decrement to the jump-off (a grid sized for that peak);
+//! `PLAIN=1` adds the cost of the cycle's depths (those that press in)
+//! solved without adhesion, each from the last. `TOL=1e-6` sets the scene's solver tolerance (default `1e-8`), to see
+//! what a looser one saves and costs in accuracy.
 use std::f64::consts::PI;
 use std::time::Instant;
 
@@ -49,6 +52,9 @@ fn main() -> Result<()> {
         };
         let mut scene =
             tilted_cycle::scene(IndenterSpec::Paraboloid { radius: RADIUS }, n, method)?;
+        if let Some(tolerance) = std::env::var("TOL").ok().and_then(|t| t.parse().ok()) {
+            scene.solver.tolerance = tolerance;
+        }
         if std::env::var("FORCE").is_ok() {
             scene.protocol = layered_contact::scene::Protocol::ForceCycle {
                 max_force: -2.0 * jkr.pull_off_force(),
@@ -92,6 +98,25 @@ fn main() -> Result<()> {
             one.iterations,
             one.coarse_iterations,
         );
+        if std::env::var("PLAIN").is_ok() {
+            // The same depths without adhesion, each solve warm-started from
+            // the one before, as a non-adhesive cycle would be run.
+            let (mut warm, mut spent) = (None, 0.0);
+            for s in curve.steps.iter().filter(|s| s.depth > 0.0) {
+                let (solution, state) = plain.solve_depth(
+                    &indenter as &dyn Indenter,
+                    s.depth,
+                    warm.as_ref(),
+                    &mut (),
+                )?;
+                spent += solution.iterations as f64 + solution.coarse_iterations as f64 / 4.0;
+                warm = Some(state);
+            }
+            println!(
+                "  the same depths without adhesion, warm: {:.1} non-adhesive solves",
+                spent / cost
+            );
+        }
     }
     Ok(())
 }

@@ -444,6 +444,14 @@
 //! refined: there is no Griffith limit for nucleation, and the JKR limit
 //! does not nucleate.
 //!
+//! The rounds stop when the tensions change by less than the solver's
+//! tolerance ([`SolverParams::tolerance`](crate::solver::SolverParams::tolerance),
+//! a scene's `solver.tolerance`) times the law's peak. The default, `1e-8`,
+//! converges the pull-off far below the discretisation error; a looser
+//! tolerance buys a cheaper cycle at a known price (`BENCHMARKS.md`, "What
+//! the tolerance buys": the pull-off's change and the cycle's iterations
+//! from `1e-8` to `1e-3`, and what the same depths cost without adhesion).
+//!
 //! What it converges to. A zone of finite length `l` biases the pull-off
 //! at first order in `l / a` (`a` the contact's size) where the edge is
 //! curved and only at second order where it is straight: in the
