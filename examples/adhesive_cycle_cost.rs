@@ -21,7 +21,8 @@
 //! force cycle instead, to twice the pull-off force in 6 steps and back by
 //! the same decrement to the jump-off (a grid sized for that peak);
 //! `PLAIN=1` adds the cost of the cycle's depths (those that press in)
-//! solved without adhesion, each from the last. `TOL=1e-6` sets the scene's solver tolerance (default `1e-8`), to see
+//! solved without adhesion, each from the last (with `STEPS=1` each
+//! solve's fine and coarse iterations). `TOL=1e-6` sets the scene's solver tolerance (default `1e-8`), to see
 //! what a looser one saves and costs in accuracy.
 use std::f64::consts::PI;
 use std::time::Instant;
@@ -110,6 +111,12 @@ fn main() -> Result<()> {
                     &mut (),
                 )?;
                 spent += solution.iterations as f64 + solution.coarse_iterations as f64 / 4.0;
+                if std::env::var("STEPS").is_ok() {
+                    println!(
+                        "    {:+.4e} {} + {}",
+                        s.depth, solution.iterations, solution.coarse_iterations
+                    );
+                }
                 warm = Some(state);
             }
             println!(
