@@ -6,8 +6,12 @@
 //! contact).
 //!
 //! ```text
-//! cargo run --release --example rough_benchmark -- [isolated|periodic] [--refine] N [N ...]
+//! cargo run --release --example rough_benchmark -- [isolated|periodic|peers] [--refine] N [N ...]
 //! ```
+//!
+//! `peers` solves the problem of `benches/peers/rough.py` instead (the
+//! same surface on a periodic half-space of `E* = 1` over a unit square,
+//! mean pressure `0.01 E*`), the one timed against tamaas.
 //!
 //! With `--refine` the cut-off stays at 31.25 um (16 cells of a 512 grid)
 //! whatever N: the same roughness on finer and finer grids, which shows
@@ -33,8 +37,11 @@ mod memory;
 
 fn main() -> Result<(), layered_contact::Error> {
     let mut args = std::env::args().skip(1).peekable();
+    // The peers' problem of `benches/peers/rough.py`: the same surface on a
+    // periodic half-space of E* = 1 over a unit square, mean pressure 0.01.
+    let peers = args.peek().map(String::as_str) == Some("peers");
     let boundary = match args.peek().map(String::as_str) {
-        Some("periodic") => {
+        Some("periodic" | "peers") => {
             args.next();
             Boundary::Periodic
         }
@@ -49,9 +56,12 @@ fn main() -> Result<(), layered_contact::Error> {
         args.next();
     }
     let sizes: Vec<usize> = args.filter_map(|a| a.parse().ok()).collect();
-    let side = 1e-3;
-    let film = Substrate::layer_on_rigid_base(Material::new(1e6, 0.49)?, 1e-4)?;
-    let force = 5e3 * side * side;
+    let (side, film, force) = if peers {
+        (1.0, Substrate::half_space(Material::new(1.0, 0.0)?), 0.01)
+    } else {
+        let film = Substrate::layer_on_rigid_base(Material::new(1e6, 0.49)?, 1e-4)?;
+        (1e-3, film, 5e3 * 1e-6)
+    };
     println!("N,boundary,build_s,surface_s,solve_s,iterations,coarse_iterations,contact_fraction,peak_mb,bytes_per_cell");
     for n in sizes {
         let grid = Grid::square_of_side(n, side)?;
