@@ -12,8 +12,11 @@
 //! pull-off error, the steps, the conjugate-gradient iterations of the
 //! whole cycle, its time, and the cost in non-adhesive solves: the
 //! iterations of one cold non-adhesive solve at the peak depth on the same
-//! grid (its coarse-grid iterations counted at a quarter each, an upper
-//! bound of their cost).
+//! grid to the scene's tolerance (its coarse-grid iterations counted at a
+//! quarter each, an upper bound of their cost). Until 2026-11-28 20:55 UTC
+//! that solve ran to the solver's default tolerance, `1e-10`, against the
+//! scene's `1e-8`: `BENCHMARKS.md` tables before then count in solves about
+//! a quarter dearer.
 //!
 //! `cargo run --release --example adhesive_cycle_cost -- [method N...]...`,
 //! for example `-- cohesive 16 32 64 mesh 16 32`; `STEPS=1` prints every
@@ -80,7 +83,10 @@ fn main() -> Result<()> {
             &scene.substrate.build()?,
             &curve.grid,
             scene.boundary,
-            layered_contact::solver::SolverParams::default(),
+            layered_contact::solver::SolverParams {
+                tolerance: scene.solver.tolerance,
+                ..Default::default()
+            },
         )?;
         let indenter = Tilted::new(Paraboloid::new(RADIUS)?, tilt.angle_y, tilt.angle_x)?;
         let peak = jkr.depth(1.6 * a);
@@ -89,13 +95,14 @@ fn main() -> Result<()> {
             .0;
         let cost = one.iterations as f64 + one.coarse_iterations as f64 / 4.0;
         println!(
-            "{:<8} {n:4} {:+9.4} {:7} {:11} {:7.2} {:8.1} (one solve: {} + {} coarse)",
+            "{:<8} {n:4} {:+9.4} {:7} {:11} {:7.2} {:8.1} (one solve to {:e}: {} + {} coarse)",
             format!("{method:?}"),
             100.0 * (curve.pull_off().map_or(f64::NAN, |s| s.force) / exact - 1.0),
             curve.steps.len(),
             iterations,
             time,
             iterations as f64 / cost,
+            scene.solver.tolerance,
             one.iterations,
             one.coarse_iterations,
         );
