@@ -56,12 +56,14 @@ fn main() -> Result<(), layered_contact::Error> {
         args.next();
     }
     let sizes: Vec<usize> = args.filter_map(|a| a.parse().ok()).collect();
-    let (side, film, force) = if peers {
+    // Side (m), body and nominal pressure (Pa).
+    let (side, film, pressure) = if peers {
         (1.0, Substrate::half_space(Material::new(1.0, 0.0)?), 0.01)
     } else {
         let film = Substrate::layer_on_rigid_base(Material::new(1e6, 0.49)?, 1e-4)?;
-        (1e-3, film, 5e3 * 1e-6)
+        (1e-3, film, 5e3)
     };
+    let force = pressure * side * side;
     println!("N,boundary,build_s,surface_s,solve_s,iterations,coarse_iterations,contact_fraction,peak_mb,bytes_per_cell");
     for n in sizes {
         let grid = Grid::square_of_side(n, side)?;

@@ -446,8 +446,9 @@
 //!
 //! The rounds stop when the tensions change by less than the solver's
 //! tolerance ([`SolverParams::tolerance`](crate::solver::SolverParams::tolerance),
-//! a scene's `solver.tolerance`) times the law's peak. The default, `1e-8`,
-//! converges the pull-off far below the discretisation error; a looser
+//! a scene's `solver.tolerance`) times the law's peak. A scene's default,
+//! `1e-8` (the solver's own is `1e-10`), converges the pull-off far below
+//! the discretisation error; a looser
 //! tolerance buys a cheaper cycle at a known price (`BENCHMARKS.md`, "What
 //! the tolerance buys": the pull-off's change and the cycle's iterations
 //! from `1e-8` to `1e-3`, and what the same depths cost without adhesion).
