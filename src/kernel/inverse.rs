@@ -10,7 +10,13 @@
 //! independent of the grid. The box only needs to hold the contact with a
 //! small margin (the inverse kernel, a stiffness, decays like `1/r^3`), so
 //! an application costs a periodic FFT round trip on the contact's bounding
-//! box, not on the padded grid.
+//! box, not on the padded grid. On an isolated grid a contact that spreads
+//! over the whole grid (a rough surface) still gets its margin: the box is
+//! then the grid zero-padded (its data rows and columns the grid's, the
+//! padding never transformed by the row passes). A box cut to the grid
+//! itself, as before 2026-11-29, coupled cells on opposite edges as if
+//! neighbours: 31, 41 and 58 fine iterations at 1024^2, 2048^2 and 4096^2
+//! on the rough film of `BENCHMARKS.md` against 27, 36 and 48 padded.
 
 use crate::error::Result;
 use crate::slab::{agree, even_starts, lengths, Slab};
@@ -35,8 +41,15 @@ pub(crate) struct Residual<'a> {
 
 /// The approximate inverse on a box of a fixed size (plans, multiplier and
 /// box buffers), placed anywhere on a grid at each application.
+///
+/// The box's data (the cells a residual can occupy) may be smaller than its
+/// FFT grid: a box wider than an isolated grid holds the grid's cells and
+/// zero-pads them, so that its periodic images stay apart by the margin
+/// without transforming rows of zeros.
 pub(crate) struct BoxInverse {
     size: (usize, usize),
+    /// Rows and columns of data (at most `size`).
+    data: (usize, usize),
     multiplier: Vec<f64>,
     convolution: Convolution,
     output: Vec<f64>,
@@ -46,7 +59,8 @@ pub(crate) struct BoxInverse {
 
 impl BoxInverse {
     /// The inverse of `compliance` on a periodic box of `size` cells of side
-    /// `delta`. The mean mode, whose compliance is infinite on a half-space,
+    /// `delta`, whose first `data` rows and columns carry the residual (the
+    /// rest is zero padding). The mean mode, whose compliance is infinite on a half-space,
     /// gets the stiffness of the smallest nonzero wavevector; a stiffness
     /// that is not finite and positive (an extreme layer) falls back to the
     /// half-space's, `E* |q| / 2`.
@@ -58,9 +72,11 @@ impl BoxInverse {
         surface_modulus: f64,
         delta: f64,
         size: (usize, usize),
+        data: (usize, usize),
         slab: Option<&Slab>,
     ) -> Result<Self> {
         let (m0, m1) = size;
+        let data = (data.0.min(m0), data.1.min(m1));
         let smallest = wavenumber(1, m0.max(m1).max(2), delta).abs();
         let stiffness = |qx: f64, qy: f64| {
             let q = qx.hypot(qy);
@@ -77,17 +93,18 @@ impl BoxInverse {
             }
         };
         let convolution = match slab {
-            None => Convolution::new(m0, m1, size)?,
+            None => Convolution::new(data.0, data.1, size)?,
             Some(slab) => {
                 // Until the box is placed its rows are split evenly (its
                 // buffers then grow to what the placements need).
-                let counts = lengths(&even_starts(m0, slab.exchange.ranks()));
-                Convolution::distributed(m0, m1, size, slab, counts)?
+                let counts = lengths(&even_starts(data.0, slab.exchange.ranks()));
+                Convolution::distributed(data.0, data.1, size, slab, counts)?
             }
         };
         let multiplier = multiplier(size, delta, convolution.own_columns(), stiffness)?;
         Ok(BoxInverse {
             size,
+            data,
             multiplier,
             convolution,
             output: Vec::new(),
@@ -116,9 +133,14 @@ impl BoxInverse {
         sums
     }
 
-    /// The box size (rows, columns).
+    /// The box's FFT size (rows, columns).
     pub(crate) fn size(&self) -> (usize, usize) {
         self.size
+    }
+
+    /// The box's data rows and columns (at most [`BoxInverse::size`]).
+    pub(crate) fn data(&self) -> (usize, usize) {
+        self.data
     }
 
     /// `result = P M^-1 P (r - shift)` for the [`Residual`] `r` on its grid,
@@ -148,7 +170,8 @@ impl BoxInverse {
             values: residual,
             shift,
         } = *residual;
-        let (m0, m1) = self.size;
+        // The data's extent: where the box meets the grid.
+        let (m0, m1) = self.data;
         // This rank's grid rows `grid.start..` and box rows `boxed`
         // (serial: all of either), and whether `spare` holds the box's rows.
         let placed = self
@@ -249,7 +272,7 @@ impl BoxInverse {
         origin: isize,
         local: usize,
     ) -> Result<(std::ops::Range<usize>, std::ops::Range<usize>)> {
-        let m0 = self.size.0;
+        let m0 = self.data.0;
         let Some(slab) = self.slab.as_ref() else {
             return Ok((0..local, 0..m0));
         };

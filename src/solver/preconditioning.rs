@@ -3,7 +3,7 @@
 //! (Vollebregt 2014, J. Comput. Phys. 257, 333-351).
 
 use crate::error::Result;
-use crate::grid::{fft_friendly_even, Boundary};
+use crate::grid::{fft_fast_even, Boundary};
 use crate::kernel::{BoxInverse, Residual};
 
 use super::passes::{self, Bounds};
@@ -13,7 +13,7 @@ impl ContactSolver {
     /// `response = P M^-1 P (gap - shift)` on the working set (`gap -
     /// shift` itself without preconditioning), `M^-1` the compliance's inverse on a periodic box
     /// around the working set ([`BoxInverse`]; the whole grid when
-    /// periodic), of even sides whose halves have no prime factor above 7.
+    /// periodic), of even sides of fast FFT lengths ([`fft_fast_even`]).
     /// The box is rebuilt only when the set outgrows it or needs less than
     /// 2/3 of its area (a rebuild costs about three applications; a box
     /// left 2.25 times too large, as before, doubled the preconditioner's
@@ -41,15 +41,21 @@ impl ContactSolver {
         };
         // A margin of a sixteenth of the extent (at least 4 cells) keeps
         // the box's periodic images apart; the stiffness decays like 1/r^3.
+        // A box that would reach past an isolated grid holds the whole grid
+        // (its data) zero-padded to that size ([`BoxInverse`]). Returns
+        // (FFT size, data).
         let side = |(lo, hi): (usize, usize), cells: usize| {
             let extent = hi - lo + 1;
             if periodic {
-                cells
+                (cells, cells)
             } else {
-                fft_friendly_even(extent + 2 * (extent / 16).max(4)).min(cells)
+                let size = fft_fast_even(extent + 2 * (extent / 16).max(4));
+                (size, size.min(cells))
             }
         };
-        let needed = (side(bounds.0, rows), side(bounds.1, columns));
+        let (rows_side, columns_side) = (side(bounds.0, rows), side(bounds.1, columns));
+        let needed = (rows_side.0, columns_side.0);
+        let data = (rows_side.1, columns_side.1);
         let reuse = self.preconditioner.as_ref().is_some_and(|p| {
             let (m0, m1) = p.size();
             m0 >= needed.0 && m1 >= needed.1 && 2 * m0 * m1 <= 3 * needed.0 * needed.1
@@ -62,6 +68,7 @@ impl ContactSolver {
                 self.surface_contact_modulus,
                 grid.spacing(),
                 needed,
+                data,
                 self.operator.slab(),
             );
             self.preconditioner = Some(self.agreed(built)?);
@@ -70,16 +77,17 @@ impl ContactSolver {
         let Some(inverse) = self.preconditioner.as_mut() else {
             return Ok((0.0, 0.0));
         };
-        // The box centred on the working set (at the origin when periodic).
-        let (m0, m1) = inverse.size();
-        let start = |(lo, hi): (usize, usize), m: usize| {
-            if periodic {
+        // The box's data centred on the working set (at the grid's origin
+        // when it spans the grid: periodic, or a box wider than the grid).
+        let (m0, m1) = inverse.data();
+        let start = |(lo, hi): (usize, usize), m: usize, cells: usize| {
+            if periodic || m >= cells {
                 0
             } else {
                 lo as isize - (m.saturating_sub(hi - lo + 1) / 2) as isize
             }
         };
-        let origin = (start(bounds.0, m0), start(bounds.1, m1));
+        let origin = (start(bounds.0, m0, rows), start(bounds.1, m1, columns));
         // The box's FFT works in the compliance operator's buffer.
         self.operator.lend_buffer(|buffer| {
             let residual = Residual {
