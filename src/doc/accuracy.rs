@@ -184,7 +184,8 @@
 //! contact radius a quarter of the grid, tolerance 1e-8) it takes 11 to 15
 //! iterations from N = 256 to N = 4096. Each applies the operator once to
 //! the search direction (0.6 to 0.7 of a plain FFT round trip of the padded
-//! `2N x 2N` grid: only the data rows are transformed), once more when
+//! `2N x 2N` grid, or the next fast FFT length above `2N - 1` when `N` is
+//! not a power of two: only the data rows are transformed), once more when
 //! clamping at zero moved pressures off that direction (by direct summation
 //! over the influence coefficients when few cells clamped, see
 //! [`InfluenceCoefficients::add_loads`](crate::kernel::InfluenceCoefficients::add_loads)),

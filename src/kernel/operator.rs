@@ -2,7 +2,7 @@
 //! convolution, with its plans and scratch buffers.
 
 use crate::error::{Error, Result};
-use crate::grid::{Boundary, Grid};
+use crate::grid::{fft_fast_even, Boundary, Grid};
 use crate::slab::Slab;
 use crate::substrate::Substrate;
 
@@ -128,11 +128,16 @@ pub fn distributed_memory_estimate(grid: &Grid, boundary: Boundary, ranks: usize
         + 3 * 16 * grid.rows().div_ceil(ranks) * half
 }
 
-/// The FFT grid: twice the grid each way when isolated (zero padding), the
-/// grid itself when periodic.
+/// The FFT grid: when isolated, zero padding to at least `2n - 1` cells
+/// each way (the offsets `-(n-1) ..= n-1` of a linear convolution), of a
+/// fast length ([`fft_fast_even`]: `2n` for a power of two, 384 rather
+/// than 378 for `n = 189`); the grid itself when periodic.
 fn fft_size(grid: &Grid, boundary: Boundary) -> (usize, usize) {
     match boundary {
-        Boundary::Isolated => (2 * grid.rows(), 2 * grid.columns()),
+        Boundary::Isolated => (
+            fft_fast_even(2 * grid.rows() - 1),
+            fft_fast_even(2 * grid.columns() - 1),
+        ),
         Boundary::Periodic => (grid.rows(), grid.columns()),
     }
 }
@@ -427,20 +432,21 @@ impl ComplianceOperator {
     }
 
     /// The spectrum of the coefficients placed on the padded grid in
-    /// wrap-around order (offset `-d` at index `n - d`).
+    /// wrap-around order (offset `-d` at index `n - d`; zero between the
+    /// largest offsets of either sign).
     fn isolated_spectrum(&mut self, influence: &InfluenceCoefficients) -> Result<Vec<f64>> {
-        let (_, n1) = self.convolution.size();
+        let (n0, n1) = self.convolution.size();
         let (rows, columns) = (self.grid.rows(), self.grid.columns());
         let offset = |index: usize, n: usize, cells: usize| -> Option<isize> {
             match index {
                 i if i < cells => Some(i as isize),
-                i if i == cells => None,
-                i => Some(i as isize - n as isize),
+                i if i + cells > n => Some(i as isize - n as isize),
+                _ => None,
             }
         };
         self.convolution.even_kernel_spectrum(|i, values| {
             for (j, value) in values.iter_mut().enumerate() {
-                *value = match (offset(i, 2 * rows, rows), offset(j, n1, columns)) {
+                *value = match (offset(i, n0, rows), offset(j, n1, columns)) {
                     (Some(di), Some(dj)) => influence.get(di, dj),
                     _ => 0.0,
                 };
