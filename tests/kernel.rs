@@ -175,7 +175,8 @@ fn max_abs(values: &[f64]) -> f64 {
 }
 
 /// The FFT operator equals the dense O(N^2) sum of its coefficients to 1e-12
-/// of the largest displacement, on odd, even, non-square and 1 x 1 grids.
+/// of the largest displacement, on odd, even, non-square and 1 x 1 grids,
+/// and on a 23 x 47 grid whose padding (48 x 96) exceeds twice the grid.
 #[test]
 fn operator_matches_dense_sum() {
     let layer = Material::new(1e6, 0.4).unwrap();
@@ -184,7 +185,7 @@ fn operator_matches_dense_sum() {
         coated(layer, 3e-4, Base::Rigid),
         coated(layer, 2e-4, Base::Elastic(Material::new(1e7, 0.3).unwrap())),
     ];
-    for (rows, columns) in [(1, 1), (2, 2), (5, 7), (8, 8), (9, 6), (16, 3)] {
+    for (rows, columns) in [(1, 1), (2, 2), (5, 7), (8, 8), (9, 6), (16, 3), (23, 47)] {
         let grid = Grid::new(rows, columns, 1e-4).unwrap();
         // Deterministic, sign-changing pressures.
         let pressure: Vec<f64> = (0..grid.len())

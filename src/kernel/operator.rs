@@ -135,8 +135,8 @@ pub fn distributed_memory_estimate(grid: &Grid, boundary: Boundary, ranks: usize
 fn fft_size(grid: &Grid, boundary: Boundary) -> (usize, usize) {
     match boundary {
         Boundary::Isolated => (
-            fft_fast_even(2 * grid.rows() - 1),
-            fft_fast_even(2 * grid.columns() - 1),
+            fft_fast_even((2 * grid.rows()).saturating_sub(1)),
+            fft_fast_even((2 * grid.columns()).saturating_sub(1)),
         ),
         Boundary::Periodic => (grid.rows(), grid.columns()),
     }
