@@ -42,20 +42,17 @@ impl ContactSolver {
         // A margin of a sixteenth of the extent (at least 4 cells) keeps
         // the box's periodic images apart; the stiffness decays like 1/r^3.
         // A box that would reach past an isolated grid holds the whole grid
-        // (its data) zero-padded to that size ([`BoxInverse`]). Returns
-        // (FFT size, data).
+        // (its data) zero-padded to that size ([`BoxInverse`]).
         let side = |(lo, hi): (usize, usize), cells: usize| {
             let extent = hi - lo + 1;
             if periodic {
-                (cells, cells)
+                cells
             } else {
-                let size = fft_fast_even(extent + 2 * (extent / 16).max(4));
-                (size, size.min(cells))
+                fft_fast_even(extent + 2 * (extent / 16).max(4))
             }
         };
-        let (rows_side, columns_side) = (side(bounds.0, rows), side(bounds.1, columns));
-        let needed = (rows_side.0, columns_side.0);
-        let data = (rows_side.1, columns_side.1);
+        let needed = (side(bounds.0, rows), side(bounds.1, columns));
+        let data = (needed.0.min(rows), needed.1.min(columns));
         let reuse = self.preconditioner.as_ref().is_some_and(|p| {
             let (m0, m1) = p.size();
             m0 >= needed.0 && m1 >= needed.1 && 2 * m0 * m1 <= 3 * needed.0 * needed.1
@@ -78,10 +75,11 @@ impl ContactSolver {
             return Ok((0.0, 0.0));
         };
         // The box's data centred on the working set (at the grid's origin
-        // when it spans the grid: periodic, or a box wider than the grid).
+        // when it spans the grid: periodic, or a box wider than the grid;
+        // the data never exceeds the grid).
         let (m0, m1) = inverse.data();
         let start = |(lo, hi): (usize, usize), m: usize, cells: usize| {
-            if periodic || m >= cells {
+            if m == cells {
                 0
             } else {
                 lo as isize - (m.saturating_sub(hi - lo + 1) / 2) as isize
