@@ -141,6 +141,11 @@ pub struct ContactSolver {
     workspace: Workspace,
     /// Asked after every iteration and every step: stop when it says so.
     interrupt: Option<Interrupt>,
+    /// Whether this solver is a coarse level of a finer one's
+    /// multi-resolution start: its solves stop at their tolerance even
+    /// while cells still overlap the indenter (the finer solve takes them
+    /// in).
+    start_level: bool,
 }
 
 /// A check that a long computation should stop (Ctrl-C), asked after every
@@ -215,6 +220,7 @@ impl ContactSolver {
             surface_contact_modulus: substrate.surface_material().contact_modulus(),
             workspace: Workspace::new(n)?,
             interrupt: None,
+            start_level: false,
         })
     }
 

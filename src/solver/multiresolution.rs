@@ -18,7 +18,13 @@ pub const MULTIRESOLUTION_CELLS: usize = 64;
 /// digits of the pressure. Measured against `1e-5` (2026-11-25): the same
 /// fine iterations on the rough contacts of `rough_benchmark` and
 /// `benches/peers/rough.py` (1024^2 and 2048^2) and on the Hertzian ones of
-/// `hertz_benchmark`, a fifth fewer coarse ones.
+/// `hertz_benchmark`, a fifth fewer coarse ones. A coarse solve stops there
+/// even while cells still overlap the indenter (a fine solve also waits for
+/// them to join): on rough contacts a further fifth of the coarse
+/// iterations, the fine ones and the Hertzian ones unchanged (2026-11-29,
+/// BENCHMARKS.md "Speed: rough contacts on large grids"); a looser
+/// tolerance then (3e-3, 1e-2) costs the Hertzian contact under depth
+/// control up to twice its fine iterations.
 const COARSE_TOLERANCE: f64 = 1e-3;
 
 /// The parameters of a coarse solver under a solver with `params`.
@@ -91,6 +97,7 @@ impl ContactSolver {
                 if lean {
                     coarse.operator.drop_influence();
                 }
+                coarse.start_level = true;
                 coarse
             });
             // Distributed, every rank has the coarse solver or none has.

@@ -473,7 +473,9 @@ impl ContactSolver {
                 residual,
                 contact_cells: stats.contact,
             });
-            if residual <= tolerance && !set.overlap {
+            // A fine solve stops only once no cell overlaps; a start level
+            // may stop with overlap left (`ContactSolver::start_level`).
+            if residual <= tolerance && (!set.overlap || self.start_level) {
                 return self.converged(control, pressure, depth, iteration, residual);
             }
         }
