@@ -3,8 +3,10 @@
 
 use layered_contact::analytic::{Hertz, JkrFlatPunch, JkrSphere, PunchStiffnessSeries};
 use layered_contact::indenter::{FlatPunch, Indenter, Paraboloid, Sphere, Tilted};
-use layered_contact::solver::{ContactSolver, Fields, IterationInfo, Solution, SolverParams};
+use layered_contact::solver::{ContactSolver, Fields, IterationInfo, SolverParams};
 use layered_contact::{Boundary, Error, Grid, Material, Substrate};
+
+mod common;
 
 fn rubber() -> Material {
     Material::new(1e6, 0.5).unwrap()
@@ -516,14 +518,6 @@ fn periodic_contacts() {
     );
 }
 
-/// The largest difference of two solutions' cell pressures.
-fn largest_difference(a: &Solution, b: &Solution) -> f64 {
-    let (p, q) = (a.pressure.as_ref().unwrap(), b.pressure.as_ref().unwrap());
-    p.iter()
-        .zip(q)
-        .fold(0.0f64, |m, (p, q)| m.max((p - q).abs()))
-}
-
 /// The preconditioned iteration with its multi-resolution start converges to
 /// the same discrete solution as Polonsky and Keer's plain iteration (one
 /// solution exists; both stop at a relative pressure change of 1e-11 per
@@ -566,7 +560,7 @@ fn preconditioned_solve_equals_plain_polonsky_keer() {
         let (d, _) = plain.solve_force(&ball, b.force, None, &mut ()).unwrap();
         let peak = b.pressure.as_ref().unwrap().fold(0.0f64, |m, p| m.max(*p));
         for (x, y) in [(&a, &b), (&c, &d)] {
-            let difference = largest_difference(x, y);
+            let difference = common::largest_difference(x, y);
             assert!(difference < 1e-9 * peak, "{difference:e} of {peak:e}");
             assert_eq!(x.contact_cells, y.contact_cells);
             assert!(
@@ -638,7 +632,7 @@ fn warm_start_is_corrected_on_the_coarse_grids() {
                 solver.solve_depth(&ball, 0.2, Some(&by_depth), &mut observer)
             }
             .unwrap();
-            let difference = largest_difference(&solution, &reference);
+            let difference = common::largest_difference(&solution, &reference);
             assert!(difference < 1e-9 * peak, "{difference:e} of {peak:e}");
             assert_eq!(solution.contact_cells, reference.contact_cells);
             let last = reference.contact_cells as f64;

@@ -177,6 +177,19 @@ pub mod rubber_sphere {
     }
 }
 
+/// The largest difference of two solutions' cell pressures (both need
+/// their pressure field).
+#[allow(dead_code)]
+pub fn largest_difference(
+    a: &layered_contact::solver::Solution,
+    b: &layered_contact::solver::Solution,
+) -> f64 {
+    let (p, q) = (a.pressure.as_ref().unwrap(), b.pressure.as_ref().unwrap());
+    p.iter()
+        .zip(q)
+        .fold(0.0f64, |m, (p, q)| m.max((p - q).abs()))
+}
+
 /// The operator applied afresh to a solution's pressure, and how far the
 /// displacement the solution reports is from it: `(fresh, largest
 /// difference, largest fresh value)`. The solution needs its fields.
