@@ -239,7 +239,11 @@
 //! stays nearly flat (18 to 28 from 512^2 to 8192^2): the growth is the
 //! surface's, which gains a scale with every doubling. The coarse levels of
 //! the multi-resolution start stop at their tolerance with overlap left,
-//! which the fine solve takes in. Tables (iterations, times
+//! which the fine solve takes in, and a level started from its own coarser
+//! level stops at 3 % of how far that start was (its first iteration's
+//! change) when that is looser: a rough surface's levels start far apart,
+//! so they stop sooner (a fifth to a third fewer coarse iterations), a
+//! smooth contact's start near and keep their tolerance. Tables (iterations, times
 //! and memory from 256 x 256 to 8192 x 8192, and beside tamaas) in
 //! `BENCHMARKS.md`, "Speed: rough contacts on large grids" and "Rough
 //! contacts beside tamaas".

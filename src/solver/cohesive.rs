@@ -261,8 +261,13 @@ impl ContactSolver {
             // hundredth of the last change of the tensions.
             let inner = tolerance.max(1e-2 * change.min(scale) / scale);
             self.params.tolerance = inner;
-            let solved =
-                self.constrained_cg(inner_control, Some(Cow::Owned(start)), mode, observer);
+            let solved = self.constrained_cg(
+                inner_control,
+                Some(Cow::Owned(start)),
+                mode,
+                false,
+                observer,
+            );
             self.params.tolerance = outer;
             let (solution, end) = match solved {
                 Ok(pair) => pair,

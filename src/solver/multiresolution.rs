@@ -27,6 +27,36 @@ pub const MULTIRESOLUTION_CELLS: usize = 64;
 /// control up to twice its fine iterations.
 const COARSE_TOLERANCE: f64 = 1e-3;
 
+/// A start level that was itself started from its coarser level stops at
+/// this fraction of its first iteration's residual, if that is looser than
+/// its tolerance ([`loosened`]).
+const START_RESIDUAL_FRACTION: f64 = 0.03;
+
+/// The loosest tolerance [`loosened`] gives.
+const LOOSEST_START_TOLERANCE: f64 = 1e-2;
+
+/// The tolerance of a start level prolonged from its own coarser level,
+/// whose first iteration changed the pressure by `first_residual` (relative
+/// L1): `tolerance`, or [`START_RESIDUAL_FRACTION`] of `first_residual` if
+/// that is looser (at most [`LOOSEST_START_TOLERANCE`]).
+///
+/// The first iteration after a prolongation measures how far apart two
+/// successive grids' solutions lie; the finer level's own start will be as
+/// far from this level's solution, so converging this level much beyond
+/// that buys its finer level nothing. A rough surface gains a scale of
+/// patches with each level and starts far (a first residual of 0.2 to 0.4),
+/// a smooth contact near (1e-3 to 2e-2, so its levels keep
+/// [`COARSE_TOLERANCE`]). Measured (2026-11-29, BENCHMARKS.md "Speed: rough
+/// contacts on large grids"): the rough problems' coarse iterations fall by
+/// a fifth to a third, their fine ones move by at most two; the Hertzian
+/// contacts of `hertz_benchmark` (256^2 to 2048^2, depth and force) keep
+/// every count. A fraction of 0.1 saves a few more coarse iterations but
+/// costs the Hertzian contact at 256^2 six more fine ones; 0.01 saves half
+/// as many.
+pub(super) fn loosened(tolerance: f64, first_residual: f64) -> f64 {
+    tolerance.max((START_RESIDUAL_FRACTION * first_residual).min(LOOSEST_START_TOLERANCE))
+}
+
 /// The parameters of a coarse solver under a solver with `params`.
 pub(super) fn coarse_params(params: &SolverParams) -> SolverParams {
     SolverParams {
@@ -169,5 +199,23 @@ impl<I: Indenter + ?Sized> Indenter for Shifted<'_, I> {
 
     fn bounding_radius(&self) -> f64 {
         self.inner.bounding_radius() + self.by.0.hypot(self.by.1)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The rule's three regimes, against the numbers worked by hand: a
+    /// smooth contact's first change (1e-2) keeps the level's tolerance, a
+    /// rough one's (0.2) gives 3 % of it, a start as far as a cold one (1)
+    /// the loosest; a solve's own looser tolerance is kept.
+    #[test]
+    fn a_start_level_stops_at_a_fraction_of_its_first_change() {
+        assert_eq!(loosened(1e-3, 1e-2), 1e-3);
+        assert!((loosened(1e-3, 0.2) - 6e-3).abs() < 1e-15);
+        assert_eq!(loosened(1e-3, 1.0), 1e-2);
+        assert_eq!(loosened(1e-3, f64::INFINITY), 1e-2);
+        assert_eq!(loosened(5e-2, 0.2), 5e-2);
     }
 }

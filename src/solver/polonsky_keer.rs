@@ -16,6 +16,7 @@ use std::ops::Range;
 use crate::error::{Error, Result};
 use crate::indenter::Indenter;
 
+use super::multiresolution::loosened;
 use super::{check_finite, passes, ContactSolver, IterationInfo, Observer, Solution, WarmStart};
 
 /// The smallest load the solver takes, as a penetration over the cell size
@@ -151,12 +152,20 @@ impl ContactSolver {
         // The scratch vectors come back from the coarse solve sized for it.
         let fitted = self.workspace.fit(self.local_cells());
         self.agreed(fitted)?;
+        // A start level prolonged from its own coarser level may stop at
+        // a fraction of how far that start was ([`loosened`]).
+        let prolonged = self.start_level && coarse.is_some();
         let (start, coarse_iterations) = match coarse {
             Some((start, iterations)) => (Some(Cow::Owned(start)), iterations),
             None => (warm.map(Cow::Borrowed), 0),
         };
-        let (mut solution, end) =
-            self.constrained_cg(control, start, StartDisplacement::Compute, observer)?;
+        let (mut solution, end) = self.constrained_cg(
+            control,
+            start,
+            StartDisplacement::Compute,
+            prolonged,
+            observer,
+        )?;
         solution.coarse_iterations = coarse_iterations;
         Ok((solution, end))
     }
@@ -166,6 +175,7 @@ impl ContactSolver {
         control: Control,
         warm: Option<Cow<'_, WarmStart>>,
         start_displacement: StartDisplacement,
+        prolonged: bool,
         observer: &mut dyn Observer,
     ) -> Result<(Solution, WarmStart)> {
         let n = self.local_cells();
@@ -196,7 +206,7 @@ impl ContactSolver {
             passes::scale(&mut pressure, w / total[0]);
         }
         let force_control = matches!(control, Control::Force(_));
-        let tolerance = self.params.tolerance;
+        let mut tolerance = self.params.tolerance;
         let mut rz_old = 0.0;
         self.workspace.direction.fill(0.0);
         let mut depth = match control {
@@ -468,6 +478,9 @@ impl ContactSolver {
             } else {
                 f64::INFINITY
             };
+            if prolonged && iteration == 1 {
+                tolerance = loosened(tolerance, residual);
+            }
             observer.observe(&IterationInfo {
                 iteration,
                 residual,
