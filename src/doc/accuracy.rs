@@ -243,10 +243,10 @@
 //! level stops at 3 % of how far that start was (its first iteration's
 //! change) when that is looser: a rough surface's levels start far apart,
 //! so they stop sooner (a fifth to a third fewer coarse iterations), a
-//! smooth contact's start near and keep their tolerance. Tables (iterations, times
-//! and memory from 256 x 256 to 8192 x 8192, and beside tamaas) in
-//! `BENCHMARKS.md`, "Speed: rough contacts on large grids" and "Rough
-//! contacts beside tamaas".
+//! smooth contact's start near and keep their tolerance. Tables
+//! (iterations, times and memory from 256 x 256 to 8192 x 8192, and beside
+//! tamaas) in `BENCHMARKS.md`, "Speed: rough contacts on large grids" and
+//! "Rough contacts beside tamaas".
 //!
 //! ### Rough contacts: the contact area and the kernel
 //!

@@ -170,6 +170,10 @@ impl ContactSolver {
         Ok((solution, end))
     }
 
+    /// The constrained conjugate gradients from `warm` (or a uniform
+    /// pressure), to the solver's tolerance; `prolonged`: the start came
+    /// from this start level's coarser level, and the tolerance loosens to
+    /// a fraction of the first iteration's change ([`loosened`]).
     pub(super) fn constrained_cg(
         &mut self,
         control: Control,
