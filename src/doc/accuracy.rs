@@ -189,8 +189,9 @@
 //! clamping at zero moved pressures off that direction (by direct summation
 //! over the influence coefficients when few cells clamped, see
 //! [`InfluenceCoefficients::add_loads`](crate::kernel::InfluenceCoefficients::add_loads)),
-//! plus a periodic FFT round trip on the contact's box and a few passes over
-//! the working set's rows. One thread, an iteration costs 1.11 (N = 512) and
+//! plus a periodic FFT round trip on the contact's box (in single precision:
+//! the preconditioner only shapes the search direction) and a few passes
+//! over the working set's rows. One thread, an iteration costs 1.11 (N = 512) and
 //! 1.04 (N = 1024) plain padded round trips from the multi-resolution
 //! start, 1.12 and 1.02 warm-started, and 1.50 and 1.52 without the
 //! multi-resolution start, when the contact set changes in most iterations

@@ -30,7 +30,8 @@
 //! Every row and column goes through the same 1D transforms as on one
 //! process, so the operator itself agrees with the serial one to the last
 //! bit. The box preconditioner (Vollebregt 2014, J. Comput. Phys. 257,
-//! 333) is the same convolution on a box around the contact, whose rows
+//! 333) is the same convolution on a box around the contact (in single
+//! precision; the exchanges carry its values as `f64`, exactly), whose rows
 //! each rank takes from its band. Every sum over the grid (the
 //! conjugate-gradient products, the force, the contact's bounds) is added
 //! over the ranks with `MPI_Allreduce`, so every rank takes the same

@@ -32,12 +32,14 @@ use crate::error::{Error, Result};
 mod energy;
 mod exchange;
 mod multiplier;
+mod precision;
 mod tiling;
 
 use energy::{line_energy, Stage};
 use exchange::Split;
 pub(super) use multiplier::multiplier;
 pub(crate) use multiplier::wavenumber;
+pub(crate) use precision::Precision;
 use tiling::{tiles, tiles_mut, TILE_PAD};
 
 /// Bytes of the column lines a thread transforms at once (a block fits in
@@ -49,28 +51,31 @@ const BLOCK_BYTES: usize = 1 << 18;
 /// rough film of `BENCHMARKS.md` took 182 s with 2 and 144 s with 16.
 const MIN_BLOCK: usize = 16;
 
-/// Plans and scratch of one convolution geometry.
-pub(super) struct Convolution {
+/// Plans and scratch of one convolution geometry, in `f64` or `f32`
+/// ([`Precision`]).
+pub(super) struct Convolution<T: Precision = f64> {
     /// Data rows and columns (the grid).
     rows: usize,
     columns: usize,
     /// FFT height and width (padded or not).
     size: (usize, usize),
-    row_forward: Arc<dyn RealToComplex<f64>>,
-    row_inverse: Arc<dyn ComplexToReal<f64>>,
-    column_forward: Arc<dyn Fft<f64>>,
-    column_inverse: Arc<dyn Fft<f64>>,
+    row_forward: Arc<dyn RealToComplex<T>>,
+    row_inverse: Arc<dyn ComplexToReal<T>>,
+    column_forward: Arc<dyn Fft<T>>,
+    column_inverse: Arc<dyn Fft<T>>,
     /// Distributed only: half-spectra of this rank's data rows, `local x
     /// half`, row-major (serial runs cut them into `tiles` directly).
-    row_spectra: Vec<Complex<f64>>,
+    row_spectra: Vec<Complex<T>>,
     /// The half-spectra of the data rows (serial) or this rank's filtered
     /// columns of every row (distributed): per block of `block` columns a
-    /// row-major tile of `rows x block`.
+    /// row-major tile of `rows x block`; kept as `Complex<f64>` values
+    /// whatever `T` ([`Precision::view`]), so that one buffer can be lent
+    /// between convolutions of either type.
     tiles: Vec<Complex<f64>>,
-    /// The length `tiles` needs (it may be released or lent between
-    /// applications, and is allocated again when needed).
+    /// The values of `T` the tiles take (they may be released or lent
+    /// between applications, and are allocated again when needed).
     tiles_len: usize,
-    tasks: Vec<Scratch>,
+    tasks: Vec<Scratch<T>>,
     rows_per_task: usize,
     /// Spectrum columns per block and blocks per task.
     block: usize,
@@ -80,12 +85,12 @@ pub(super) struct Convolution {
 }
 
 /// One thread's scratch.
-struct Scratch {
+struct Scratch<T> {
     /// One padded real row.
-    real: Vec<f64>,
+    real: Vec<T>,
     /// A block of column lines, or a group of row spectra.
-    lines: Vec<Complex<f64>>,
-    fft: Vec<Complex<f64>>,
+    lines: Vec<Complex<T>>,
+    fft: Vec<Complex<T>>,
 }
 
 /// Tasks the passes are split into: one per thread (with the `parallel`
@@ -123,6 +128,12 @@ fn data_rows(input: &[f64], columns: usize) -> impl Fn(usize, &mut [f64]) + Sync
     move |i, line| line.copy_from_slice(&input[i * columns..(i + 1) * columns])
 }
 
+/// The nearest complex value of type `T` (the distributed exchanges carry
+/// `f64` whatever the convolution's type: exact both ways for `f32`).
+fn narrow<T: Precision>(value: Complex<f64>) -> Complex<T> {
+    Complex::new(T::narrow(value.re), T::narrow(value.im))
+}
+
 /// Buffer sizes are fixed at construction, so an FFT error is a bug of this
 /// module; it is reported rather than unwrapped.
 fn fft_error(error: realfft::FftError) -> Error {
@@ -132,13 +143,14 @@ fn fft_error(error: realfft::FftError) -> Error {
     }
 }
 
-impl Convolution {
+impl<T: Precision> Convolution<T> {
     /// Bytes of the buffers of a serial convolution of data of `rows` rows
     /// on an FFT grid of `size`, besides the multipliers.
     pub(super) fn memory(rows: usize, size: (usize, usize)) -> usize {
         let half = size.1 / 2 + 1;
         let tasks = task_count(size.0 * size.1);
-        16 * rows * half + tasks * (8 * size.1 + 16 * (BLOCK_BYTES / 16 + size.0))
+        let (real, complex) = (size_of::<T>(), size_of::<Complex<T>>());
+        complex * rows * half + tasks * (real * size.1 + BLOCK_BYTES + complex * size.0)
     }
 
     /// Plans and buffers for `rows x columns` data on an FFT grid of `size`
@@ -154,10 +166,10 @@ impl Convolution {
         split: Option<Split>,
     ) -> Result<Self> {
         let (n0, n1) = size;
-        let mut real_planner = RealFftPlanner::<f64>::new();
+        let mut real_planner = RealFftPlanner::<T>::new();
         let row_forward = real_planner.plan_fft_forward(n1);
         let row_inverse = real_planner.plan_fft_inverse(n1);
-        let mut planner = FftPlanner::<f64>::new();
+        let mut planner = FftPlanner::<T>::new();
         let column_forward = planner.plan_fft_forward(n0);
         let column_inverse = planner.plan_fft_inverse(n0);
         let half = n1 / 2 + 1;
@@ -176,7 +188,8 @@ impl Convolution {
         // At least MIN_BLOCK columns: the row passes copy a block's piece
         // of each row, and pieces of one or two values cost more in calls
         // than a block that spills to the next cache level (tall grids).
-        let block = (BLOCK_BYTES / (16 * n0)).clamp(MIN_BLOCK.min(width.max(1)), width.max(1));
+        let line_bytes = size_of::<Complex<T>>() * n0;
+        let block = (BLOCK_BYTES / line_bytes).clamp(MIN_BLOCK.min(width.max(1)), width.max(1));
         let blocks = width.div_ceil(block);
         let lines = (block * n0).max(half);
         let scratch = (0..tasks)
@@ -244,6 +257,261 @@ impl Convolution {
         self.size
     }
 
+    /// The tiles, allocated again if they were released or lent away
+    /// (every value is written before it is read, so the new buffer needs
+    /// no particular content).
+    fn ensure_tiles(&mut self) -> Result<()> {
+        let stored = T::stored(self.tiles_len);
+        if self.tiles.len() < stored {
+            self.tiles = Vec::new();
+            self.tiles = zeroed(stored)?;
+        }
+        Ok(())
+    }
+
+    /// As [`Convolution::apply`], the input's data row `i` (of this rank)
+    /// written into `line` by `load(i, line)` instead of read from a grid:
+    /// a gather from elsewhere needs no buffer of its own.
+    pub(super) fn apply_loaded(
+        &mut self,
+        load: impl Fn(usize, &mut [T]) + Sync,
+        output: &mut [f64],
+        multiplier: &[T],
+        combine: impl Fn(f64, T) -> f64 + Sync,
+    ) -> Result<()> {
+        self.ensure_tiles()?;
+        self.forward_rows(load)?;
+        self.exchange_to_columns()?;
+        self.filter_columns(multiplier, Stage::Filter)?;
+        self.exchange_to_rows()?;
+        self.inverse_rows(output, combine)
+    }
+
+    /// Pass 1: real-to-complex transforms of the zero-padded data rows,
+    /// into the tiles (serial) or `row_spectra` (distributed).
+    fn forward_rows(&mut self, load: impl Fn(usize, &mut [T]) + Sync) -> Result<()> {
+        let (rows, columns, half) = (self.rows, self.columns, self.size.1 / 2 + 1);
+        let per_task = self.rows_per_task;
+        let fft = &self.row_forward;
+        let local = self.local_rows();
+        // The data rows of each task.
+        let bands = (0..local)
+            .step_by(per_task.max(1))
+            .map(|i| i..(i + per_task).min(local));
+        if self.split.is_some() {
+            let tasks: Vec<_> = bands
+                .zip(self.row_spectra[..local * half].chunks_mut(per_task * half))
+                .zip(self.tasks.iter_mut())
+                .collect();
+            return run_tasks(tasks, |((band, spectra), scratch)| {
+                for (i, spectrum) in band.zip(spectra.chunks_exact_mut(half)) {
+                    load(i, &mut scratch.real[..columns]);
+                    scratch.real[columns..].fill(T::zero());
+                    fft.process_with_scratch(&mut scratch.real, spectrum, &mut scratch.fft)
+                        .map_err(fft_error)?;
+                }
+                Ok(())
+            });
+        }
+        // Each task's rows of every tile.
+        let mut pieces: Vec<Vec<&mut [Complex<T>]>> =
+            (0..self.tasks.len()).map(|_| Vec::new()).collect();
+        let buffer = &mut T::view_mut(&mut self.tiles)[..self.tiles_len];
+        for tile in tiles_mut(buffer, rows, self.block, half) {
+            let width = tile.len() / rows;
+            for (piece, task) in tile.chunks_mut(per_task * width).zip(pieces.iter_mut()) {
+                task.push(piece);
+            }
+        }
+        let block = self.block;
+        let tasks: Vec<_> = bands.zip(pieces).zip(self.tasks.iter_mut()).collect();
+        run_tasks(tasks, |((band, mut pieces), scratch)| {
+            let spectrum = &mut scratch.lines[..half];
+            for (r, i) in band.enumerate() {
+                load(i, &mut scratch.real[..columns]);
+                scratch.real[columns..].fill(T::zero());
+                fft.process_with_scratch(&mut scratch.real, spectrum, &mut scratch.fft)
+                    .map_err(fft_error)?;
+                for (values, piece) in spectrum.chunks(block).zip(pieces.iter_mut()) {
+                    let width = values.len();
+                    piece[r * width..(r + 1) * width].copy_from_slice(values);
+                }
+            }
+            Ok(())
+        })
+    }
+
+    /// Pass 2: column transforms, multiplication, inverse column transforms
+    /// ([`Stage::Filter`]), or the forward transforms only
+    /// ([`Stage::Energy`]). Returns the sum over this process's columns of
+    /// the spectrum of `multiplier |X|^2` for [`Stage::Energy`] (0
+    /// otherwise), added block by block in order whatever the number of
+    /// threads.
+    fn filter_columns(&mut self, multiplier: &[T], stage: Stage) -> Result<f64> {
+        let (rows, n0) = (self.rows, self.size.0);
+        let even = self.size.1.is_multiple_of(2);
+        let half = self.size.1 / 2 + 1;
+        // The first of this process's spectrum columns.
+        let own = self.own_columns().start;
+        let (block, per_task) = (self.block, self.blocks_per_task * self.block);
+        let (forward, inverse) = (&self.column_forward, &self.column_inverse);
+        // Distributed, the rows' spectra of the columns filtered here arrive
+        // row-major, of `stride` values per row; serial, they are in the
+        // tiles, filtered in place.
+        let (received, stride): (Option<&[Complex<f64>]>, usize) = match &self.split {
+            Some(split) => (Some(&split.receive), split.width(split.rank())),
+            None => (None, self.size.1 / 2 + 1),
+        };
+        // Each task's tiles.
+        let mut groups = Vec::with_capacity(self.tasks.len());
+        let buffer = &mut T::view_mut(&mut self.tiles)[..self.tiles_len];
+        let mut rest: Vec<_> = tiles_mut(buffer, rows, block, stride).collect();
+        while !rest.is_empty() {
+            let tail = rest.split_off(self.blocks_per_task.min(rest.len()));
+            groups.push(std::mem::replace(&mut rest, tail));
+        }
+        // One energy per block, added in block order below.
+        let mut energies = vec![0.0; groups.iter().map(Vec::len).sum()];
+        let tasks: Vec<_> = groups
+            .into_iter()
+            .zip(energies.chunks_mut(self.blocks_per_task.max(1)))
+            .zip(self.tasks.iter_mut())
+            .enumerate()
+            .collect();
+        run_tasks(tasks, |(task, ((group, energies), scratch))| {
+            let first = task * per_task;
+            for (b, (tile, energy)) in group.into_iter().zip(energies).enumerate() {
+                let j0 = first + b * block;
+                let width = tile.len() / rows;
+                let lines = &mut scratch.lines[..width * n0];
+                // Gather the block's columns (a blocked transpose).
+                for (w, line) in lines.chunks_exact_mut(n0).enumerate() {
+                    match received {
+                        Some(source) => {
+                            let column = source[j0 + w..].iter().step_by(stride);
+                            for (value, spectrum) in line[..rows].iter_mut().zip(column) {
+                                *value = narrow(*spectrum);
+                            }
+                        }
+                        None => {
+                            let column = tile[w..].iter().step_by(width);
+                            for (value, spectrum) in line[..rows].iter_mut().zip(column) {
+                                *value = *spectrum;
+                            }
+                        }
+                    }
+                    line[rows..].fill(Complex::default());
+                }
+                forward.process_with_scratch(lines, &mut scratch.fft);
+                // Row wavenumber index i > n0/2 has the multiplier of n0 - i.
+                let distinct = n0 / 2 + 1;
+                for (w, (line, k)) in lines
+                    .chunks_exact_mut(n0)
+                    .zip(multiplier[j0 * distinct..].chunks_exact(distinct))
+                    .enumerate()
+                {
+                    let (low, high) = line.split_at_mut(distinct);
+                    let high_k = k[1..=n0 - distinct].iter().rev();
+                    if stage == Stage::Energy {
+                        // The columns other than 0 and n1/2 stand for
+                        // their mirror too.
+                        let j = own + j0 + w;
+                        let single = j == 0 || (even && j == half - 1);
+                        *energy += line_energy(low, high, k, if single { 1.0 } else { 2.0 });
+                        continue;
+                    }
+                    for (c, k) in low.iter_mut().zip(k) {
+                        *c = *c * *k;
+                    }
+                    for (c, k) in high.iter_mut().zip(high_k) {
+                        *c = *c * *k;
+                    }
+                }
+                if stage == Stage::Energy {
+                    continue;
+                }
+                inverse.process_with_scratch(lines, &mut scratch.fft);
+                // Store the data rows as a row-major tile of `rows x width`.
+                for (w, line) in lines.chunks_exact(n0).enumerate() {
+                    for (value, out) in line[..rows].iter().zip(tile[w..].iter_mut().step_by(width))
+                    {
+                        *out = *value;
+                    }
+                }
+            }
+            Ok(())
+        })?;
+        Ok(energies.into_iter().sum())
+    }
+
+    /// Pass 3: complex-to-real transforms of the filtered rows; their data
+    /// columns `v` make the output `combine(output, v)`.
+    fn inverse_rows(
+        &mut self,
+        output: &mut [f64],
+        combine: impl Fn(f64, T) -> f64 + Sync,
+    ) -> Result<()> {
+        let (rows, columns, half) = (self.rows, self.columns, self.size.1 / 2 + 1);
+        let even = self.size.1.is_multiple_of(2);
+        let per_task = self.rows_per_task;
+        let block = self.block;
+        let fft = &self.row_inverse;
+        let filtered = &T::view(&self.tiles)[..self.tiles_len];
+        let split = self.split.as_ref();
+        let local = self.local_rows();
+        let tasks: Vec<_> = output[..local * columns]
+            .chunks_mut(per_task * columns)
+            .zip(self.tasks.iter_mut())
+            .enumerate()
+            .collect();
+        run_tasks(tasks, |(task, (output, scratch))| {
+            for (r, row) in output.chunks_exact_mut(columns).enumerate() {
+                let i = task * per_task + r;
+                let spectrum = &mut scratch.lines[..half];
+                match split {
+                    // Gather the row from every rank's block of columns.
+                    Some(split) => {
+                        let mut at = 0;
+                        for k in 0..split.slab.exchange.ranks() {
+                            let columns = split.columns_of(k);
+                            let w = columns.len();
+                            let received = &split.receive[at + i * w..at + (i + 1) * w];
+                            for (value, r) in spectrum[columns].iter_mut().zip(received) {
+                                *value = narrow(*r);
+                            }
+                            at += local * w;
+                        }
+                    }
+                    // Gather the row from the tiles of pass 2.
+                    None => {
+                        for (j0, tile) in (0..half)
+                            .step_by(block)
+                            .zip(tiles(filtered, rows, block, half))
+                        {
+                            let width = tile.len() / rows;
+                            spectrum[j0..j0 + width]
+                                .copy_from_slice(&tile[i * width..(i + 1) * width]);
+                        }
+                    }
+                }
+                // A real signal has real DC and Nyquist terms; clear the rounding.
+                spectrum[0].im = T::zero();
+                if even {
+                    spectrum[half - 1].im = T::zero();
+                }
+                fft.process_with_scratch(spectrum, &mut scratch.real, &mut scratch.fft)
+                    .map_err(fft_error)?;
+                for (out, value) in row.iter_mut().zip(&scratch.real[..columns]) {
+                    *out = combine(*out, *value);
+                }
+            }
+            Ok(())
+        })
+    }
+}
+
+/// The compliance operator's applications, in double precision.
+impl Convolution {
     /// `output = IFFT2(multiplier * FFT2(input))` restricted to the data
     /// cells, `input` zero-padded to the FFT grid; the multiplier is even in
     /// the row wavenumber (every multiplier here is: a function of `|q|`
@@ -271,245 +539,5 @@ impl Convolution {
     ) -> Result<()> {
         let load = data_rows(input, self.columns);
         self.apply_loaded(load, output, multiplier, combine)
-    }
-
-    /// The tiles, allocated again if they were released or lent away
-    /// (every value is written before it is read, so the new buffer needs
-    /// no particular content).
-    fn ensure_tiles(&mut self) -> Result<()> {
-        if self.tiles.len() < self.tiles_len {
-            self.tiles = Vec::new();
-            self.tiles = zeroed(self.tiles_len)?;
-        }
-        Ok(())
-    }
-
-    /// As [`Convolution::apply`], the input's data row `i` (of this rank)
-    /// written into `line` by `load(i, line)` instead of read from a grid:
-    /// a gather from elsewhere needs no buffer of its own.
-    pub(super) fn apply_loaded(
-        &mut self,
-        load: impl Fn(usize, &mut [f64]) + Sync,
-        output: &mut [f64],
-        multiplier: &[f64],
-        combine: impl Fn(f64, f64) -> f64 + Sync,
-    ) -> Result<()> {
-        self.ensure_tiles()?;
-        self.forward_rows(load)?;
-        self.exchange_to_columns()?;
-        self.filter_columns(multiplier, Stage::Filter)?;
-        self.exchange_to_rows()?;
-        self.inverse_rows(output, combine)
-    }
-
-    /// Pass 1: real-to-complex transforms of the zero-padded data rows,
-    /// into the tiles (serial) or `row_spectra` (distributed).
-    fn forward_rows(&mut self, load: impl Fn(usize, &mut [f64]) + Sync) -> Result<()> {
-        let (rows, columns, half) = (self.rows, self.columns, self.size.1 / 2 + 1);
-        let per_task = self.rows_per_task;
-        let fft = &self.row_forward;
-        let local = self.local_rows();
-        // The data rows of each task.
-        let bands = (0..local)
-            .step_by(per_task.max(1))
-            .map(|i| i..(i + per_task).min(local));
-        if self.split.is_some() {
-            let tasks: Vec<_> = bands
-                .zip(self.row_spectra[..local * half].chunks_mut(per_task * half))
-                .zip(self.tasks.iter_mut())
-                .collect();
-            return run_tasks(tasks, |((band, spectra), scratch)| {
-                for (i, spectrum) in band.zip(spectra.chunks_exact_mut(half)) {
-                    load(i, &mut scratch.real[..columns]);
-                    scratch.real[columns..].fill(0.0);
-                    fft.process_with_scratch(&mut scratch.real, spectrum, &mut scratch.fft)
-                        .map_err(fft_error)?;
-                }
-                Ok(())
-            });
-        }
-        // Each task's rows of every tile.
-        let mut pieces: Vec<Vec<&mut [Complex<f64>]>> =
-            (0..self.tasks.len()).map(|_| Vec::new()).collect();
-        for tile in tiles_mut(&mut self.tiles, rows, self.block, half) {
-            let width = tile.len() / rows;
-            for (piece, task) in tile.chunks_mut(per_task * width).zip(pieces.iter_mut()) {
-                task.push(piece);
-            }
-        }
-        let block = self.block;
-        let tasks: Vec<_> = bands.zip(pieces).zip(self.tasks.iter_mut()).collect();
-        run_tasks(tasks, |((band, mut pieces), scratch)| {
-            let spectrum = &mut scratch.lines[..half];
-            for (r, i) in band.enumerate() {
-                load(i, &mut scratch.real[..columns]);
-                scratch.real[columns..].fill(0.0);
-                fft.process_with_scratch(&mut scratch.real, spectrum, &mut scratch.fft)
-                    .map_err(fft_error)?;
-                for (values, piece) in spectrum.chunks(block).zip(pieces.iter_mut()) {
-                    let width = values.len();
-                    piece[r * width..(r + 1) * width].copy_from_slice(values);
-                }
-            }
-            Ok(())
-        })
-    }
-
-    /// Pass 2: column transforms, multiplication, inverse column transforms
-    /// ([`Stage::Filter`]), or the forward transforms only
-    /// ([`Stage::Energy`]). Returns the sum over this process's columns of
-    /// the spectrum of `multiplier |X|^2` for [`Stage::Energy`] (0
-    /// otherwise), added block by block in order whatever the number of
-    /// threads.
-    fn filter_columns(&mut self, multiplier: &[f64], stage: Stage) -> Result<f64> {
-        let (rows, n0) = (self.rows, self.size.0);
-        let even = self.size.1.is_multiple_of(2);
-        let half = self.size.1 / 2 + 1;
-        // The first of this process's spectrum columns.
-        let own = self.own_columns().start;
-        let (block, per_task) = (self.block, self.blocks_per_task * self.block);
-        let (forward, inverse) = (&self.column_forward, &self.column_inverse);
-        // Distributed, the rows' spectra of the columns filtered here arrive
-        // row-major, of `stride` values per row; serial, they are in the
-        // tiles, filtered in place.
-        let (received, stride): (Option<&[Complex<f64>]>, usize) = match &self.split {
-            Some(split) => (Some(&split.receive), split.width(split.rank())),
-            None => (None, self.size.1 / 2 + 1),
-        };
-        // Each task's tiles.
-        let mut groups = Vec::with_capacity(self.tasks.len());
-        let mut rest: Vec<_> = tiles_mut(&mut self.tiles, rows, block, stride).collect();
-        while !rest.is_empty() {
-            let tail = rest.split_off(self.blocks_per_task.min(rest.len()));
-            groups.push(std::mem::replace(&mut rest, tail));
-        }
-        // One energy per block, added in block order below.
-        let mut energies = vec![0.0; groups.iter().map(Vec::len).sum()];
-        let tasks: Vec<_> = groups
-            .into_iter()
-            .zip(energies.chunks_mut(self.blocks_per_task.max(1)))
-            .zip(self.tasks.iter_mut())
-            .enumerate()
-            .collect();
-        run_tasks(tasks, |(task, ((group, energies), scratch))| {
-            let first = task * per_task;
-            for (b, (tile, energy)) in group.into_iter().zip(energies).enumerate() {
-                let j0 = first + b * block;
-                let width = tile.len() / rows;
-                let lines = &mut scratch.lines[..width * n0];
-                // Gather the block's columns (a blocked transpose).
-                for (w, line) in lines.chunks_exact_mut(n0).enumerate() {
-                    let column = match received {
-                        Some(source) => source[j0 + w..].iter().step_by(stride),
-                        None => tile[w..].iter().step_by(width),
-                    };
-                    for (value, spectrum) in line[..rows].iter_mut().zip(column) {
-                        *value = *spectrum;
-                    }
-                    line[rows..].fill(Complex::default());
-                }
-                forward.process_with_scratch(lines, &mut scratch.fft);
-                // Row wavenumber index i > n0/2 has the multiplier of n0 - i.
-                let distinct = n0 / 2 + 1;
-                for (w, (line, k)) in lines
-                    .chunks_exact_mut(n0)
-                    .zip(multiplier[j0 * distinct..].chunks_exact(distinct))
-                    .enumerate()
-                {
-                    let (low, high) = line.split_at_mut(distinct);
-                    let high_k = k[1..=n0 - distinct].iter().rev();
-                    if stage == Stage::Energy {
-                        // The columns other than 0 and n1/2 stand for
-                        // their mirror too.
-                        let j = own + j0 + w;
-                        let single = j == 0 || (even && j == half - 1);
-                        *energy += line_energy(low, high, k, if single { 1.0 } else { 2.0 });
-                        continue;
-                    }
-                    for (c, k) in low.iter_mut().zip(k) {
-                        *c *= *k;
-                    }
-                    for (c, k) in high.iter_mut().zip(high_k) {
-                        *c *= *k;
-                    }
-                }
-                if stage == Stage::Energy {
-                    continue;
-                }
-                inverse.process_with_scratch(lines, &mut scratch.fft);
-                // Store the data rows as a row-major tile of `rows x width`.
-                for (w, line) in lines.chunks_exact(n0).enumerate() {
-                    for (value, out) in line[..rows].iter().zip(tile[w..].iter_mut().step_by(width))
-                    {
-                        *out = *value;
-                    }
-                }
-            }
-            Ok(())
-        })?;
-        Ok(energies.into_iter().sum())
-    }
-
-    /// Pass 3: complex-to-real transforms of the filtered rows; their data
-    /// columns `v` make the output `combine(output, v)`.
-    fn inverse_rows(
-        &mut self,
-        output: &mut [f64],
-        combine: impl Fn(f64, f64) -> f64 + Sync,
-    ) -> Result<()> {
-        let (rows, columns, half) = (self.rows, self.columns, self.size.1 / 2 + 1);
-        let even = self.size.1.is_multiple_of(2);
-        let per_task = self.rows_per_task;
-        let block = self.block;
-        let fft = &self.row_inverse;
-        let filtered = &self.tiles;
-        let split = self.split.as_ref();
-        let local = self.local_rows();
-        let tasks: Vec<_> = output[..local * columns]
-            .chunks_mut(per_task * columns)
-            .zip(self.tasks.iter_mut())
-            .enumerate()
-            .collect();
-        run_tasks(tasks, |(task, (output, scratch))| {
-            for (r, row) in output.chunks_exact_mut(columns).enumerate() {
-                let i = task * per_task + r;
-                let spectrum = &mut scratch.lines[..half];
-                match split {
-                    // Gather the row from every rank's block of columns.
-                    Some(split) => {
-                        let mut at = 0;
-                        for k in 0..split.slab.exchange.ranks() {
-                            let columns = split.columns_of(k);
-                            let w = columns.len();
-                            spectrum[columns]
-                                .copy_from_slice(&split.receive[at + i * w..at + (i + 1) * w]);
-                            at += local * w;
-                        }
-                    }
-                    // Gather the row from the tiles of pass 2.
-                    None => {
-                        for (j0, tile) in (0..half)
-                            .step_by(block)
-                            .zip(tiles(filtered, rows, block, half))
-                        {
-                            let width = tile.len() / rows;
-                            spectrum[j0..j0 + width]
-                                .copy_from_slice(&tile[i * width..(i + 1) * width]);
-                        }
-                    }
-                }
-                // A real signal has real DC and Nyquist terms; clear the rounding.
-                spectrum[0].im = 0.0;
-                if even {
-                    spectrum[half - 1].im = 0.0;
-                }
-                fft.process_with_scratch(spectrum, &mut scratch.real, &mut scratch.fft)
-                    .map_err(fft_error)?;
-                for (out, value) in row.iter_mut().zip(&scratch.real[..columns]) {
-                    *out = combine(*out, *value);
-                }
-            }
-            Ok(())
-        })
     }
 }

@@ -22,6 +22,7 @@ pub(crate) use convolution::wavenumber;
 pub use fourier::FourierCompliance;
 pub use influence::{InfluenceCoefficients, MAX_TAIL_ERROR};
 pub(crate) use inverse::{BoxInverse, Residual};
+pub(crate) use operator::ShareBuffer;
 pub use operator::{
     check_film, distributed_memory_estimate, memory_estimate, ComplianceOperator,
     DIRECT_LOADS_PER_LOG2, KEEP_INFLUENCE_CELLS, MIN_THICKNESS_OVER_SPACING,

@@ -261,6 +261,9 @@ impl ContactSolver {
             // hundredth of the last change of the tensions.
             let inner = tolerance.max(1e-2 * change.min(scale) / scale);
             self.params.tolerance = inner;
+            // The fixed point follows the inner solves' last digits: a
+            // double-precision preconditioner (`Preconditioner`).
+            let before = std::mem::replace(&mut self.double_preconditioner, true);
             let solved = self.constrained_cg(
                 inner_control,
                 Some(Cow::Owned(start)),
@@ -268,6 +271,7 @@ impl ContactSolver {
                 false,
                 observer,
             );
+            self.double_preconditioner = before;
             self.params.tolerance = outer;
             let (solution, end) = match solved {
                 Ok(pair) => pair,

@@ -80,8 +80,9 @@ use ndarray::Array2;
 use crate::error::{Error, Result};
 use crate::grid::{Boundary, Grid};
 use crate::indenter::Indenter;
-use crate::kernel::{BoxInverse, ComplianceOperator, FourierCompliance};
+use crate::kernel::{ComplianceOperator, FourierCompliance};
 use crate::substrate::Substrate;
+use preconditioning::Preconditioner;
 
 use workspace::Workspace;
 
@@ -129,7 +130,10 @@ pub struct ContactSolver {
     /// The constrained conjugate gradients' preconditioner, built on first
     /// use for a box around the contact and rebuilt only when the contact
     /// outgrows it (or shrinks far inside it).
-    preconditioner: Option<BoxInverse>,
+    preconditioner: Option<Preconditioner>,
+    /// Whether the preconditioner runs in double precision (the cohesive
+    /// zone's rounds) rather than single ([`Preconditioner`]).
+    double_preconditioner: bool,
     /// The substrate, for the coarser solvers.
     substrate: Substrate,
     /// The solver on the grid of half the cells each way and twice their
@@ -215,6 +219,7 @@ impl ContactSolver {
             params,
             compliance: FourierCompliance::new(substrate),
             preconditioner: None,
+            double_preconditioner: false,
             substrate: substrate.clone(),
             coarse: None,
             surface_contact_modulus: substrate.surface_material().contact_modulus(),

@@ -47,6 +47,8 @@ pub(super) struct WorkingSet {
     pub(super) members: usize,
     /// Sum of their gaps.
     pub(super) gap_sum: f64,
+    /// The largest absolute gap among them (0 if none).
+    pub(super) gap_max: f64,
     /// Whether a member carries no pressure (new overlap).
     pub(super) overlap: bool,
     /// The rows `(first, last)` and columns `(first, last)` of the members,
@@ -118,6 +120,11 @@ pub(super) fn gaps_and_working_set(
             set.members += usize::from(member);
             // Adding +0.0 leaves the sum as it was (it starts at +0.0).
             set.gap_sum += if member { *g } else { 0.0 };
+            set.gap_max = if member {
+                set.gap_max.max(g.abs())
+            } else {
+                set.gap_max
+            };
             set.overlap |= member && open;
             rows = if member { (rows.0.min(row), row) } else { rows };
             cols = if member {
@@ -144,6 +151,7 @@ pub(super) fn gaps_and_working_set(
         .fold(WorkingSet::default(), |a, b| WorkingSet {
             members: a.members + b.members,
             gap_sum: a.gap_sum + b.gap_sum,
+            gap_max: a.gap_max.max(b.gap_max),
             overlap: a.overlap | b.overlap,
             bounds: union(a.bounds, b.bounds),
         })

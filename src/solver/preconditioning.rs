@@ -4,10 +4,54 @@
 
 use crate::error::Result;
 use crate::grid::{fft_fast_even, Boundary};
-use crate::kernel::{BoxInverse, Residual};
+use crate::kernel::{BoxInverse, Residual, ShareBuffer};
 
 use super::passes::{self, Bounds};
 use super::ContactSolver;
+
+/// The box inverse in single precision (contact solves: half the bytes a
+/// round trip, the same iterations and solutions; `BENCHMARKS.md`, "Speed:
+/// rough contacts on large grids") or double (the cohesive zone's rounds,
+/// whose fixed point follows the inner solves' last digits: in single
+/// precision Johnson's sinusoid at 45 degrees took another path through
+/// its pull-off and stalled in a cycle of rounds).
+pub(super) enum Preconditioner {
+    Single(BoxInverse<f32>),
+    Double(BoxInverse<f64>),
+}
+
+impl Preconditioner {
+    fn size(&self) -> (usize, usize) {
+        match self {
+            Preconditioner::Single(p) => p.size(),
+            Preconditioner::Double(p) => p.size(),
+        }
+    }
+
+    fn data(&self) -> (usize, usize) {
+        match self {
+            Preconditioner::Single(p) => p.data(),
+            Preconditioner::Double(p) => p.data(),
+        }
+    }
+
+    fn is_double(&self) -> bool {
+        matches!(self, Preconditioner::Double(_))
+    }
+
+    fn apply_in(
+        &mut self,
+        buffer: &mut ShareBuffer,
+        spare: &mut [f64],
+        residual: &Residual<'_>,
+        result: &mut [f64],
+    ) -> Result<(f64, f64)> {
+        match self {
+            Preconditioner::Single(p) => p.apply_in(buffer, spare, residual, result),
+            Preconditioner::Double(p) => p.apply_in(buffer, spare, residual, result),
+        }
+    }
+}
 
 impl ContactSolver {
     /// `response = P M^-1 P (gap - shift)` on the working set (`gap -
@@ -18,12 +62,13 @@ impl ContactSolver {
     /// 2/3 of its area (a rebuild costs about three applications; a box
     /// left 2.25 times too large, as before, doubled the preconditioner's
     /// share of an iteration). Returns `(sum z, sum z (gap - shift))` over
-    /// the working set; `bounds` is the working set's bounding box (from
-    /// the gap pass).
+    /// the working set; `bounds` is the working set's bounding box and
+    /// `gap_max` its largest absolute gap (from the gap pass).
     pub(super) fn precondition_working_set(
         &mut self,
         bounds: Option<Bounds>,
         shift: f64,
+        gap_max: f64,
     ) -> Result<(f64, f64)> {
         let grid = *self.grid();
         let (rows, columns) = (grid.rows(), grid.columns());
@@ -53,21 +98,26 @@ impl ContactSolver {
         };
         let needed = (side(bounds.0, rows), side(bounds.1, columns));
         let data = (needed.0.min(rows), needed.1.min(columns));
+        let double = self.double_preconditioner;
         let reuse = self.preconditioner.as_ref().is_some_and(|p| {
             let (m0, m1) = p.size();
-            m0 >= needed.0 && m1 >= needed.1 && 2 * m0 * m1 <= 3 * needed.0 * needed.1
+            p.is_double() == double
+                && m0 >= needed.0
+                && m1 >= needed.1
+                && 2 * m0 * m1 <= 3 * needed.0 * needed.1
         });
         if !reuse {
             // Free the old box before building the new one.
             self.preconditioner = None;
-            let built = BoxInverse::new(
-                &self.compliance,
-                self.surface_contact_modulus,
-                grid.spacing(),
-                needed,
-                data,
-                self.operator.slab(),
-            );
+            let (compliance, modulus) = (&self.compliance, self.surface_contact_modulus);
+            let slab = self.operator.slab();
+            let built = if double {
+                BoxInverse::new(compliance, modulus, grid.spacing(), needed, data, slab)
+                    .map(Preconditioner::Double)
+            } else {
+                BoxInverse::new(compliance, modulus, grid.spacing(), needed, data, slab)
+                    .map(Preconditioner::Single)
+            };
             self.preconditioner = Some(self.agreed(built)?);
         }
         let ws = &mut self.workspace;
@@ -94,6 +144,7 @@ impl ContactSolver {
                 member: &ws.working,
                 values: &ws.gap,
                 shift,
+                magnitude: gap_max + shift.abs(),
             };
             // `previous` is written by the step after this, read only there.
             inverse.apply_in(buffer, &mut ws.previous, &residual, &mut ws.response)

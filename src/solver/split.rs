@@ -111,10 +111,18 @@ impl ContactSolver {
                 -((first + r1) as f64),
                 c0 as f64,
                 -(c1 as f64),
+                -set.gap_max,
             ],
-            None => [f64::INFINITY; 4],
+            None => [
+                f64::INFINITY,
+                f64::INFINITY,
+                f64::INFINITY,
+                f64::INFINITY,
+                0.0,
+            ],
         };
         slab.exchange.min(&mut bounds);
+        set.gap_max = -bounds[4];
         set.members = sums[0] as usize;
         set.gap_sum = sums[1];
         set.overlap = sums[2] > 0.0;

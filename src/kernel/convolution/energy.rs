@@ -7,7 +7,7 @@ use num_complex::Complex;
 
 use crate::error::Result;
 
-use super::{data_rows, Convolution};
+use super::{data_rows, Convolution, Precision};
 
 /// Which part of the column pass runs.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -23,15 +23,16 @@ pub(super) enum Stage {
 /// `n0 - i`, read from `k[1..]` backwards): one column's share of
 /// Parseval's sum, `weight` 2 for a half-spectrum column that stands for
 /// its mirror too.
-pub(super) fn line_energy(
-    low: &[Complex<f64>],
-    high: &[Complex<f64>],
-    k: &[f64],
+pub(super) fn line_energy<T: Precision>(
+    low: &[Complex<T>],
+    high: &[Complex<T>],
+    k: &[T],
     weight: f64,
 ) -> f64 {
-    let low_sum: f64 = low.iter().zip(k).map(|(c, k)| k * c.norm_sqr()).sum();
+    let term = |c: &Complex<T>, k: &T| (*k).into() * c.norm_sqr().into();
+    let low_sum: f64 = low.iter().zip(k).map(|(c, k)| term(c, k)).sum();
     let high_k = k[1..=high.len()].iter().rev();
-    let high_sum: f64 = high.iter().zip(high_k).map(|(c, k)| k * c.norm_sqr()).sum();
+    let high_sum: f64 = high.iter().zip(high_k).map(|(c, k)| term(c, k)).sum();
     weight * (low_sum + high_sum)
 }
 

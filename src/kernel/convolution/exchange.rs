@@ -5,7 +5,7 @@
 
 use num_complex::Complex;
 
-use super::{zeroed, Convolution};
+use super::{zeroed, Convolution, Precision};
 use crate::error::{Error, Result};
 use crate::slab::{even_starts, Slab};
 
@@ -18,6 +18,8 @@ pub(super) struct Split {
     pub(super) row_counts: Vec<usize>,
     /// Spectrum columns: rank `k` filters `columns[k]..columns[k + 1]`.
     pub(super) columns: Vec<usize>,
+    /// The exchanges' buffers, `f64` whatever the convolution's type (an
+    /// `f32` value is carried exactly).
     pub(super) send: Vec<Complex<f64>>,
     pub(super) receive: Vec<Complex<f64>>,
 }
@@ -43,7 +45,7 @@ impl Split {
     }
 }
 
-impl Convolution {
+impl<T: Precision> Convolution<T> {
     /// As [`Convolution::new`], split across the ranks of `slab`: this rank
     /// holds `row_counts[rank]` of the `rows` data rows (rank `k` the band
     /// after those of ranks `0..k`) and filters an even share of the
@@ -95,12 +97,12 @@ impl Convolution {
                 expected: "below 2^31 (MPI counts): use more ranks",
             });
         }
-        let grow = |buffer: &mut Vec<Complex<f64>>, len: usize| -> Result<()> {
+        fn grow<C: Clone + Default>(buffer: &mut Vec<C>, len: usize) -> Result<()> {
             if buffer.len() < len {
                 *buffer = zeroed(len)?;
             }
             Ok(())
-        };
+        }
         grow(&mut self.row_spectra, local * half)?;
         grow(&mut split.send, exchanged)?;
         grow(&mut split.receive, exchanged)?;
@@ -124,7 +126,9 @@ impl Convolution {
             let columns = split.columns_of(k);
             for row in self.row_spectra[..local * half].chunks_exact(half) {
                 let values = &row[columns.clone()];
-                split.send[at..at + values.len()].copy_from_slice(values);
+                for (sent, value) in split.send[at..at + values.len()].iter_mut().zip(values) {
+                    *sent = Complex::new(value.re.into(), value.im.into());
+                }
                 at += values.len();
             }
         }
@@ -153,9 +157,13 @@ impl Convolution {
         let width = split.width(rank);
         let mut at = 0;
         for i in 0..rows {
-            for tile in super::tiles(&self.tiles, rows, block, width) {
+            let buffer = &T::view(&self.tiles)[..self.tiles_len];
+            for tile in super::tiles(buffer, rows, block, width) {
                 let w = tile.len() / rows;
-                split.send[at..at + w].copy_from_slice(&tile[i * w..(i + 1) * w]);
+                let values = &tile[i * w..(i + 1) * w];
+                for (sent, value) in split.send[at..at + w].iter_mut().zip(values) {
+                    *sent = Complex::new(value.re.into(), value.im.into());
+                }
                 at += w;
             }
         }

@@ -13,12 +13,12 @@ pub(super) const TILE_PAD: usize = 4;
 /// The tiles of `buffer`: per block of `block` of the `width` spectrum
 /// columns, a row-major `rows x block` tile (the last one narrower), each
 /// followed by [`TILE_PAD`] values of padding.
-pub(super) fn tiles_mut(
-    buffer: &mut [Complex<f64>],
+pub(super) fn tiles_mut<T>(
+    buffer: &mut [Complex<T>],
     rows: usize,
     block: usize,
     width: usize,
-) -> impl Iterator<Item = &mut [Complex<f64>]> {
+) -> impl Iterator<Item = &mut [Complex<T>]> {
     buffer
         .chunks_mut(block * rows + TILE_PAD)
         .zip((0..width).step_by(block.max(1)))
@@ -26,12 +26,12 @@ pub(super) fn tiles_mut(
 }
 
 /// As [`tiles_mut`], read-only.
-pub(super) fn tiles(
-    buffer: &[Complex<f64>],
+pub(super) fn tiles<T>(
+    buffer: &[Complex<T>],
     rows: usize,
     block: usize,
     width: usize,
-) -> impl Iterator<Item = &[Complex<f64>]> {
+) -> impl Iterator<Item = &[Complex<T>]> {
     buffer
         .chunks(block * rows + TILE_PAD)
         .zip((0..width).step_by(block.max(1)))
