@@ -189,9 +189,14 @@ pub(super) fn dot(a: &[f64], b: &[f64]) -> f64 {
     .sum()
 }
 
+/// What [`update_direction`] summed: `(sum t, sum t gap)` of the new
+/// direction `t` (the gradient's part along it), and the same of the old
+/// direction on the working set (whether the conjugation descends).
+pub(super) type DirectionSums = [f64; 4];
+
 /// `direction = z - shift + beta direction` on the working set, 0
-/// elsewhere; returns `(sum direction, sum direction gap)` of the new
-/// direction (the gradient's part along it, read in the same pass).
+/// elsewhere; returns the [`DirectionSums`] of the new and the old
+/// direction, read in the same pass.
 pub(super) fn update_direction(
     working: &[bool],
     z: &[f64],
@@ -199,25 +204,29 @@ pub(super) fn update_direction(
     shift: f64,
     beta: f64,
     direction: &mut [f64],
-) -> (f64, f64) {
+) -> DirectionSums {
     let pass = |(k, direction): (usize, &mut [f64])| {
         let cells = k * CHUNK..k * CHUNK + direction.len();
         let inputs = working[cells.clone()]
             .iter()
             .zip(&z[cells.clone()])
             .zip(&gap[cells]);
-        let (mut sum, mut along) = (0.0, 0.0);
+        let mut sums = [0.0; 4];
         for (t, ((w, z), g)) in direction.iter_mut().zip(inputs) {
+            // Selects, not branches: rough contacts are patchy.
+            let old = if *w { *t } else { 0.0 };
+            sums[2] += old;
+            sums[3] += old * g;
             *t = if *w { z - shift + beta * *t } else { 0.0 };
-            sum += *t;
-            along += *t * g;
+            sums[0] += *t;
+            sums[1] += *t * g;
         }
-        (sum, along)
+        sums
     };
-    let parts: Vec<(f64, f64)> = chunks_mut!(direction).enumerate().map(pass).collect();
-    parts
-        .into_iter()
-        .fold((0.0, 0.0), |(s, d), (x, y)| (s + x, d + y))
+    let parts: Vec<DirectionSums> = chunks_mut!(direction).enumerate().map(pass).collect();
+    parts.into_iter().fold([0.0; 4], |a, b| {
+        [a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]]
+    })
 }
 
 /// What a step did.

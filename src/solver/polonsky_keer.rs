@@ -339,7 +339,6 @@ impl ContactSolver {
             let mut sums = [z_sum, rz];
             self.sum_over_ranks(&mut sums);
             let [z_sum, rz] = sums;
-            let ws = &mut self.workspace;
             let z_shift = if force_control {
                 z_sum / set.members as f64
             } else {
@@ -358,38 +357,36 @@ impl ContactSolver {
             // near steepest descent. The conjugation is kept instead (a
             // projected Fletcher-Reeves step), unless the new direction
             // would not descend: `gap . t = rz + beta gap . t_old` on the
-            // new set (the old direction is zero off the old one). Measured
-            // in BENCHMARKS.md ("Rough contacts beside tamaas").
-            let mut beta = if rz_old <= 0.0 { 0.0 } else { rz / rz_old };
-            if set.overlap && beta > 0.0 {
-                let cells = working_cells.clone();
-                let (t_sum, along) = passes::sum_and_dot(
-                    &ws.working[cells.clone()],
-                    &ws.direction[cells.clone()],
-                    &ws.gap[cells],
-                );
-                let mut sums = [t_sum, along];
-                self.sum_over_ranks(&mut sums);
-                let along = sums[1] - shift * sums[0];
-                if rz + beta * along <= 0.0 {
-                    beta = 0.0;
-                }
-            }
-            let ws = &mut self.workspace;
+            // new set (the old direction is zero off the old one), summed
+            // in the pass that writes the new direction, which runs again
+            // with `beta = 0` in the rare case it would not. Measured in
+            // BENCHMARKS.md ("Rough contacts beside tamaas").
+            let beta = if rz_old <= 0.0 { 0.0 } else { rz / rz_old };
             rz_old = rz;
             // The direction is zero off the working set: only the rows of
             // the old and the new one are written.
             let cells = direction_cells.map_or(working_cells.clone(), |d| {
                 d.start.min(working_cells.start)..d.end.max(working_cells.end)
             });
-            let (t_sum, gap_dot) = passes::update_direction(
-                &ws.working[cells.clone()],
-                &ws.response[cells.clone()],
-                &ws.gap[cells.clone()],
-                z_shift,
-                beta,
-                &mut ws.direction[cells],
-            );
+            let update = |solver: &mut Self, beta: f64| {
+                let ws = &mut solver.workspace;
+                passes::update_direction(
+                    &ws.working[cells.clone()],
+                    &ws.response[cells.clone()],
+                    &ws.gap[cells.clone()],
+                    z_shift,
+                    beta,
+                    &mut ws.direction[cells.clone()],
+                )
+            };
+            let [mut t_sum, mut gap_dot, old_sum, old_dot] = update(self, beta);
+            if set.overlap && beta > 0.0 {
+                let mut old = [old_sum, old_dot];
+                self.sum_over_ranks(&mut old);
+                if rz + beta * (old[1] - shift * old[0]) <= 0.0 {
+                    [t_sum, gap_dot, _, _] = update(self, 0.0);
+                }
+            }
             direction_cells = Some(working_cells.clone());
             // After a step whose clamping needed a convolution, the next
             // likely clamps too: the energy, not `K t`.
