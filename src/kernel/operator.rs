@@ -91,16 +91,17 @@ pub(crate) struct ShareBuffer(pub(super) Vec<num_complex::Complex<f64>>);
 
 /// Bytes of the compliance operator's buffers and a solver's per-cell
 /// vectors on `grid`: the complex half-spectra of the grid's rows, the
-/// kernel's spectrum (and the preconditioner's, in single precision, built
-/// on first use), the influence coefficients (while the spectrum is built;
-/// kept up to [`KEEP_INFLUENCE_CELLS`]), a few FFT lines per thread, and ten
-/// per-cell solver vectors.
+/// kernel's spectrum (and the preconditioner's, built on first use: in
+/// single precision for contact solves, in double in the cohesive zone's
+/// rounds, counted at the larger), the influence coefficients (while the
+/// spectrum is built; kept up to [`KEEP_INFLUENCE_CELLS`]), a few FFT lines
+/// per thread, and ten per-cell solver vectors.
 pub fn memory_estimate(grid: &Grid, boundary: Boundary) -> usize {
     let size = fft_size(grid, boundary);
     let half = size.1 / 2 + 1;
     let cells = grid.len();
     Convolution::<f64>::memory(grid.rows(), size)
-        + (8 + 4) * (size.0 / 2 + 1) * half
+        + 2 * 8 * (size.0 / 2 + 1) * half
         + 8 * cells
         + 10 * 8 * cells
 }
