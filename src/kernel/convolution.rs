@@ -33,6 +33,7 @@ mod energy;
 mod exchange;
 mod multiplier;
 mod precision;
+mod rows_out;
 mod tiling;
 
 use energy::{line_energy, Stage};
@@ -279,12 +280,45 @@ impl<T: Precision> Convolution<T> {
         multiplier: &[T],
         combine: impl Fn(f64, T) -> f64 + Sync,
     ) -> Result<()> {
+        let columns = self.columns;
+        let rows = output[..self.local_rows() * columns].chunks_exact_mut(columns);
+        self.apply_into(load, multiplier, rows.collect(), |_, row, values| {
+            for (out, value) in row.iter_mut().zip(values) {
+                *out = combine(*out, *value);
+            }
+        })?;
+        Ok(())
+    }
+
+    /// As [`Convolution::apply_loaded`], each output data row `i` (of this
+    /// rank) handed to `sink(i, target, values)` with `targets[i]` instead
+    /// of combined into an output grid: a pass that reads the result once
+    /// (a masked copy, sums over it) runs inside the transform's last pass.
+    /// Returns the sinks' results in row order (to be added in that order:
+    /// the same whatever the threads).
+    pub(super) fn apply_into<O: Send, S: Send>(
+        &mut self,
+        load: impl Fn(usize, &mut [T]) + Sync,
+        multiplier: &[T],
+        targets: Vec<O>,
+        sink: impl Fn(usize, O, &[T]) -> S + Sync,
+    ) -> Result<Vec<S>> {
+        if targets.len() != self.local_rows() {
+            return Err(Error::Internal {
+                what: "convolution",
+                detail: format!(
+                    "{} output rows for {} data rows",
+                    targets.len(),
+                    self.local_rows()
+                ),
+            });
+        }
         self.ensure_tiles()?;
         self.forward_rows(load)?;
         self.exchange_to_columns()?;
         self.filter_columns(multiplier, Stage::Filter)?;
         self.exchange_to_rows()?;
-        self.inverse_rows(output, combine)
+        self.inverse_rows(targets, sink)
     }
 
     /// Pass 1: real-to-complex transforms of the zero-padded data rows,
@@ -443,71 +477,6 @@ impl<T: Precision> Convolution<T> {
         })?;
         Ok(energies.into_iter().sum())
     }
-
-    /// Pass 3: complex-to-real transforms of the filtered rows; their data
-    /// columns `v` make the output `combine(output, v)`.
-    fn inverse_rows(
-        &mut self,
-        output: &mut [f64],
-        combine: impl Fn(f64, T) -> f64 + Sync,
-    ) -> Result<()> {
-        let (rows, columns, half) = (self.rows, self.columns, self.size.1 / 2 + 1);
-        let even = self.size.1.is_multiple_of(2);
-        let per_task = self.rows_per_task;
-        let block = self.block;
-        let fft = &self.row_inverse;
-        let filtered = &T::view(&self.tiles)[..self.tiles_len];
-        let split = self.split.as_ref();
-        let local = self.local_rows();
-        let tasks: Vec<_> = output[..local * columns]
-            .chunks_mut(per_task * columns)
-            .zip(self.tasks.iter_mut())
-            .enumerate()
-            .collect();
-        run_tasks(tasks, |(task, (output, scratch))| {
-            for (r, row) in output.chunks_exact_mut(columns).enumerate() {
-                let i = task * per_task + r;
-                let spectrum = &mut scratch.lines[..half];
-                match split {
-                    // Gather the row from every rank's block of columns.
-                    Some(split) => {
-                        let mut at = 0;
-                        for k in 0..split.slab.exchange.ranks() {
-                            let columns = split.columns_of(k);
-                            let w = columns.len();
-                            let received = &split.receive[at + i * w..at + (i + 1) * w];
-                            for (value, r) in spectrum[columns].iter_mut().zip(received) {
-                                *value = narrow(*r);
-                            }
-                            at += local * w;
-                        }
-                    }
-                    // Gather the row from the tiles of pass 2.
-                    None => {
-                        for (j0, tile) in (0..half)
-                            .step_by(block)
-                            .zip(tiles(filtered, rows, block, half))
-                        {
-                            let width = tile.len() / rows;
-                            spectrum[j0..j0 + width]
-                                .copy_from_slice(&tile[i * width..(i + 1) * width]);
-                        }
-                    }
-                }
-                // A real signal has real DC and Nyquist terms; clear the rounding.
-                spectrum[0].im = T::zero();
-                if even {
-                    spectrum[half - 1].im = T::zero();
-                }
-                fft.process_with_scratch(spectrum, &mut scratch.real, &mut scratch.fft)
-                    .map_err(fft_error)?;
-                for (out, value) in row.iter_mut().zip(&scratch.real[..columns]) {
-                    *out = combine(*out, *value);
-                }
-            }
-            Ok(())
-        })
-    }
 }
 
 /// The compliance operator's applications, in double precision.
@@ -539,5 +508,17 @@ impl Convolution {
     ) -> Result<()> {
         let load = data_rows(input, self.columns);
         self.apply_loaded(load, output, multiplier, combine)
+    }
+
+    /// As [`Convolution::apply_into`], the input read from the grid `input`.
+    pub(crate) fn apply_input_into<O: Send, S: Send>(
+        &mut self,
+        input: &[f64],
+        multiplier: &[f64],
+        targets: Vec<O>,
+        sink: impl Fn(usize, O, &[f64]) -> S + Sync,
+    ) -> Result<Vec<S>> {
+        let load = data_rows(input, self.columns);
+        self.apply_into(load, multiplier, targets, sink)
     }
 }

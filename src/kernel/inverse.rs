@@ -21,10 +21,9 @@
 use crate::error::Result;
 use crate::slab::{agree, even_starts, lengths, Slab};
 
-use super::convolution::{multiplier, wavenumber, zeroed, Convolution, Precision};
+use super::convolution::{multiplier, wavenumber, Convolution, Precision};
 use super::fourier::FourierCompliance;
 use super::operator::{cell_filter, ShareBuffer};
-use crate::parallel::map_rows;
 
 /// What a [`BoxInverse`] is applied to: a residual on a row-major grid of
 /// `columns` columns and `values.len() / columns` rows, restricted to the
@@ -78,7 +77,6 @@ pub(crate) struct BoxInverse<T: Precision> {
     /// A power of two about the multiplier's largest value.
     multiplier_scale: f64,
     convolution: Convolution<T>,
-    output: Vec<f64>,
     /// Distributed: the split of the grid's rows across the ranks.
     slab: Option<Slab>,
 }
@@ -146,27 +144,23 @@ impl<T: Precision> BoxInverse<T> {
             multiplier,
             multiplier_scale,
             convolution,
-            output: Vec::new(),
             slab: slab.cloned(),
         })
     }
 
-    /// As [`BoxInverse::apply_with`], the FFT working in `buffer` (the compliance
-    /// operator's, lent: one buffer of the grid's half-spectra serves both)
-    /// and the box's values in `spare` if long enough (a per-cell vector of
-    /// the solver's that is idle meanwhile): the box then holds no per-cell
-    /// buffer of its own.
+    /// As [`BoxInverse::apply_with`], the FFT working in `buffer` (the
+    /// compliance operator's, lent: one buffer of the grid's half-spectra
+    /// serves both): the box then holds no per-cell buffer of its own.
     pub(crate) fn apply_in(
         &mut self,
         buffer: &mut ShareBuffer,
-        spare: &mut [f64],
         residual: &Residual<'_>,
         result: &mut [f64],
     ) -> Result<(f64, f64)> {
         // The box allocates its buffer only on first use and gives it back
         // below, so it holds none of its own here.
         self.convolution.give_tiles(std::mem::take(&mut buffer.0));
-        let sums = self.apply_with(spare, residual, result);
+        let sums = self.apply_with(residual, result);
         // The lent buffer, or the box's own if that was too small.
         buffer.0 = self.convolution.take_tiles();
         sums
@@ -190,18 +184,12 @@ impl<T: Precision> BoxInverse<T> {
     /// over the members, added row by row in order (the same whatever the
     /// threads).
     ///
-    /// The box's values are kept in `spare` if it is long enough (a
-    /// vector of the solver's that is idle meanwhile), else in a buffer of
-    /// the box's own.
+    /// The result goes to the members from the transform's last pass
+    /// (no buffer of the box's values).
     ///
     /// # Errors
     /// As the FFT ([`Error::Internal`](crate::Error::Internal), a bug).
-    fn apply_with(
-        &mut self,
-        spare: &mut [f64],
-        residual: &Residual<'_>,
-        result: &mut [f64],
-    ) -> Result<(f64, f64)> {
+    fn apply_with(&mut self, residual: &Residual<'_>, result: &mut [f64]) -> Result<(f64, f64)> {
         let Residual {
             columns,
             origin,
@@ -214,28 +202,12 @@ impl<T: Precision> BoxInverse<T> {
         let scale = 1.0 / power_of_two_above(magnitude);
         let unscale = self.multiplier_scale / scale;
         // The data's extent: where the box meets the grid.
-        let (m0, m1) = self.data;
+        let m1 = self.data.1;
         // This rank's grid rows `grid.start..` and box rows `boxed`
-        // (serial: all of either), and whether `spare` holds the box's rows.
-        let placed = self
-            .place(origin.0, residual.len() / columns.max(1))
-            .and_then(|(grid, boxed)| {
-                let needed = boxed.len() * m1;
-                let lent = spare.len() >= needed;
-                if !lent && self.output.len() < needed {
-                    self.output = Vec::new();
-                    self.output = zeroed(needed)?;
-                }
-                Ok((grid, boxed, lent))
-            });
-        // Distributed, a rank whose buffers could not grow stops every rank.
-        let (grid, boxed, lent) = agree(self.slab.as_ref(), placed)?;
-        let needed = boxed.len() * m1;
-        let output: &mut [f64] = if lent {
-            &mut spare[..needed]
-        } else {
-            &mut self.output[..needed]
-        };
+        // (serial: all of either); distributed, a rank whose buffers could
+        // not grow stops every rank.
+        let placed = self.place(origin.0, residual.len() / columns.max(1));
+        let (grid, boxed) = agree(self.slab.as_ref(), placed)?;
         // The box columns on the grid, `first..last`, and the grid column
         // of the first.
         let first = usize::try_from(-origin.1).unwrap_or(0).min(m1);
@@ -243,6 +215,7 @@ impl<T: Precision> BoxInverse<T> {
             .unwrap_or(0)
             .clamp(first, m1);
         let column = |bj: usize| (origin.1 + bj as isize) as usize;
+        let cells = column(first)..column(last);
         // The local grid row of (local) box row `b`, if on this rank.
         let grid_row = |b: usize| {
             usize::try_from(origin.0 + (boxed.start + b) as isize)
@@ -266,42 +239,39 @@ impl<T: Precision> BoxInverse<T> {
                 }
             }
         };
-        self.convolution
-            .apply_loaded(load, output, &self.multiplier, |_, value| {
-                value.into() * unscale
-            })?;
-        // Local grid rows under the box.
-        let local = grid.len();
-        let top = usize::try_from(origin.0 - grid.start as isize)
-            .unwrap_or(0)
-            .min(local);
-        let bottom = usize::try_from(origin.0 + m0 as isize - grid.start as isize)
-            .unwrap_or(0)
-            .clamp(top, local);
-        let output = &*output;
-        let sums = map_rows(
-            &mut result[top * columns..bottom * columns],
-            columns,
-            |r, row| {
-                let i = top + r;
-                let bi = (i as isize + grid.start as isize - origin.0) as usize - boxed.start;
-                let cells = column(first)..column(last);
-                let mut sums = (0.0, 0.0);
-                for (((out, &m), &r), &z) in row[cells.clone()]
+        // Each box row's grid row of `result` (rows off this rank's grid:
+        // none), ...
+        let mut rows: Vec<Option<&mut [f64]>> = result
+            .chunks_exact_mut(columns.max(1))
+            .map(|row| Some(&mut row[cells.clone()]))
+            .collect();
+        let targets = (0..boxed.len())
+            .map(|b| grid_row(b).and_then(|i| rows.get_mut(i).and_then(Option::take)))
+            .collect();
+        // ... written on the members as the inverse transform makes it,
+        // with the sums over them.
+        let sink = |b: usize, row: Option<&mut [f64]>, values: &[T]| {
+            let mut sums = (0.0, 0.0);
+            if let (Some(row), Some(i)) = (row, grid_row(b)) {
+                for (((out, &m), &r), &z) in row
                     .iter_mut()
                     .zip(&member[i * columns..][cells.clone()])
-                    .zip(&residual[i * columns..][cells])
-                    .zip(&output[bi * m1 + first..bi * m1 + last])
+                    .zip(&residual[i * columns..][cells.clone()])
+                    .zip(&values[first..last])
                 {
                     if m {
+                        let z = z.into() * unscale;
                         *out = z;
                         sums.0 += z;
                         sums.1 += z * (r - shift);
                     }
                 }
-                sums
-            },
-        );
+            }
+            sums
+        };
+        let sums = self
+            .convolution
+            .apply_into(load, &self.multiplier, targets, sink)?;
         Ok(sums
             .into_iter()
             .fold((0.0, 0.0), |(s, d), (a, b)| (s + a, d + b)))
@@ -378,7 +348,7 @@ mod tests {
             magnitude: scaled.iter().fold(0.0_f64, |m, v| m.max(v.abs())) + shift.abs(),
         };
         let mut result = vec![0.0; n * n];
-        let sums = inverse.apply_with(&mut [], &residual, &mut result).unwrap();
+        let sums = inverse.apply_with(&residual, &mut result).unwrap();
         (result, sums)
     }
 

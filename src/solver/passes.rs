@@ -242,13 +242,14 @@ pub(super) struct Step {
     pub(super) contact: usize,
 }
 
-/// The step `p -= step t` on the working set, clamped at zero;
-/// `previous` gets the old pressures. With `DEFERRED` false, `u -= step K
-/// t` (`response` holds `K t`) and `correction` gets what the clamping
-/// added (to apply `K` to); with `DEFERRED` true, `u` and `response` are
-/// left alone and `correction` gets the whole change of the pressure (the
+/// The step `p -= step t` on the working set, clamped at zero. With
+/// `DEFERRED` false, `u -= step K t` (`response` holds `K t`), `correction`
+/// gets what the clamping added (to apply `K` to) and `previous` the old
+/// pressures; with `DEFERRED` true, `u`, `response` and `previous` are left
+/// alone and `correction` gets the whole change of the pressure (the
 /// caller applies `K` to it, or to `t`, once it knows whether the step
-/// clamped). Pressures, `previous` and the statistics only on `cells`,
+/// clamped; the old pressures are the new less it, [`Before::Changes`]).
+/// Pressures, `previous` and the statistics only on `cells`,
 /// which must hold the working set and every pressure; `correction` is 0
 /// outside them.
 #[allow(clippy::too_many_arguments)]
@@ -303,7 +304,9 @@ pub(super) fn step<const DEFERRED: bool>(
             .zip(prev);
         for ((((p, u), corr), prev), ((w, t), kt)) in outputs.zip(inputs) {
             let old = *p;
-            *prev = old;
+            if !DEFERRED {
+                *prev = old;
+            }
             let stepped = if *w { old - step * t } else { old };
             let new = stepped.max(0.0);
             *p = new;
@@ -367,66 +370,178 @@ pub(super) fn scale(values: &mut [f64], factor: f64) {
 /// ranks in one exchange.
 pub(super) type Rescaled = [f64; 4];
 
-/// `u = factor (u + add)` (`add` 0 if `None`: the response to a clamping
-/// correction not yet added) and `p *= factor`; returns `[sum |p -
-/// previous|, sum p, sum over p > 0 of profile + u, count of p > 0]` of the
-/// result. The pressures only on `cells`, which must hold every pressure.
-/// One pass instead of three (the correction's `axpy`, the scaling, and the
-/// next iteration's contact sum).
+/// The pressures before a step, as [`rescale`] reads them: kept
+/// (`previous` of a step that is not deferred), or as the changes that
+/// the new pressures less them are (`correction` of a deferred one).
+#[derive(Clone, Copy)]
+pub(super) enum Before<'a> {
+    Pressures(&'a [f64]),
+    Changes(&'a [f64]),
+}
+
+impl<'a> Before<'a> {
+    pub(super) fn cells(self, cells: Range<usize>) -> Before<'a> {
+        match self {
+            Before::Pressures(v) => Before::Pressures(&v[cells]),
+            Before::Changes(v) => Before::Changes(&v[cells]),
+        }
+    }
+}
+
+/// `u *= factor` and `p *= factor`; returns `[sum |p - before|, sum p,
+/// sum over p > 0 of profile + u, count of p > 0]` of the result. The
+/// pressures only on `cells`, which must hold every pressure. One pass
+/// instead of two (the scaling, and the next iteration's contact sum);
+/// where the step convolved anyway, [`rescale_row`] runs inside that
+/// convolution instead.
 pub(super) fn rescale(
     cells: Range<usize>,
     pressure: &mut [f64],
     displacement: &mut [f64],
-    add: Option<&[f64]>,
-    previous: &[f64],
+    before: Before<'_>,
     profile: &[f64],
     factor: f64,
 ) -> Rescaled {
     let (lo, hi) = (cells.start, cells.end);
     for outside in [0..lo, hi..displacement.len()] {
-        match add {
-            Some(add) => {
-                let add = &add[outside.clone()];
-                let pass = |(k, values): (usize, &mut [f64])| {
-                    let add = &add[k * CHUNK..k * CHUNK + values.len()];
-                    for (v, a) in values.iter_mut().zip(add) {
-                        *v = factor * (*v + a);
-                    }
-                };
-                chunks_mut!(displacement[outside])
-                    .enumerate()
-                    .for_each(pass);
-            }
-            None => scale(&mut displacement[outside], factor),
-        }
+        scale(&mut displacement[outside], factor);
     }
     // From here on, indices count from the first cell of `cells`.
-    let (pressure, previous) = (&mut pressure[cells.clone()], &previous[cells.clone()]);
-    let (profile, add) = (&profile[cells.clone()], add.map(|a| &a[cells.clone()]));
+    let (pressure, before) = (&mut pressure[cells.clone()], before.cells(cells.clone()));
+    let profile = &profile[cells.clone()];
     let displacement = &mut displacement[cells];
     let pass = |(k, (p, u)): (usize, (&mut [f64], &mut [f64]))| {
-        let mut sums = [0.0; 4];
         let cells = k * CHUNK..k * CHUNK + p.len();
-        let inputs = previous[cells.clone()].iter().zip(&profile[cells.clone()]);
-        let add = add.map(|a| &a[cells]);
-        for (i, ((p, u), (old, h))) in p.iter_mut().zip(u.iter_mut()).zip(inputs).enumerate() {
-            *p *= factor;
-            *u = factor * (*u + add.map_or(0.0, |a| a[i]));
-            sums[0] += (*p - old).abs();
-            sums[1] += *p;
-            // In the order of `contact_sum`; a select, not a branch.
-            let inside = *p > 0.0;
-            sums[2] = if inside { sums[2] + h + *u } else { sums[2] };
-            sums[3] += if inside { 1.0 } else { 0.0 };
-        }
-        sums
+        rescale_cells(
+            p,
+            u,
+            None,
+            0.0,
+            before.cells(cells.clone()),
+            &profile[cells],
+            factor,
+        )
     };
     let parts: Vec<Rescaled> = chunks_mut!(pressure)
         .zip(chunks_mut!(displacement))
         .enumerate()
         .map(pass)
         .collect();
+    add_rescaled(parts)
+}
+
+/// The [`Rescaled`] sums of parts, added in order.
+pub(super) fn add_rescaled(parts: Vec<Rescaled>) -> Rescaled {
     parts.into_iter().fold([0.0; 4], |a, b| {
         [a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]]
     })
+}
+
+/// `p *= factor`, `u = factor (u + add_factor add)` (`add` 0 if `None`)
+/// on a run of cells, with their [`Rescaled`] sums.
+fn rescale_cells(
+    pressure: &mut [f64],
+    displacement: &mut [f64],
+    add: Option<&[f64]>,
+    add_factor: f64,
+    before: Before<'_>,
+    profile: &[f64],
+    factor: f64,
+) -> Rescaled {
+    match before {
+        Before::Pressures(b) => rescale_with(
+            pressure,
+            displacement,
+            add,
+            add_factor,
+            profile,
+            factor,
+            |i, _| b[i],
+        ),
+        Before::Changes(b) => rescale_with(
+            pressure,
+            displacement,
+            add,
+            add_factor,
+            profile,
+            factor,
+            |i, p| p - b[i],
+        ),
+    }
+}
+
+/// [`rescale_cells`] with the old pressure of cell `i` `old(i, p)` from its
+/// new one before the scaling.
+fn rescale_with(
+    pressure: &mut [f64],
+    displacement: &mut [f64],
+    add: Option<&[f64]>,
+    add_factor: f64,
+    profile: &[f64],
+    factor: f64,
+    old: impl Fn(usize, f64) -> f64,
+) -> Rescaled {
+    let mut sums = [0.0; 4];
+    let cells = pressure
+        .iter_mut()
+        .zip(displacement.iter_mut())
+        .zip(profile);
+    for (i, ((p, u), h)) in cells.enumerate() {
+        let old = old(i, *p);
+        *p *= factor;
+        *u = factor * (*u + add.map_or(0.0, |a| add_factor * a[i]));
+        sums[0] += (*p - old).abs();
+        sums[1] += *p;
+        // In the order of `contact_sum`; a select, not a branch.
+        let inside = *p > 0.0;
+        sums[2] = if inside { sums[2] + h + *u } else { sums[2] };
+        sums[3] += if inside { 1.0 } else { 0.0 };
+    }
+    sums
+}
+
+/// One row's targets of a rescale inside a convolution: the displacement's
+/// row, and the pressure's on the rows that may carry pressure.
+pub(super) type RescaleRow<'a> = (&'a mut [f64], Option<&'a mut [f64]>);
+
+/// The [`RescaleRow`]s of a grid of `columns` columns whose pressures lie
+/// on the whole rows `cells`.
+pub(super) fn rescale_targets<'a>(
+    cells: Range<usize>,
+    columns: usize,
+    pressure: &'a mut [f64],
+    displacement: &'a mut [f64],
+) -> Vec<RescaleRow<'a>> {
+    let columns = columns.max(1);
+    let rows = cells.start / columns..cells.end.div_ceil(columns);
+    displacement
+        .chunks_exact_mut(columns)
+        .zip(pressure.chunks_exact_mut(columns))
+        .enumerate()
+        .map(|(i, (u, p))| (u, rows.contains(&i).then_some(p)))
+        .collect()
+}
+
+/// [`rescale`] of row `row` (`before` and `profile` its cells) inside
+/// the convolution whose response row is `response`: `u = factor (u +
+/// add_factor response)` and, on the pressure's rows, `p *= factor` with
+/// the [`Rescaled`] sums (zero on the other rows).
+pub(super) fn rescale_row(
+    row: RescaleRow<'_>,
+    response: &[f64],
+    add_factor: f64,
+    before: Before<'_>,
+    profile: &[f64],
+    factor: f64,
+) -> Rescaled {
+    let (u, p) = row;
+    match p {
+        Some(p) => rescale_cells(p, u, Some(response), add_factor, before, profile, factor),
+        None => {
+            for (u, v) in u.iter_mut().zip(response) {
+                *u = factor * (*u + add_factor * v);
+            }
+            [0.0; 4]
+        }
+    }
 }

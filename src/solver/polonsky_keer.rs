@@ -431,32 +431,43 @@ impl ContactSolver {
             stats = self.whole_step(stats);
             // Pressures are now zero off the working set.
             pressure_cells = working_cells.clone();
-            // Under force control the pressure is rescaled to the load
-            // below, in the same pass as the correction's response is added.
+            // Under force control the pressure is rescaled to the load:
+            // inside the step's convolution if it has one (its last pass
+            // adds the response), else in a pass below.
             let rescaled = force_control && area * stats.size > 0.0;
             let direct = self.operator.direct_sum_is_cheaper(stats.corrected);
             clamped = stats.corrected > 0 && !direct;
-            let correction_pending = self.respond_to_step(
+            let factor = match control {
+                Control::Force(w) if rescaled => Some(w / (area * stats.size)),
+                _ => None,
+            };
+            let fused = self.respond_to_step(
                 deferred,
                 stats.corrected,
                 direct,
                 step,
                 working_cells.clone(),
-                rescaled,
+                &mut pressure,
+                factor,
             )?;
             let ws = &mut self.workspace;
             if let Control::Force(w) = control {
-                let total = area * stats.size;
-                if rescaled {
-                    let mut sums = passes::rescale(
-                        working_cells.clone(),
-                        &mut pressure,
-                        &mut ws.displacement,
-                        correction_pending.then_some(&ws.response[..]),
-                        &ws.previous,
-                        &ws.profile,
-                        w / total,
-                    );
+                if let Some(factor) = factor {
+                    let mut sums = fused.unwrap_or_else(|| {
+                        passes::rescale(
+                            working_cells.clone(),
+                            &mut pressure,
+                            &mut ws.displacement,
+                            // A deferred step left the change in `gap`.
+                            if deferred {
+                                passes::Before::Changes(&ws.gap)
+                            } else {
+                                passes::Before::Pressures(&ws.previous)
+                            },
+                            &ws.profile,
+                            factor,
+                        )
+                    });
                     self.sum_over_ranks(&mut sums);
                     [stats.change, stats.size] = [sums[0], sums[1]];
                     contact_sums = Some((sums[2], sums[3]));

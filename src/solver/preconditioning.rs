@@ -42,13 +42,12 @@ impl Preconditioner {
     fn apply_in(
         &mut self,
         buffer: &mut ShareBuffer,
-        spare: &mut [f64],
         residual: &Residual<'_>,
         result: &mut [f64],
     ) -> Result<(f64, f64)> {
         match self {
-            Preconditioner::Single(p) => p.apply_in(buffer, spare, residual, result),
-            Preconditioner::Double(p) => p.apply_in(buffer, spare, residual, result),
+            Preconditioner::Single(p) => p.apply_in(buffer, residual, result),
+            Preconditioner::Double(p) => p.apply_in(buffer, residual, result),
         }
     }
 }
@@ -146,8 +145,7 @@ impl ContactSolver {
                 shift,
                 magnitude: gap_max + shift.abs(),
             };
-            // `previous` is written by the step after this, read only there.
-            inverse.apply_in(buffer, &mut ws.previous, &residual, &mut ws.response)
+            inverse.apply_in(buffer, &residual, &mut ws.response)
         })
     }
 }

@@ -14,7 +14,8 @@ use std::ops::Range;
 
 use crate::error::Result;
 
-use super::{passes, ContactSolver};
+use super::passes::{self, Before, Rescaled};
+use super::ContactSolver;
 
 impl ContactSolver {
     /// `t . K t` of the workspace's direction `t` (zero off the working
@@ -39,9 +40,10 @@ impl ContactSolver {
     /// summed directly than convolved): `gap` holds the whole change of the
     /// pressure if `deferred` (see [`passes::step`]), else the clamping's
     /// correction, `K t` being in `response` and already subtracted. Under
-    /// force control with a rescale to come (`rescaled`) a convolved
-    /// response is left in `response` for it instead: returns whether it
-    /// is pending there.
+    /// force control with a rescale by `rescale` to come, a convolution
+    /// does it in its last pass ([`passes::rescale_row`]) and its sums are
+    /// returned; `None`: the caller still rescales.
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn respond_to_step(
         &mut self,
         deferred: bool,
@@ -49,33 +51,70 @@ impl ContactSolver {
         direct: bool,
         step: f64,
         cells: Range<usize>,
-        rescaled: bool,
-    ) -> Result<bool> {
-        let ws = &mut self.workspace;
+        pressure: &mut [f64],
+        rescale: Option<f64>,
+    ) -> Result<Option<Rescaled>> {
         if deferred && corrected == 0 {
             // No clamping after all: the direction's response.
-            self.operator
-                .apply_add(&ws.direction, &mut ws.displacement, -step)?;
-            return Ok(false);
+            return self.respond(true, true, -step, cells, pressure, rescale);
         }
         if corrected == 0 {
-            return Ok(false);
+            return Ok(None);
         }
         if !deferred && direct {
             // A few clamped cells: their displacements by direct
             // summation, cheaper than a convolution.
             if let Some(k) = self.operator.influence() {
+                let ws = &mut self.workspace;
                 let loads = passes::nonzeros(&ws.gap[cells.clone()], cells.start);
                 k.add_loads(&loads, &mut ws.displacement);
-                return Ok(false);
+                return Ok(None);
             }
         }
-        if rescaled {
-            self.operator.apply(&ws.gap, &mut ws.response)?;
-            return Ok(true);
-        }
-        self.operator
-            .apply_add(&ws.gap, &mut ws.displacement, 1.0)?;
-        Ok(false)
+        self.respond(false, deferred, 1.0, cells, pressure, rescale)
+    }
+
+    /// `u += factor K x`, `x` the direction or else `gap`, rescaled by
+    /// `rescale` inside the convolution if given (its sums returned).
+    fn respond(
+        &mut self,
+        x_is_direction: bool,
+        deferred: bool,
+        factor: f64,
+        cells: Range<usize>,
+        pressure: &mut [f64],
+        rescale: Option<f64>,
+    ) -> Result<Option<Rescaled>> {
+        let columns = self.grid().columns();
+        let ws = &mut self.workspace;
+        let x = if x_is_direction {
+            &ws.direction
+        } else {
+            &ws.gap
+        };
+        let Some(scale) = rescale else {
+            self.operator.apply_add(x, &mut ws.displacement, factor)?;
+            return Ok(None);
+        };
+        // A deferred step left the change of the pressure in `gap`.
+        let before = if deferred {
+            Before::Changes(&ws.gap)
+        } else {
+            Before::Pressures(&ws.previous)
+        };
+        let profile = &ws.profile;
+        let targets = passes::rescale_targets(cells, columns, pressure, &mut ws.displacement);
+        let rows = self.operator.apply_into(x, targets, |i, row, response| {
+            let cells = i * columns..(i + 1) * columns;
+            passes::rescale_row(
+                row,
+                response,
+                factor,
+                before.cells(cells.clone()),
+                &profile[cells],
+                scale,
+            )
+        })?;
+        Ok(Some(passes::add_rescaled(rows)))
     }
 }

@@ -3,7 +3,8 @@
 //! buffer for `K x`: the constrained conjugate gradients' step on a
 //! clamping iteration (a step length from the direction's energy, one
 //! convolution of the whole change of the pressure) instead of two
-//! convolutions.
+//! convolutions; `K x` row by row into a pass of the caller's
+//! ([`ComplianceOperator::apply_into`]).
 
 use crate::error::Result;
 
@@ -32,6 +33,28 @@ impl ComplianceOperator {
         self.check_lengths(&[("pressure", x.len()), ("displacement", output.len())])?;
         self.convolution
             .apply_combined(x, output, &self.spectrum, |u, k| u + factor * k)
+    }
+
+    /// `K x` row by row: this rank's data row `i` of the response goes to
+    /// `sink(i, targets[i], row)`, and the sinks' results come back in row
+    /// order (a pass over the response, such as the constrained conjugate
+    /// gradients' rescale under force control, runs inside the
+    /// transform's last pass instead of over a buffer).
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`](crate::Error::ShapeMismatch) for a slice of
+    /// another length than this rank's cells;
+    /// [`Error::Internal`](crate::Error::Internal) for another number of
+    /// targets than this rank's rows.
+    pub(crate) fn apply_into<O: Send, S: Send>(
+        &mut self,
+        x: &[f64],
+        targets: Vec<O>,
+        sink: impl Fn(usize, O, &[f64]) -> S + Sync,
+    ) -> Result<Vec<S>> {
+        self.check_lengths(&[("pressure", x.len())])?;
+        self.convolution
+            .apply_input_into(x, &self.spectrum, targets, sink)
     }
 }
 
