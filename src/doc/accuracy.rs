@@ -191,7 +191,13 @@
 //! [`InfluenceCoefficients::add_loads`](crate::kernel::InfluenceCoefficients::add_loads)),
 //! plus a periodic FFT round trip on the contact's box (in single precision:
 //! the preconditioner only shapes the search direction) and a few passes
-//! over the working set's rows. One thread, an iteration costs 1.11 (N = 512) and
+//! over the working set's rows. After a step whose clamping needed a
+//! convolution (most iterations of a rough contact) the next takes its
+//! length from the direction's energy `t . K t`, summed over the spectrum
+//! of a forward transform in single precision (a step length, whose
+//! rounding of about `1e-7` the displacement's update in double precision
+//! does not carry), and moves the displacement by one convolution of the
+//! whole change of the pressure. One thread, an iteration costs 1.11 (N = 512) and
 //! 1.04 (N = 1024) plain padded round trips from the multi-resolution
 //! start, 1.12 and 1.02 warm-started, and 1.50 and 1.52 without the
 //! multi-resolution start, when the contact set changes in most iterations

@@ -40,7 +40,7 @@ use energy::{line_energy, Stage};
 use exchange::Split;
 pub(super) use multiplier::multiplier;
 pub(crate) use multiplier::wavenumber;
-pub(crate) use precision::Precision;
+pub(crate) use precision::{power_of_two_above, Precision};
 use tiling::{tiles, tiles_mut, TILE_PAD};
 
 /// Bytes of the column lines a thread transforms at once (a block fits in
@@ -65,8 +65,9 @@ pub(super) struct Convolution<T: Precision = f64> {
     column_forward: Arc<dyn Fft<T>>,
     column_inverse: Arc<dyn Fft<T>>,
     /// Distributed only: half-spectra of this rank's data rows, `local x
-    /// half`, row-major (serial runs cut them into `tiles` directly).
-    row_spectra: Vec<Complex<T>>,
+    /// half`, row-major (serial runs cut them into `tiles` directly); kept
+    /// as `Complex<f64>` values whatever `T`, as `tiles`.
+    row_spectra: Vec<Complex<f64>>,
     /// The half-spectra of the data rows (serial) or this rank's filtered
     /// columns of every row (distributed): per block of `block` columns a
     /// row-major tile of `rows x block`; kept as `Complex<f64>` values
@@ -83,6 +84,15 @@ pub(super) struct Convolution<T: Precision = f64> {
     blocks_per_task: usize,
     /// The split across the ranks of a distributed run, `None` when serial.
     split: Option<Split>,
+}
+
+/// A convolution's large buffers, lent between convolutions
+/// ([`Convolution::take_buffers`]).
+pub(super) struct Buffers {
+    tiles: Vec<Complex<f64>>,
+    row_spectra: Vec<Complex<f64>>,
+    send: Vec<Complex<f64>>,
+    receive: Vec<Complex<f64>>,
 }
 
 /// One thread's scratch.
@@ -149,9 +159,15 @@ impl<T: Precision> Convolution<T> {
     /// on an FFT grid of `size`, besides the multipliers.
     pub(super) fn memory(rows: usize, size: (usize, usize)) -> usize {
         let half = size.1 / 2 + 1;
+        size_of::<Complex<T>>() * rows * half + Self::scratch_memory(size)
+    }
+
+    /// Bytes of the per-thread scratch alone (a convolution that works in
+    /// another's buffers, [`Convolution::take_buffers`]).
+    pub(super) fn scratch_memory(size: (usize, usize)) -> usize {
         let tasks = task_count(size.0 * size.1);
         let (real, complex) = (size_of::<T>(), size_of::<Complex<T>>());
-        complex * rows * half + tasks * (real * size.1 + BLOCK_BYTES + complex * size.0)
+        tasks * (real * size.1 + BLOCK_BYTES + complex * size.0)
     }
 
     /// Plans and buffers for `rows x columns` data on an FFT grid of `size`
@@ -267,7 +283,39 @@ impl<T: Precision> Convolution<T> {
             self.tiles = Vec::new();
             self.tiles = zeroed(stored)?;
         }
-        Ok(())
+        self.ensure_split_buffers()
+    }
+
+    /// Takes every large buffer out (the tiles, and when distributed the
+    /// rows' half-spectra and the exchanges' buffers), to lend them to
+    /// another convolution of the same split that is not applied at the
+    /// same time ([`Convolution::give_buffers`]).
+    pub(super) fn take_buffers(&mut self) -> Buffers {
+        let (send, receive) = match self.split.as_mut() {
+            Some(split) => (
+                std::mem::take(&mut split.send),
+                std::mem::take(&mut split.receive),
+            ),
+            None => (Vec::new(), Vec::new()),
+        };
+        Buffers {
+            tiles: self.take_tiles(),
+            row_spectra: std::mem::take(&mut self.row_spectra),
+            send,
+            receive,
+        }
+    }
+
+    /// Gives this convolution the buffers taken from another
+    /// ([`Convolution::take_buffers`]); any too small for it is allocated
+    /// again at the next application.
+    pub(super) fn give_buffers(&mut self, buffers: Buffers) {
+        self.give_tiles(buffers.tiles);
+        self.row_spectra = buffers.row_spectra;
+        if let Some(split) = self.split.as_mut() {
+            split.send = buffers.send;
+            split.receive = buffers.receive;
+        }
     }
 
     /// As [`Convolution::apply`], the input's data row `i` (of this rank)
@@ -334,7 +382,7 @@ impl<T: Precision> Convolution<T> {
             .map(|i| i..(i + per_task).min(local));
         if self.split.is_some() {
             let tasks: Vec<_> = bands
-                .zip(self.row_spectra[..local * half].chunks_mut(per_task * half))
+                .zip(T::view_mut(&mut self.row_spectra)[..local * half].chunks_mut(per_task * half))
                 .zip(self.tasks.iter_mut())
                 .collect();
             return run_tasks(tasks, |((band, spectra), scratch)| {
@@ -381,7 +429,11 @@ impl<T: Precision> Convolution<T> {
     /// the spectrum of `multiplier |X|^2` for [`Stage::Energy`] (0
     /// otherwise), added block by block in order whatever the number of
     /// threads.
-    fn filter_columns(&mut self, multiplier: &[T], stage: Stage) -> Result<f64> {
+    fn filter_columns<M: Copy + Into<f64> + Sync>(
+        &mut self,
+        multiplier: &[M],
+        stage: Stage,
+    ) -> Result<f64> {
         let (rows, n0) = (self.rows, self.size.0);
         let even = self.size.1.is_multiple_of(2);
         let half = self.size.1 / 2 + 1;
@@ -454,11 +506,12 @@ impl<T: Precision> Convolution<T> {
                         *energy += line_energy(low, high, k, if single { 1.0 } else { 2.0 });
                         continue;
                     }
+                    // (`M` is `T` here: the conversions are exact.)
                     for (c, k) in low.iter_mut().zip(k) {
-                        *c = *c * *k;
+                        *c = *c * T::narrow((*k).into());
                     }
                     for (c, k) in high.iter_mut().zip(high_k) {
-                        *c = *c * *k;
+                        *c = *c * T::narrow((*k).into());
                     }
                 }
                 if stage == Stage::Energy {

@@ -21,7 +21,7 @@
 use crate::error::Result;
 use crate::slab::{agree, even_starts, lengths, Slab};
 
-use super::convolution::{multiplier, wavenumber, Convolution, Precision};
+use super::convolution::{multiplier, power_of_two_above, wavenumber, Convolution, Precision};
 use super::fourier::FourierCompliance;
 use super::operator::{cell_filter, ShareBuffer};
 
@@ -39,18 +39,6 @@ pub(crate) struct Residual<'a> {
     pub(crate) values: &'a [f64],
     pub(crate) shift: f64,
     pub(crate) magnitude: f64,
-}
-
-/// The power of two nearest above `magnitude` (1 for zero or a value that
-/// is not finite), its exponent kept where the power and its inverse are
-/// finite: a scale that moves values into single precision's range without
-/// rounding them.
-fn power_of_two_above(magnitude: f64) -> f64 {
-    if magnitude > 0.0 && magnitude.is_finite() {
-        2.0_f64.powi(magnitude.log2().ceil().clamp(-1000.0, 1000.0) as i32)
-    } else {
-        1.0
-    }
 }
 
 /// The approximate inverse on a box of a fixed size (plans, multiplier and

@@ -71,6 +71,9 @@ pub struct ComplianceOperator {
     /// `E*` of the surface material, for the approximate inverse.
     surface_modulus: f64,
     convolution: Convolution,
+    /// The same transform in single precision, for the energy
+    /// ([`ComplianceOperator::energy_single`]; built on first use).
+    single: Option<Convolution<f32>>,
     /// The split across the ranks of a distributed run, `None` when serial.
     slab: Option<Slab>,
 }
@@ -95,12 +98,15 @@ pub(crate) struct ShareBuffer(pub(super) Vec<num_complex::Complex<f64>>);
 /// single precision for contact solves, in double in the cohesive zone's
 /// rounds, counted at the larger), the influence coefficients (while the
 /// spectrum is built; kept up to [`KEEP_INFLUENCE_CELLS`]), a few FFT lines
-/// per thread, and ten per-cell solver vectors.
+/// per thread (and as many for the energy's transform in single
+/// precision, which works in the operator's buffers), and ten per-cell
+/// solver vectors.
 pub fn memory_estimate(grid: &Grid, boundary: Boundary) -> usize {
     let size = fft_size(grid, boundary);
     let half = size.1 / 2 + 1;
     let cells = grid.len();
     Convolution::<f64>::memory(grid.rows(), size)
+        + Convolution::<f32>::scratch_memory(size)
         + 2 * 8 * (size.0 / 2 + 1) * half
         + 8 * cells
         + 10 * 8 * cells
@@ -351,6 +357,7 @@ impl ComplianceOperator {
             inverse_spectrum: Vec::new(),
             surface_modulus: substrate.surface_material().contact_modulus(),
             convolution,
+            single: None,
             slab: slab.cloned(),
         };
         operator.spectrum = match boundary {

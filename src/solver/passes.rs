@@ -190,9 +190,10 @@ pub(super) fn dot(a: &[f64], b: &[f64]) -> f64 {
 }
 
 /// What [`update_direction`] summed: `(sum t, sum t gap)` of the new
-/// direction `t` (the gradient's part along it), and the same of the old
-/// direction on the working set (whether the conjugation descends).
-pub(super) type DirectionSums = [f64; 4];
+/// direction `t` (the gradient's part along it), the same of the old
+/// direction on the working set (whether the conjugation descends), and
+/// the largest `|t|` (the scale of its energy in single precision).
+pub(super) type DirectionSums = [f64; 5];
 
 /// `direction = z - shift + beta direction` on the working set, 0
 /// elsewhere; returns the [`DirectionSums`] of the new and the old
@@ -211,7 +212,7 @@ pub(super) fn update_direction(
             .iter()
             .zip(&z[cells.clone()])
             .zip(&gap[cells]);
-        let mut sums = [0.0; 4];
+        let mut sums = [0.0; 5];
         for (t, ((w, z), g)) in direction.iter_mut().zip(inputs) {
             // Selects, not branches: rough contacts are patchy.
             let old = if *w { *t } else { 0.0 };
@@ -220,12 +221,19 @@ pub(super) fn update_direction(
             *t = if *w { z - shift + beta * *t } else { 0.0 };
             sums[0] += *t;
             sums[1] += *t * g;
+            sums[4] = sums[4].max(t.abs());
         }
         sums
     };
     let parts: Vec<DirectionSums> = chunks_mut!(direction).enumerate().map(pass).collect();
-    parts.into_iter().fold([0.0; 4], |a, b| {
-        [a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]]
+    parts.into_iter().fold([0.0; 5], |a, b| {
+        [
+            a[0] + b[0],
+            a[1] + b[1],
+            a[2] + b[2],
+            a[3] + b[3],
+            a[4].max(b[4]),
+        ]
     })
 }
 

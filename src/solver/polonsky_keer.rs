@@ -379,22 +379,28 @@ impl ContactSolver {
                     &mut ws.direction[cells.clone()],
                 )
             };
-            let [mut t_sum, mut gap_dot, old_sum, old_dot] = update(self, beta);
+            let [mut t_sum, mut gap_dot, old_sum, old_dot, mut t_max] = update(self, beta);
             if set.overlap && beta > 0.0 {
                 let mut old = [old_sum, old_dot];
                 self.sum_over_ranks(&mut old);
                 if rz + beta * (old[1] - shift * old[0]) <= 0.0 {
-                    [t_sum, gap_dot, _, _] = update(self, 0.0);
+                    [t_sum, gap_dot, _, _, t_max] = update(self, 0.0);
                 }
             }
             direction_cells = Some(working_cells.clone());
             // After a step whose clamping needed a convolution, the next
             // likely clamps too: the energy, not `K t`.
             let deferred = clamped;
-            let energy = self.direction_energy(deferred, working_cells.clone())?;
+            let (energy, single) = self.direction_energy(deferred, working_cells.clone(), t_max)?;
             let mut dots = [gap_dot, energy, t_sum];
             self.sum_over_ranks(&mut dots);
-            let [gap_dot, denominator, t_sum] = dots;
+            let [gap_dot, mut denominator, t_sum] = dots;
+            if single && !(denominator.is_finite() && denominator > 0.0) {
+                // Out of single precision's reach after all: in double.
+                let mut energy = [self.operator.energy(&self.workspace.direction)?];
+                self.sum_over_ranks(&mut energy);
+                denominator = energy[0];
+            }
             let numerator = gap_dot - shift * t_sum;
             let ws = &mut self.workspace;
             let step = if denominator > 0.0 {

@@ -7,8 +7,12 @@
 //! transform alone (Parseval's theorem, half a round trip) and its
 //! displacement from one convolution of the whole change of the pressure,
 //! instead of `K t` and the clamping correction's response apart (two
-//! round trips). Measured in `BENCHMARKS.md` ("Rough contacts beside
-//! tamaas").
+//! round trips). That energy's transform runs in single precision (half
+//! the bytes; a relative rounding of about `1e-7` in the step length,
+//! while the displacement moves by the double-precision response to the
+//! step actually taken, so that `u = K p` holds to `f64`'s rounding).
+//! Measured in `BENCHMARKS.md` ("Rough contacts beside tamaas", "Speed:
+//! rough contacts on large grids").
 
 use std::ops::Range;
 
@@ -19,19 +23,35 @@ use super::ContactSolver;
 
 impl ContactSolver {
     /// `t . K t` of the workspace's direction `t` (zero off the working
-    /// set, whose rows are `cells`), this rank's share. `deferred`: from
-    /// the spectrum alone; else through `K t`, left in `response` for
+    /// set, whose rows are `cells`; `t_max` its largest absolute value on
+    /// this rank), this rank's share, and whether it was summed in single
+    /// precision (the caller checks that the total is finite and
+    /// positive). `deferred`: from the spectrum alone, in single precision
+    /// (a step length; the displacement's move stays in double) except in
+    /// the cohesive zone's rounds (whose fixed point follows the inner
+    /// solves' last digits); else through `K t`, left in `response` for
     /// [`ContactSolver::respond_to_step`].
-    pub(super) fn direction_energy(&mut self, deferred: bool, cells: Range<usize>) -> Result<f64> {
+    pub(super) fn direction_energy(
+        &mut self,
+        deferred: bool,
+        cells: Range<usize>,
+        t_max: f64,
+    ) -> Result<(f64, bool)> {
+        if deferred && !self.double_preconditioner {
+            // A scale the same on every rank: the sum of the ranks' largest.
+            let mut magnitude = [t_max];
+            self.sum_over_ranks(&mut magnitude);
+            let ws = &self.workspace;
+            let energy = self.operator.energy_single(&ws.direction, magnitude[0])?;
+            return Ok((energy, true));
+        }
         let ws = &mut self.workspace;
         if deferred {
-            return self.operator.energy(&ws.direction);
+            return Ok((self.operator.energy(&ws.direction)?, false));
         }
         self.operator.apply(&ws.direction, &mut ws.response)?;
-        Ok(passes::dot(
-            &ws.response[cells.clone()],
-            &ws.direction[cells],
-        ))
+        let energy = passes::dot(&ws.response[cells.clone()], &ws.direction[cells]);
+        Ok((energy, false))
     }
 
     /// Moves the displacement by the response to the step just taken

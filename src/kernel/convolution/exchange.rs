@@ -85,8 +85,22 @@ impl<T: Precision> Convolution<T> {
                 detail: format!("row counts {row_counts:?} do not split {} rows", self.rows),
             });
         }
+        split.row_counts = row_counts;
+        self.ensure_split_buffers()?;
+        let local = self.local_rows();
+        self.rows_per_task = local.div_ceil(self.tasks.len()).max(1);
+        Ok(())
+    }
+
+    /// Distributed: grows the rows' half-spectra and the exchanges' buffers
+    /// to what the row counts need (they may have been lent away:
+    /// [`Convolution::take_buffers`]).
+    pub(super) fn ensure_split_buffers(&mut self) -> Result<()> {
+        let Some(split) = self.split.as_mut() else {
+            return Ok(());
+        };
         let half = self.size.1 / 2 + 1;
-        let local = row_counts[split.rank()];
+        let local = split.row_counts[split.rank()];
         let width = split.width(split.rank());
         let exchanged = (local * half).max(self.rows * width);
         // MPI counts are 32-bit.
@@ -97,18 +111,16 @@ impl<T: Precision> Convolution<T> {
                 expected: "below 2^31 (MPI counts): use more ranks",
             });
         }
-        fn grow<C: Clone + Default>(buffer: &mut Vec<C>, len: usize) -> Result<()> {
+        fn grow(buffer: &mut Vec<Complex<f64>>, len: usize) -> Result<()> {
             if buffer.len() < len {
+                *buffer = Vec::new();
                 *buffer = zeroed(len)?;
             }
             Ok(())
         }
-        grow(&mut self.row_spectra, local * half)?;
+        grow(&mut self.row_spectra, T::stored(local * half))?;
         grow(&mut split.send, exchanged)?;
-        grow(&mut split.receive, exchanged)?;
-        self.rows_per_task = local.div_ceil(self.tasks.len()).max(1);
-        split.row_counts = row_counts;
-        Ok(())
+        grow(&mut split.receive, exchanged)
     }
 
     /// Distributed: sends each rank the spectrum columns it filters of this
@@ -124,7 +136,7 @@ impl<T: Precision> Convolution<T> {
         let mut at = 0;
         for k in 0..ranks {
             let columns = split.columns_of(k);
-            for row in self.row_spectra[..local * half].chunks_exact(half) {
+            for row in T::view(&self.row_spectra)[..local * half].chunks_exact(half) {
                 let values = &row[columns.clone()];
                 for (sent, value) in split.send[at..at + values.len()].iter_mut().zip(values) {
                     *sent = Complex::new(value.re.into(), value.im.into());

@@ -11,6 +11,18 @@
 use num_complex::Complex;
 use realfft::FftNum;
 
+/// The power of two nearest above `magnitude` (1 for zero or a value that
+/// is not finite), its exponent kept where the power and its inverse are
+/// finite: a scale that moves values into single precision's range without
+/// rounding them.
+pub(crate) fn power_of_two_above(magnitude: f64) -> f64 {
+    if magnitude > 0.0 && magnitude.is_finite() {
+        2.0_f64.powi(magnitude.log2().ceil().clamp(-1000.0, 1000.0) as i32)
+    } else {
+        1.0
+    }
+}
+
 /// A floating-point type of a [`Convolution`](super::Convolution).
 pub(crate) trait Precision: FftNum + Default + Into<f64> {
     /// The value of this type nearest to `x`.
