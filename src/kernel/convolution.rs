@@ -145,6 +145,11 @@ fn narrow<T: Precision>(value: Complex<f64>) -> Complex<T> {
     Complex::new(T::narrow(value.re), T::narrow(value.im))
 }
 
+/// The `f64` value of a complex value of type `T` (exact).
+fn widen<T: Precision>(value: Complex<T>) -> Complex<f64> {
+    Complex::new(value.re.into(), value.im.into())
+}
+
 /// Buffer sizes are fixed at construction, so an FFT error is a bug of this
 /// module; it is reported rather than unwrapped.
 fn fft_error(error: realfft::FftError) -> Error {

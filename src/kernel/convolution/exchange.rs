@@ -5,7 +5,7 @@
 
 use num_complex::Complex;
 
-use super::{zeroed, Convolution, Precision};
+use super::{widen, zeroed, Convolution, Precision};
 use crate::error::{Error, Result};
 use crate::slab::{even_starts, Slab};
 
@@ -139,7 +139,7 @@ impl<T: Precision> Convolution<T> {
             for row in T::view(&self.row_spectra)[..local * half].chunks_exact(half) {
                 let values = &row[columns.clone()];
                 for (sent, value) in split.send[at..at + values.len()].iter_mut().zip(values) {
-                    *sent = Complex::new(value.re.into(), value.im.into());
+                    *sent = widen(*value);
                 }
                 at += values.len();
             }
@@ -174,7 +174,7 @@ impl<T: Precision> Convolution<T> {
                 let w = tile.len() / rows;
                 let values = &tile[i * w..(i + 1) * w];
                 for (sent, value) in split.send[at..at + w].iter_mut().zip(values) {
-                    *sent = Complex::new(value.re.into(), value.im.into());
+                    *sent = widen(*value);
                 }
                 at += w;
             }
