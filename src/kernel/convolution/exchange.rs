@@ -57,6 +57,22 @@ impl<T: Precision> Convolution<T> {
         slab: &Slab,
         row_counts: Vec<usize>,
     ) -> Result<Self> {
+        let mut convolution = Self::distributed_unallocated(rows, columns, size, slab, row_counts)?;
+        convolution.ensure_split_buffers()?;
+        Ok(convolution)
+    }
+
+    /// As [`Convolution::distributed`], without the rows' half-spectra and
+    /// the exchanges' buffers: for a convolution that works in another's,
+    /// lent to it ([`Convolution::give_buffers`]; any missing are allocated
+    /// at the first application).
+    pub(in crate::kernel) fn distributed_unallocated(
+        rows: usize,
+        columns: usize,
+        size: (usize, usize),
+        slab: &Slab,
+        row_counts: Vec<usize>,
+    ) -> Result<Self> {
         let half = size.1 / 2 + 1;
         let split = Split {
             slab: slab.clone(),
@@ -66,7 +82,7 @@ impl<T: Precision> Convolution<T> {
             receive: Vec::new(),
         };
         let mut convolution = Self::build(rows, columns, size, Some(split))?;
-        convolution.set_row_counts(row_counts)?;
+        convolution.store_row_counts(row_counts)?;
         Ok(convolution)
     }
 
@@ -74,6 +90,12 @@ impl<T: Precision> Convolution<T> {
     /// only; a box placed anew on the grid changes them), growing the
     /// buffers if needed.
     pub(in crate::kernel) fn set_row_counts(&mut self, row_counts: Vec<usize>) -> Result<()> {
+        self.store_row_counts(row_counts)?;
+        self.ensure_split_buffers()
+    }
+
+    /// [`Convolution::set_row_counts`] without growing the buffers.
+    fn store_row_counts(&mut self, row_counts: Vec<usize>) -> Result<()> {
         let Some(split) = self.split.as_mut() else {
             return Ok(());
         };
@@ -86,7 +108,6 @@ impl<T: Precision> Convolution<T> {
             });
         }
         split.row_counts = row_counts;
-        self.ensure_split_buffers()?;
         let local = self.local_rows();
         self.rows_per_task = local.div_ceil(self.tasks.len()).max(1);
         Ok(())

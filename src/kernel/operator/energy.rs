@@ -44,9 +44,14 @@ impl ComplianceOperator {
                 let size = self.convolution.size();
                 let built = match self.slab.as_ref() {
                     None => Convolution::new(rows, columns, size),
-                    Some(slab) => {
-                        Convolution::distributed(rows, columns, size, slab, slab.counts())
-                    }
+                    // It works in the operator's buffers: none of its own.
+                    Some(slab) => Convolution::distributed_unallocated(
+                        rows,
+                        columns,
+                        size,
+                        slab,
+                        slab.counts(),
+                    ),
                 };
                 // Distributed, a rank that could not build it stops every rank.
                 crate::slab::agree(self.slab.as_ref(), built)?
