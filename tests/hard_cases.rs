@@ -235,6 +235,45 @@ fn extremely_large_depth() {
     assert!(deep.force.is_finite() && deep.force > 0.0);
 }
 
+/// A warm start far above the new depth's scale: a flat punch on a stack
+/// (stiff layers over a soft one on a stiff base, found by a random scene
+/// run through the tool) unloaded from `5.4e-6` m to `1e-25`, `1e-21` and
+/// `1e-15` m. A punch's face is its contact at every depth, so the force
+/// is linear in the depth: each force over its depth equals the first's
+/// to the solver's tolerance. Before the warm start was scaled to the new
+/// depth (`ContactSolver::solve_depth`) the solve at `1e-21` m ran out of
+/// iterations and the one at `1e-25` m returned a force 1.6e4 times too
+/// large; on grids of 96^2 and 200^2 (two and three levels of the
+/// multi-resolution start) the one at `1e-25` ran out of iterations.
+#[test]
+fn warm_starts_far_above_the_new_depth() {
+    let layers = [
+        (Material::new(3.470653e7, 0.0).unwrap(), 2.822206e-3),
+        (Material::new(2.942941e8, 0.45).unwrap(), 2.247601e-3),
+        (Material::new(1.107751e5, 0.49).unwrap(), 1.133304e-2),
+    ];
+    let base = Base::Elastic(Material::new(6.223130e10, 0.45).unwrap());
+    let body = Substrate::stack(&layers, base).unwrap();
+    let punch = FlatPunch::new(2.089983e-2).unwrap();
+    for cells in [27, 96, 200] {
+        let grid = Grid::new(cells, cells, 4.78467e-2 / cells as f64).unwrap();
+        let mut solver = isolated_solver(&body, &grid);
+        let from = 5.35796e-6;
+        let (first, warm) = solver.solve_depth(&punch, from, None, &mut ()).unwrap();
+        let stiffness = first.force / from;
+        for depth in [1e-25, 1e-21, 1e-15] {
+            let (s, _) = solver
+                .solve_depth(&punch, depth, Some(&warm), &mut ())
+                .unwrap();
+            let error = s.force / depth / stiffness - 1.0;
+            assert!(
+                error.abs() < 1e-6,
+                "{cells} cells, depth {depth:e}: {error:e}"
+            );
+        }
+    }
+}
+
 /// Work of adhesion 0 and 1e-12 give the non-adhesive answer; a huge one
 /// holds the contact past the protocol's limit, reported as a typed error.
 #[test]

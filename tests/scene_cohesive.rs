@@ -286,16 +286,20 @@ fn a_force_cycle_through_the_cohesive_zone_follows_jkr_and_jumps_off_at_the_pull
 }
 
 /// A scene's unloading step that the cohesive zone's fixed point cannot
-/// reach (the cycle loaded and unloaded in whole steps of its peak depth,
-/// the inner solves held to ten iterations: the first unloading step, from
-/// the peak back to the depth of first touch, returned `NoConvergence`)
-/// is taken in substeps: the same pull-off as the unrestricted scene's.
+/// reach (the cycle loaded and unloaded in one whole step of twice its
+/// peak depth, the inner solves held to ten iterations: the first
+/// unloading step, from the peak back to the depth of first touch,
+/// returns `NoConvergence`) is taken in substeps: the same pull-off as the
+/// unrestricted scene's. (At the peak of 1.6 pull-off radii the same
+/// step came within ten iterations once a warm start far from the new
+/// depth's scale was scaled to it, 2026-11-29.)
 #[test]
 fn a_scene_step_out_of_reach_is_taken_in_substeps() {
     let pull_off = |max_iterations: usize| {
         let mut scene = tilted_cycle(24);
-        if let Protocol::Cycle { steps, .. } = &mut scene.protocol {
+        if let Protocol::Cycle { steps, max_depth } = &mut scene.protocol {
             *steps = 1;
+            *max_depth *= 2.0;
         }
         scene.solver.adhesion_method = AdhesionMethod::CohesiveZone;
         scene.solver.max_iterations = max_iterations;
@@ -305,9 +309,9 @@ fn a_scene_step_out_of_reach_is_taken_in_substeps() {
     };
     let free = pull_off(1000);
     let held = pull_off(10);
-    // The substeps' solves are counted (measured: 671 iterations against
-    // 641); equal counts would mean no step needed them.
+    // The substeps' solves are counted (measured: 752 iterations against
+    // 653); equal counts would mean no step needed them.
     assert!(held.1 > free.1, "{held:?} {free:?}");
-    // Measured 8e-16 apart: the same equilibria, to the search's rounding.
+    // Measured 5e-14 apart: the same equilibria, to the search's rounding.
     assert!((held.0 / free.0 - 1.0).abs() < 1e-9, "{held:?} {free:?}");
 }

@@ -92,10 +92,19 @@
 //!   `cargo test` runs 96 cases; `LAYERED_CONTACT_FUZZ_CASES=100000 cargo
 //!   test --release --test fuzz_scenes` is the large run.
 //!   `LAYERED_CONTACT_CASE_SECONDS` sets the time bound of one case
-//!   (default 60 s).
+//!   (default 60 s), `LAYERED_CONTACT_FUZZ_SEED` the seed (default 12) so
+//!   that a large run can draw other cases.
 //! * `tests/fuzz_npy.rs`: `.npy` height maps built by hand (C and Fortran
 //!   order, other dtypes and byte orders, other ranks) and mutated (header
 //!   shapes replaced by extreme or lying values, bytes flipped, inserted or
 //!   cut off): a height map of finite heights or a typed error, each case
 //!   time-bounded. 96 cases in `cargo test`; the same
 //!   `LAYERED_CONTACT_FUZZ_CASES` sets a large run.
+//! * `tests/reference_sweep.rs`: random axisymmetric scenes (an untilted
+//!   punch, paraboloid or sphere, with or without adhesion, on every kind
+//!   of body, moduli and thicknesses over decades, Poisson's ratios up to
+//!   0.5) driven through a depth cycle at 16 cells across and compared with
+//!   their exact values ([`Scene::reference`](crate::scene::Scene::reference)):
+//!   within a tolerance of the discretisation, or a typed error that names
+//!   a limit of the method (a failed iteration fails the test). 12 cases in
+//!   `cargo test`; `LAYERED_CONTACT_REFERENCE_CASES=2000` a large run.

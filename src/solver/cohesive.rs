@@ -165,8 +165,9 @@ impl ContactSolver {
             zone_cells: zone.cells_on(spacing, self.substrate.top_thickness()),
             ..*zone
         };
-        let advancing = Law::new(zone, zone.advancing, spacing, modulus);
-        let receding = Law::new(zone, zone.receding, spacing, modulus);
+        let grid_area = self.grid().len() as f64 * area;
+        let advancing = Law::new(zone, zone.advancing, spacing, modulus, grid_area)?;
+        let receding = Law::new(zone, zone.receding, spacing, modulus, grid_area)?;
         let n = self.local_cells();
         let base = self.workspace.profile.clone();
         let mut bonded = match warm {
@@ -448,6 +449,36 @@ pub(super) mod tests {
             .solve_depth_cohesive(&sphere, jkr.depth(1.5 * a), &zone, None, &mut ())
             .unwrap();
         (jkr, solver, sphere, zone, warm)
+    }
+
+    /// A work of adhesion whose law overflows on the grid (`1e308` J/m^2:
+    /// its range is infinite and its peak NaN) is refused by name, not
+    /// solved into NaN tensions (a panic in the stepping's clamp, found
+    /// by `tests/fuzz_scenes.rs` with `LAYERED_CONTACT_FUZZ_SEED=2026`);
+    /// `1e30` builds a finite law on the same grid.
+    #[test]
+    fn a_work_of_adhesion_whose_law_overflows_is_refused() {
+        let rubber = Material::new(1e6, 0.48).unwrap();
+        let grid = Grid::square_of_side(16, 1e-3).unwrap();
+        let body = Substrate::half_space(rubber);
+        let params = crate::solver::SolverParams::default();
+        let mut solver = ContactSolver::new(&body, &grid, Boundary::Isolated, params).unwrap();
+        let sphere = Sphere::new(1e-2).unwrap();
+        let zone = CohesiveZone::new(1e308, 1e308).unwrap();
+        let error = solver
+            .solve_depth_cohesive(&sphere, 1e-6, &zone, None, &mut ())
+            .unwrap_err();
+        assert!(
+            matches!(error, Error::InvalidParameter { name: "work of adhesion", value, .. } if value == 1e308),
+            "{error}"
+        );
+        let area = grid.len() as f64 * grid.cell_area();
+        let finite = CohesiveZone::new(1e30, 1e30).unwrap();
+        let law = Law::new(&finite, 1e30, grid.spacing(), 1e6, area).unwrap();
+        // peak = 2 dgamma / rho, rho = 2 sqrt(dgamma k Delta / E*).
+        let range = 2.0 * (1e30 * 4.0 * grid.spacing() / 1e6).sqrt();
+        assert!((law.range / range - 1.0).abs() < 1e-15);
+        assert!((law.peak * range / 2e30 - 1.0).abs() < 1e-15);
     }
 
     /// The JKR sphere at its pull-off contact radius, loaded and unloaded

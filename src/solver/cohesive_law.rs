@@ -3,12 +3,10 @@
 //! ([`CohesiveZone`]), and the defaults measured for it. The fixed point
 //! that solves with it is in [`cohesive`](super::cohesive).
 
-use crate::error::Result;
+use crate::error::{Error, Result};
 
 #[cfg(doc)]
 use super::ContactSolver;
-#[cfg(doc)]
-use crate::error::Error;
 
 /// The default width of the cohesive zone, in cells.
 ///
@@ -270,10 +268,33 @@ pub(super) struct Law {
 }
 
 impl Law {
-    pub(super) fn new(zone: &CohesiveZone, work: f64, spacing: f64, modulus: f64) -> Self {
+    /// The law of `work` (J/m^2) on cells of `spacing` (m) of a surface of
+    /// contact modulus `modulus` (Pa), on a grid of `area` (m^2).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] naming the work of adhesion where its
+    /// range or peak tension is not finite, or the peak over the whole grid
+    /// would not be a finite force (a work of adhesion of `1e308` J/m^2:
+    /// the range overflows and the peak is NaN).
+    pub(super) fn new(
+        zone: &CohesiveZone,
+        work: f64,
+        spacing: f64,
+        modulus: f64,
+        area: f64,
+    ) -> Result<Self> {
         let range = zone.range(work, spacing, modulus);
-        let peak = if range > 0.0 { 2.0 * work / range } else { 0.0 };
-        Law { peak, range }
+        let peak = if range > 0.0 { work / range * 2.0 } else { 0.0 };
+        if range.is_finite() && peak.is_finite() && (peak * area).is_finite() {
+            Ok(Law { peak, range })
+        } else {
+            Err(Error::InvalidParameter {
+                name: "work of adhesion",
+                value: work,
+                expected: "small enough that the cohesive law's range and peak tension over \
+                           the grid are finite",
+            })
+        }
     }
 
     /// The law of `root^2` times the work of adhesion over the same zone

@@ -134,6 +134,11 @@ pub struct ContactSolver {
     /// Whether the preconditioner runs in double precision (the cohesive
     /// zone's rounds) rather than single ([`Preconditioner`]).
     double_preconditioner: bool,
+    /// The factor by which the last solve scaled its warm start, its own
+    /// (`ContactSolver::scale_warm_start`; 1 when it had none) times its
+    /// coarser levels': a coarse start level's, read by the finer level to
+    /// scale its own warm start's detail alike.
+    warm_scale: f64,
     /// The substrate, for the coarser solvers.
     substrate: Substrate,
     /// The solver on the grid of half the cells each way and twice their
@@ -220,6 +225,7 @@ impl ContactSolver {
             compliance: FourierCompliance::new(substrate),
             preconditioner: None,
             double_preconditioner: false,
+            warm_scale: 1.0,
             substrate: substrate.clone(),
             coarse: None,
             surface_contact_modulus: substrate.surface_material().contact_modulus(),

@@ -167,12 +167,16 @@ impl ContactSolver {
         // The coarse solver keeps its kernel and plans, not its scratch,
         // while the finer solve runs.
         coarse.release_scratch();
+        // The coarse solve scaled its start (the restricted warm start) to
+        // the new depth's scale; the warm start's detail is scaled alike.
+        let scale = coarse.warm_scale;
         let (solution, solved) = self.agreed(solved).ok()?;
         let fine = self.local_cells();
         let pressure: Vec<f64> = match (warm, start) {
             (Some(w), Some(r)) => (0..fine)
                 .map(|c| {
-                    (w.pressure[c] + solved.pressure[block(c)] - r.pressure[block(c)]).max(0.0)
+                    let detail = w.pressure[c] - r.pressure[block(c)];
+                    (scale * detail + solved.pressure[block(c)]).max(0.0)
                 })
                 .collect(),
             _ => (0..fine).map(|c| solved.pressure[block(c)]).collect(),

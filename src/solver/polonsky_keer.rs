@@ -65,7 +65,12 @@ impl ContactSolver {
     /// pressures plus the coarse solve's change: Brandt 1977, Math. Comp.
     /// 31, 333-390): the fine iterations then start with nearly the final
     /// contact instead of clamping their way back from the overlap of the
-    /// new load.
+    /// new load. A warm start more than four times off the new depth's
+    /// scale is first scaled to the least energy along its own pressures
+    /// (at each level, the fine one's detail by the coarse one's factor):
+    /// a punch unloaded to a hair's breadth of first contact would
+    /// otherwise cancel pressures a billion times too large and stall in
+    /// their rounding.
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for a non-finite depth, a penetration
@@ -155,6 +160,12 @@ impl ContactSolver {
         // A start level prolonged from its own coarser level may stop at
         // a fraction of how far that start was ([`loosened`]).
         let prolonged = self.start_level && coarse.is_some();
+        // How much the coarse levels scaled the warm start (the start's
+        // detail was scaled alike), so that a finer level scales its own.
+        let coarse_scale = match (&coarse, &self.coarse) {
+            (Some(_), Some(Some(solver))) => solver.warm_scale,
+            _ => 1.0,
+        };
         let (start, coarse_iterations) = match coarse {
             Some((start, iterations)) => (Some(Cow::Owned(start)), iterations),
             None => (warm.map(Cow::Borrowed), 0),
@@ -167,6 +178,7 @@ impl ContactSolver {
             observer,
         )?;
         solution.coarse_iterations = coarse_iterations;
+        self.warm_scale *= coarse_scale;
         Ok((solution, end))
     }
 
@@ -203,6 +215,7 @@ impl ContactSolver {
                 detail: "a given start displacement without a start that has contact".into(),
             });
         }
+        let warmed = warm.is_some();
         let mut pressure = self.initial_pressure(control, warm, &reachable);
         if let Control::Force(w) = control {
             let mut total = [area * pressure.iter().sum::<f64>()];
@@ -236,11 +249,15 @@ impl ContactSolver {
         // full refresh every REFRESH iterations against drift.
         // A given start displacement is kept with its start pressure, to
         // refresh against (allocated only then).
+        self.warm_scale = 1.0;
         let start = if given {
             Some((pressure.clone(), self.workspace.displacement.clone()))
         } else {
             self.operator
                 .apply(&pressure, &mut self.workspace.displacement)?;
+            if let (Control::Depth(d), true) = (control, warmed) {
+                self.warm_scale = self.scale_warm_start(d, &mut pressure);
+            }
             None
         };
         for iteration in 1..=self.params.max_iterations {
