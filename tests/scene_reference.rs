@@ -154,7 +154,9 @@ fn no_bonded_punch_reference_where_the_face_lifts_off() {
 /// 1.0 mm against `sqrt(R d)` = 0.09 mm): the reference widens its table
 /// until the peak is within it, where it had returned an error about a
 /// table the scene's user never built. Its values equal a table built
-/// wide enough from the start to 1e-9.
+/// wide enough from the start to 1e-9. The scene's grid is sized from the
+/// same widened table: it spans the exact contact (it was 0.06 mm wide,
+/// and the run ended with its contact at the edge of the grown grid).
 #[test]
 fn a_reference_widens_its_table_to_the_peak() {
     let (radius, depth, work) = (1.375194e-3, 6.093368e-6, 1.944724e-4);
@@ -193,4 +195,11 @@ fn a_reference_widens_its_table_to_the_peak() {
         wide.force
     );
     assert!((contact / wide.contact_radius - 1.0).abs() < 1e-9);
+    let grid = scene.grid().unwrap();
+    let side = grid.rows().min(grid.columns()) as f64 * grid.spacing();
+    assert!(
+        side > 2.0 * wide.contact_radius,
+        "{side} {}",
+        wide.contact_radius
+    );
 }

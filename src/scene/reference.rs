@@ -2,7 +2,7 @@
 //! axisymmetric solutions of [`analytic::Axisymmetric`](crate::analytic::Axisymmetric) for an untilted flat
 //! punch, paraboloid or sphere on an isolated half-space or coated body.
 
-use crate::analytic::{Axisymmetric, JkrSphere};
+use crate::analytic::{Axisymmetric, ContactState, JkrSphere};
 use crate::error::{Error, Result};
 use crate::grid::Boundary;
 use crate::substrate::Substrate;
@@ -27,9 +27,9 @@ pub struct Reference {
 /// Nystrom order grows like `8 a/h`).
 const REFERENCE_MAX_EPS: f64 = 50.0;
 
-/// How many times a reference widens its table fourfold for a peak the
-/// table does not reach (`exact_to` refuses tables past
-/// [`REFERENCE_MAX_EPS`] layer thicknesses first on a layered body).
+/// How many times [`paraboloid_peak`] widens its table fourfold for a peak
+/// the table does not reach (on a layered body `exact_to` refuses tables
+/// past their largest `a/h` first).
 const MAX_WIDENINGS: usize = 8;
 
 impl Scene {
@@ -83,7 +83,7 @@ impl Scene {
         let mut out = Vec::new();
         match self.indenter {
             IndenterSpec::FlatPunch { radius } => {
-                let Some(exact) = exact_to(&substrate, radius)? else {
+                let Some(exact) = exact_to(&substrate, radius, REFERENCE_MAX_EPS)? else {
                     return Ok(out);
                 };
                 let punch = exact.flat_punch(radius)?;
@@ -142,37 +142,16 @@ impl Scene {
                 };
                 let jkr = JkrSphere::new(substrate.surface_material(), radius, receding)?
                     .pull_off_contact_radius();
-                // A stiff layer on a far softer base spreads the contact
-                // beyond twice Hertz's radius: the table widens fourfold
-                // until the peak is within it (or past the tabulated range:
-                // no reference).
-                let mut widest = (2.0 * hertz).max(3.0 * jkr);
-                let mut widenings = 0;
-                let (exact, peak) = loop {
-                    let Some(exact) = exact_to(&substrate, widest)? else {
-                        return Ok(out);
-                    };
-                    let loading = exact.paraboloid(radius, advancing)?;
-                    let peak = match self.protocol {
-                        Protocol::Depth { depth }
-                        | Protocol::Cycle {
-                            max_depth: depth, ..
-                        } => loading.at_depth(depth),
-                        Protocol::Force { force }
-                        | Protocol::ForceCycle {
-                            max_force: force, ..
-                        } => loading.at_force(force),
-                    };
-                    match peak {
-                        Err(Error::InvalidParameter {
-                            name: "depth" | "force",
-                            ..
-                        }) if widenings < MAX_WIDENINGS => {
-                            widest *= 4.0;
-                            widenings += 1;
-                        }
-                        other => break (exact, other?),
-                    }
+                let widest = (2.0 * hertz).max(3.0 * jkr);
+                let Some((exact, peak)) = paraboloid_peak(
+                    &substrate,
+                    (radius, advancing),
+                    self.protocol,
+                    widest,
+                    REFERENCE_MAX_EPS,
+                )?
+                else {
+                    return Ok(out);
                 };
                 if let Some(state) = peak.filter(|s| s.contact_radius > 0.0) {
                     if self.peak_depth().is_some() {
@@ -212,12 +191,56 @@ impl Scene {
     }
 }
 
+/// The exact solutions on `substrate` tabulated from contact radius
+/// `reach` (m) on, and the peak of `protocol` for the paraboloid of
+/// `(radius, work)` (tip radius m, work of adhesion J/m^2): where the peak
+/// lies beyond the table (a stiff layer on a far softer base, or adhesion,
+/// spreads the contact beyond twice Hertz's radius) the table widens
+/// fourfold, at most [`MAX_WIDENINGS`] times. `None` where it would reach
+/// past `max_eps` layer thicknesses.
+///
+/// # Errors
+/// Failures of the exact solution other than a peak beyond the table.
+pub(super) fn paraboloid_peak(
+    substrate: &Substrate,
+    (radius, work): (f64, f64),
+    protocol: Protocol,
+    reach: f64,
+    max_eps: f64,
+) -> Result<Option<(Axisymmetric, Option<ContactState>)>> {
+    let mut reach = reach;
+    for widening in 0..=MAX_WIDENINGS {
+        let Some(exact) = exact_to(substrate, reach, max_eps)? else {
+            return Ok(None);
+        };
+        let loading = exact.paraboloid(radius, work)?;
+        let peak = match protocol {
+            Protocol::Depth { depth }
+            | Protocol::Cycle {
+                max_depth: depth, ..
+            } => loading.at_depth(depth),
+            Protocol::Force { force }
+            | Protocol::ForceCycle {
+                max_force: force, ..
+            } => loading.at_force(force),
+        };
+        match peak {
+            Err(Error::InvalidParameter {
+                name: "depth" | "force",
+                ..
+            }) if widening < MAX_WIDENINGS => reach *= 4.0,
+            other => return Ok(Some((exact, other?))),
+        }
+    }
+    Ok(None)
+}
+
 /// The exact solutions on `substrate` for contacts up to `radius`, `None`
-/// beyond [`REFERENCE_MAX_EPS`] layer thicknesses.
-fn exact_to(substrate: &Substrate, radius: f64) -> Result<Option<Axisymmetric>> {
+/// beyond `max_eps` layer thicknesses.
+fn exact_to(substrate: &Substrate, radius: f64, max_eps: f64) -> Result<Option<Axisymmetric>> {
     let within = substrate
         .top_thickness()
-        .is_none_or(|thickness| radius / thickness <= REFERENCE_MAX_EPS);
+        .is_none_or(|thickness| radius / thickness <= max_eps);
     if !(within && radius > 0.0 && radius.is_finite()) {
         return Ok(None);
     }

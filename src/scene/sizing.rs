@@ -12,7 +12,7 @@ use super::{Adhesion, AdhesionMethod, IndenterSpec, Protocol, Scene};
 /// Grid sizing consults the exact solution only up to this `a/h` (a few
 /// milliseconds a solve; beyond, it would take seconds, and the estimates
 /// it falls back to suffice for sizing).
-const SIZING_MAX_EPS: f64 = 20.0;
+const SIZING_MAX_EPS: f64 = 50.0;
 
 /// The widest grid a scene builds, in cells.
 const MAX_GRID_CELLS: usize = 8192;
@@ -97,28 +97,22 @@ impl Scene {
         // the pull-off's (a few JKR scales) and the peak's (about twice the
         // non-adhesive estimate); its cost grows with the range.
         let reach = (3.0 * scale).max(2.0 * estimate);
-        let eps = match substrate.top_thickness() {
-            Some(thickness) => {
-                let eps = reach / thickness;
-                if eps > SIZING_MAX_EPS {
-                    return None;
-                }
-                eps
-            }
-            None => 1.0,
-        };
-        let exact = crate::analytic::Axisymmetric::new(&substrate, eps).ok()?;
+        // Widened until the peak is within the table: adhesion (or a stiff
+        // layer on a far softer base) may spread the contact far beyond
+        // twice the non-adhesive estimate (1.0 mm against 0.18 mm for an
+        // adhesive paraboloid on a thin layer over a base a thousand times
+        // softer), past what growing the grid reaches.
+        let (exact, peak) = super::reference::paraboloid_peak(
+            &substrate,
+            (radius, advancing),
+            self.protocol,
+            reach,
+            SIZING_MAX_EPS,
+        )
+        .ok()??;
+        let peak = peak?;
         let ball = exact.paraboloid(radius, receding).ok()?;
         let pull_off = ball.load_controlled_pull_off().ok()?.contact_radius;
-        let loading = exact.paraboloid(radius, advancing).ok()?;
-        let peak = match self.protocol {
-            Protocol::Cycle { max_depth, .. } | Protocol::Depth { depth: max_depth } => {
-                loading.at_depth(max_depth).ok()??
-            }
-            Protocol::ForceCycle { max_force, .. } | Protocol::Force { force: max_force } => {
-                loading.at_force(max_force).ok()??
-            }
-        };
         Some((peak.contact_radius, pull_off))
     }
 
