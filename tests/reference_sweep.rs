@@ -232,6 +232,9 @@ proptest! {
         let outcome = bounded_case(&label, move || sweep(&text, contrast));
         // `--nocapture` shows each case's outcome (the large run's worst).
         println!("case: {:?}", outcome.as_ref().map_err(|e| e.to_string()));
+        if outcome.is_err() {
+            println!("{label}");
+        }
         match outcome {
             Ok(worst) => prop_assert!(worst < 1.0, "{worst:e} of the tolerance:\n{label}"),
             Err(e @ (Error::NoConvergence { .. } | Error::Internal { .. })) => {
