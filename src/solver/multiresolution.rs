@@ -78,7 +78,8 @@ impl ContactSolver {
     /// grid cannot resolve the substrate (a film too thin
     /// for its cells) or its solve fails: the fine solve then starts from
     /// `warm` or cold, and reports its own errors. Also the iterations
-    /// spent.
+    /// spent and the factor by which the coarse levels scaled `warm`
+    /// (`ContactSolver::scale_warm_start`; 1 for none).
     ///
     /// With a `warm` start the coarse solve starts from its pressures
     /// averaged over each coarse cell, and the fine start is `warm` plus
@@ -94,7 +95,7 @@ impl ContactSolver {
         indenter: &I,
         control: Control,
         warm: Option<&WarmStart>,
-    ) -> Option<(WarmStart, usize)> {
+    ) -> Option<(WarmStart, usize, f64)> {
         let grid = *self.grid();
         let (rows, columns) = (grid.rows(), grid.columns());
         if !self.params.multiresolution || rows.min(columns) < MULTIRESOLUTION_CELLS {
@@ -185,6 +186,7 @@ impl ContactSolver {
         Some((
             WarmStart { pressure, attached },
             solution.iterations + solution.coarse_iterations,
+            scale,
         ))
     }
 }

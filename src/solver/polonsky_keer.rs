@@ -160,15 +160,12 @@ impl ContactSolver {
         // A start level prolonged from its own coarser level may stop at
         // a fraction of how far that start was ([`loosened`]).
         let prolonged = self.start_level && coarse.is_some();
-        // How much the coarse levels scaled the warm start (the start's
-        // detail was scaled alike), so that a finer level scales its own.
-        let coarse_scale = match (&coarse, &self.coarse) {
-            (Some(_), Some(Some(solver))) => solver.warm_scale,
-            _ => 1.0,
-        };
-        let (start, coarse_iterations) = match coarse {
-            Some((start, iterations)) => (Some(Cow::Owned(start)), iterations),
-            None => (warm.map(Cow::Borrowed), 0),
+        // `coarse_scale`: how much the coarse levels scaled the warm start
+        // (the start's detail was scaled alike), so that a finer level
+        // scales its own.
+        let (start, coarse_iterations, coarse_scale) = match coarse {
+            Some((start, iterations, scale)) => (Some(Cow::Owned(start)), iterations, scale),
+            None => (warm.map(Cow::Borrowed), 0, 1.0),
         };
         let (mut solution, end) = self.constrained_cg(
             control,
