@@ -17,10 +17,7 @@ use layered_contact::Error;
 use proptest::prelude::*;
 
 fn fuzz_cases() -> u32 {
-    std::env::var("LAYERED_CONTACT_FUZZ_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(96)
+    common::env_number("LAYERED_CONTACT_FUZZ_CASES", 96)
 }
 
 fn f64_bytes(values: &[f64], big_endian: bool) -> Vec<u8> {

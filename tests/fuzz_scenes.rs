@@ -18,19 +18,13 @@ use layered_contact::scene::Scene;
 use proptest::prelude::*;
 
 fn fuzz_cases() -> u32 {
-    std::env::var("LAYERED_CONTACT_FUZZ_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(96)
+    common::env_number("LAYERED_CONTACT_FUZZ_CASES", 96)
 }
 
 /// The campaign's seed: `LAYERED_CONTACT_FUZZ_SEED` (default 12, the seed
 /// `cargo test` runs), so that a large run can draw other cases.
 fn fuzz_seed() -> u64 {
-    std::env::var("LAYERED_CONTACT_FUZZ_SEED")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(12)
+    common::env_number("LAYERED_CONTACT_FUZZ_SEED", 12)
 }
 
 /// The seed files: the examples, and scenes reaching the other protocols,

@@ -16,10 +16,7 @@ mod common;
 use common::bounded;
 
 fn cases(default: u32) -> u32 {
-    std::env::var("LAYERED_CONTACT_PROPTEST_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(default)
+    common::env_number("LAYERED_CONTACT_PROPTEST_CASES", default)
 }
 
 fn coated(layer: Material, h: f64, base: Base) -> Substrate {

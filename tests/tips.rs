@@ -235,3 +235,96 @@ fn cantilever_pull_off_and_jump_in_on_the_jkr_sphere() {
     assert!((stiff.depth / pull.displacement_control.depth - 1.0).abs() < 1e-8);
     assert!(ball.spring_pull_off(0.0).is_err() && ball.spring_jump_in(f64::NAN).is_err());
 }
+
+#[test]
+fn tips_at_a_depth_or_force_invert_the_closed_forms() {
+    // The JKR sphere beyond the paraboloid (Maugis 1995): with Sneddon's
+    // d_s(a) = (a/2) L and F_s(a) = (E*/2) [(a^2 + R^2) L - 2 a R],
+    // L = ln((R+a)/(R-a)), the adhesive contact has d = d_s - sqrt(2 pi a
+    // w / E*) and F = F_s - sqrt(8 pi E* w a^3); the JKR cone as in
+    // `half_space_closed_forms`. The searches by depth and by force must
+    // land on the radius the closed forms were evaluated at (bisection to
+    // 2^-50 of a bracket of about 10 % of `a`: 1e-13 relative, and the
+    // force along with it).
+    let half = Axisymmetric::new(&Substrate::half_space(rubber()), 1.0).unwrap();
+    let e = rubber().contact_modulus();
+    let (r, theta, w) = (3e-6f64, 1.2f64, 0.02);
+    let sphere = half.tip(Tip::Sphere { radius: r }, w).unwrap();
+    let cone = half.tip(Tip::Cone { half_angle: theta }, w).unwrap();
+    let cot = 1.0 / theta.tan();
+    let exact_sphere = |a: f64| {
+        let log = ((r + a) / (r - a)).ln();
+        (
+            0.5 * a * log - (2.0 * PI * a * w / e).sqrt(),
+            0.5 * e * ((a * a + r * r) * log - 2.0 * a * r) - (8.0 * PI * e * w * a.powi(3)).sqrt(),
+        )
+    };
+    let exact_cone = |a: f64| {
+        (
+            0.5 * PI * a * cot - (2.0 * PI * a * w / e).sqrt(),
+            0.5 * PI * e * a * a * cot - (8.0 * PI * e * w * a.powi(3)).sqrt(),
+        )
+    };
+    // Radii on the stable branches of both controls (beyond the
+    // load-controlled pull-off radius: about 0.79 um for the sphere, as its
+    // paraboloid's `0.63 a_0`, and 0.58 um for the cone).
+    for (tip, exact) in [
+        (&sphere, &exact_sphere as &dyn Fn(f64) -> (f64, f64)),
+        (&cone, &exact_cone),
+    ] {
+        for a in [1.0e-6, 1.5e-6, 2.6e-6] {
+            let (depth, force) = exact(a);
+            let by_depth = tip.at_depth(depth).unwrap().unwrap();
+            assert!((by_depth.contact_radius / a - 1.0).abs() < 1e-12, "{a}");
+            assert!((by_depth.force - force).abs() < 1e-11 * force.abs().max(1e-9));
+            let by_force = tip.at_force(force).unwrap().unwrap();
+            assert!((by_force.contact_radius / a - 1.0).abs() < 1e-12, "{a}");
+            assert!((by_force.depth - depth).abs() < 1e-11 * depth.abs().max(1e-12));
+        }
+        // Below the pull-offs there is no adhesive equilibrium.
+        let pull = tip.pull_off().unwrap();
+        assert!(tip
+            .at_force(1.01 * pull.load_control.force)
+            .unwrap()
+            .is_none());
+        assert!(tip
+            .at_depth(pull.displacement_control.depth - 1e-9)
+            .unwrap()
+            .is_none());
+    }
+    // A depth the cap cannot reach (its contact beyond 0.95 R) is refused,
+    // naming the depth; without adhesion nothing touches at depth 0.
+    let too_deep = exact_sphere(0.96 * r).0;
+    assert!(matches!(
+        sphere.at_depth(too_deep),
+        Err(Error::InvalidParameter { name: "depth", .. })
+    ));
+    let dry = half.tip(Tip::Sphere { radius: r }, 0.0).unwrap();
+    assert!(dry.at_depth(0.0).unwrap().is_none());
+    assert!(dry.at_depth(-1e-9).unwrap().is_none());
+}
+
+#[test]
+fn tips_at_a_depth_on_coated_bodies_invert_their_contact_radius() {
+    // On coated bodies no closed form: the state the search finds at the
+    // depth of a known contact radius is that radius's.
+    for (name, body) in bodies() {
+        let exact = Axisymmetric::up_to_contact_radius(&body, 2.9e-6).unwrap();
+        for tip in TIPS {
+            let tip = exact.tip(tip, 0.02).unwrap();
+            for a in [1.2e-6, 2.5e-6] {
+                let state = tip.at_contact_radius(a).unwrap();
+                let found = tip.at_depth(state.depth).unwrap().unwrap();
+                assert!(
+                    (found.contact_radius / a - 1.0).abs() < 1e-12,
+                    "{name} {tip:?} {a}"
+                );
+                let found = tip.at_force(state.force).unwrap().unwrap();
+                assert!(
+                    (found.contact_radius / a - 1.0).abs() < 1e-12,
+                    "{name} {tip:?} {a}"
+                );
+            }
+        }
+    }
+}

@@ -1,7 +1,10 @@
-//! The exact layered JKR paraboloid as a function of depth and of force, and
-//! its loading and unloading curve with adhesion hysteresis.
+//! The exact layered JKR paraboloid and tips (the sphere) as functions of
+//! depth and of force, and the paraboloid's loading and unloading curve
+//! with adhesion hysteresis.
 
-use super::axisymmetric::{ContactState, LayeredParaboloid};
+use super::axisymmetric::{ContactState, LayeredParaboloid, LayeredTip, Tip};
+use std::f64::consts::PI;
+
 use crate::error::{Error, Result};
 
 /// Bisection steps on the contact radius: the bracket shrinks by `2^-50`.
@@ -10,89 +13,187 @@ const BISECTIONS: usize = 50;
 /// the pull-off radius lies far outside any tabulated range).
 const MAX_DOUBLINGS: usize = 40;
 
-impl LayeredParaboloid {
-    /// The stable equilibrium at `target` depth or force: the root of
-    /// `key(a) = target` of largest radius, on the branch where `key` grows
-    /// with `a`; `None` below the branch's least value (no adhesive
-    /// equilibrium: the contact has come off). Walks down from a radius
-    /// where `key >= target` in steps of 10 % until `key < target`, then
-    /// bisects; if the walk passes the branch's minimum first, the minimum
-    /// (golden section) decides.
-    fn stable_root(&self, target: f64, by_force: bool) -> Result<Option<ContactState>> {
-        let key = |a: f64| -> Result<f64> {
-            let s = self.at_contact_radius(a)?;
-            Ok(if by_force { s.force } else { s.depth })
-        };
-        let limit = self.body.max_contact_radius();
-        let scale = (self.sphere_radius * target.abs().max(f64::MIN_POSITIVE))
-            .sqrt()
-            .min(limit);
-        let (lo_range, _) = self.pull_off_range();
-        // An upper bracket: key(hi) >= target.
-        let mut hi = scale.max(lo_range);
-        let mut doublings = 0;
-        while key(hi)? < target {
-            if hi >= limit || doublings == MAX_DOUBLINGS {
-                return Err(Error::InvalidParameter {
-                    name: if by_force { "force" } else { "depth" },
-                    value: target,
-                    expected: "reached within the tabulated contact radii \
-                               (build Axisymmetric with a larger max_radius_over_thickness)",
-                });
-            }
-            hi = (2.0 * hi).min(limit);
-            doublings += 1;
-        }
-        // Walk down to a lower bracket.
-        let floor = lo_range.min(hi) * 1e-3;
-        let (mut previous, mut lo) = (key(hi)?, hi);
-        loop {
-            let next = 0.9 * lo;
-            let value = key(next)?;
-            if value < target {
-                hi = lo;
-                lo = next;
-                break;
-            }
-            if value > previous || next < floor {
-                // Passed the minimum (or ran out of branch) above the target.
-                if self.work_of_adhesion == 0.0 {
-                    return Ok(None);
-                }
-                let least = if by_force {
-                    self.load_controlled_pull_off()?.force
-                } else {
-                    self.pull_off()?.displacement_control.depth
-                };
-                if target < least {
-                    return Ok(None);
-                }
-                // The minimum dips below the target between samples: bracket
-                // between it and the last sample above.
-                let pull_off = self.pull_off()?;
-                let at = if by_force {
-                    pull_off.load_control
-                } else {
-                    pull_off.displacement_control
-                };
-                hi = lo;
-                lo = at.contact_radius;
-                break;
-            }
-            previous = value;
-            lo = next;
-        }
-        for _ in 0..BISECTIONS {
-            let mid = 0.5 * (lo + hi);
-            if key(mid)? < target {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        self.at_contact_radius(hi).map(Some)
-    }
+/// What the search for a stable equilibrium needs of an exact tip on the
+/// coated half-space (the paraboloid, the sphere).
+trait Branch {
+    /// The equilibrium at contact radius `a` (m).
+    fn state(&self, a: f64) -> Result<ContactState>;
+    /// A contact radius of the order of the one at `target` (m): the
+    /// search's first bracket, doubled or walked down from.
+    fn scale(&self, target: f64, by_force: bool) -> f64;
+    /// The work of adhesion, J/m^2.
+    fn work(&self) -> f64;
+    /// The largest contact radius of the solution (m), and whether the
+    /// tip's own shape (a spherical cap) sets it rather than the table.
+    fn limit(&self) -> (f64, bool);
+    /// The smallest contact radius a pull-off is sought at (m; 0 without
+    /// adhesion).
+    fn pull_off_low(&self) -> f64;
+    /// The pull-off state under load (`by_force`) or displacement control.
+    fn least(&self, by_force: bool) -> Result<ContactState>;
+}
 
+impl Branch for LayeredParaboloid {
+    fn state(&self, a: f64) -> Result<ContactState> {
+        self.at_contact_radius(a)
+    }
+    fn scale(&self, target: f64, _by_force: bool) -> f64 {
+        (self.sphere_radius * target.abs()).sqrt()
+    }
+    fn work(&self) -> f64 {
+        self.work_of_adhesion
+    }
+    fn limit(&self) -> (f64, bool) {
+        (self.body.max_contact_radius(), false)
+    }
+    fn pull_off_low(&self) -> f64 {
+        self.pull_off_range().0
+    }
+    fn least(&self, by_force: bool) -> Result<ContactState> {
+        if by_force {
+            self.load_controlled_pull_off()
+        } else {
+            Ok(self.pull_off()?.displacement_control)
+        }
+    }
+}
+
+impl Branch for LayeredTip {
+    fn state(&self, a: f64) -> Result<ContactState> {
+        self.at_contact_radius(a)
+    }
+    fn scale(&self, target: f64, by_force: bool) -> f64 {
+        let t = target.abs();
+        // Sneddon's cone: `a = 2 d tan(theta) / pi`, `F = (pi/2) E* a^2
+        // cot(theta)`; the sphere's apex as the paraboloid's.
+        let cone = |theta: f64| {
+            if by_force {
+                (2.0 * t * theta.tan() / (PI * self.body.contact_modulus)).sqrt()
+            } else {
+                2.0 * t * theta.tan() / PI
+            }
+        };
+        match self.tip {
+            Tip::Paraboloid { radius } | Tip::Sphere { radius } => (radius * t).sqrt(),
+            Tip::Cone { half_angle } => cone(half_angle),
+            Tip::RoundedCone {
+                half_angle,
+                tip_radius,
+            } => (tip_radius * t).sqrt().min(cone(half_angle)),
+        }
+    }
+    fn work(&self) -> f64 {
+        self.work_of_adhesion
+    }
+    fn limit(&self) -> (f64, bool) {
+        let (table, cap) = (
+            self.body.max_contact_radius(),
+            self.tip.max_contact_radius(),
+        );
+        (table.min(cap), cap < table)
+    }
+    fn pull_off_low(&self) -> f64 {
+        if self.work_of_adhesion > 0.0 {
+            self.tip
+                .pull_off_radii(self.work_of_adhesion, self.body.contact_modulus)
+                .0
+        } else {
+            0.0
+        }
+    }
+    fn least(&self, by_force: bool) -> Result<ContactState> {
+        let pull_off = self.pull_off()?;
+        Ok(if by_force {
+            pull_off.load_control
+        } else {
+            pull_off.displacement_control
+        })
+    }
+}
+
+/// The stable equilibrium of `tip` at `target` depth or force: the root of
+/// `key(a) = target` of largest radius, on the branch where `key` grows
+/// with `a`; `None` below the branch's least value (no adhesive
+/// equilibrium: the contact has come off). Walks down from a radius where
+/// `key >= target` in steps of 10 % until `key < target`, then bisects; if
+/// the walk passes the branch's minimum first, the minimum (golden
+/// section) decides.
+fn stable_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option<ContactState>> {
+    crate::solver::check_finite(if by_force { "force" } else { "depth" }, target)?;
+    let key = |a: f64| -> Result<f64> {
+        let s = tip.state(a)?;
+        Ok(if by_force { s.force } else { s.depth })
+    };
+    let (limit, capped) = tip.limit();
+    let scale = tip.scale(target, by_force).min(limit);
+    let lo_range = tip.pull_off_low();
+    // An upper bracket: key(hi) >= target.
+    let mut hi = scale.max(lo_range).max(f64::MIN_POSITIVE.sqrt());
+    let mut doublings = 0;
+    while key(hi)? < target {
+        if hi >= limit || doublings == MAX_DOUBLINGS {
+            return Err(Error::InvalidParameter {
+                name: if by_force { "force" } else { "depth" },
+                value: target,
+                expected: if capped {
+                    "reached by a contact within 0.95 of the sphere's radius \
+                     (the cap's slope grows without bound at the equator)"
+                } else {
+                    "reached within the tabulated contact radii \
+                     (build Axisymmetric with a larger max_radius_over_thickness)"
+                },
+            });
+        }
+        hi = (2.0 * hi).min(limit);
+        doublings += 1;
+    }
+    // Walk down to a lower bracket; without adhesion the branch falls to
+    // 0 with the radius, so a walk past `1e-9` of the start has met no
+    // root (a target at or below 0).
+    let floor = if lo_range > 0.0 {
+        lo_range.min(hi) * 1e-3
+    } else {
+        hi * 1e-9
+    };
+    let (mut previous, mut lo) = (key(hi)?, hi);
+    loop {
+        let next = 0.9 * lo;
+        let value = key(next)?;
+        if value < target {
+            hi = lo;
+            lo = next;
+            break;
+        }
+        if value > previous || next < floor {
+            // Passed the minimum (or ran out of branch) above the target.
+            if tip.work() == 0.0 {
+                return Ok(None);
+            }
+            let least = tip.least(by_force)?;
+            if target < if by_force { least.force } else { least.depth } {
+                return Ok(None);
+            }
+            // The minimum dips below the target between samples: bracket
+            // between it and the last sample above.
+            hi = lo;
+            lo = least.contact_radius;
+            break;
+        }
+        previous = value;
+        lo = next;
+    }
+    for _ in 0..BISECTIONS {
+        let mid = 0.5 * (lo + hi);
+        if key(mid)? < target {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    tip.state(hi).map(Some)
+}
+
+impl LayeredParaboloid {
     /// The stable equilibrium at `depth` (m) under displacement control: the
     /// largest-radius JKR state, `None` below the depth at which the contact
     /// jumps off.
@@ -115,8 +216,7 @@ impl LayeredParaboloid {
     /// contact lies beyond the tabulated range; others as
     /// [`at_contact_radius`](Self::at_contact_radius).
     pub fn at_depth(&self, depth: f64) -> Result<Option<ContactState>> {
-        crate::solver::check_finite("depth", depth)?;
-        self.stable_root(depth, false)
+        stable_root(self, depth, false)
     }
 
     /// The stable equilibrium under force `force` (N, negative pulls) under
@@ -126,8 +226,46 @@ impl LayeredParaboloid {
     /// # Errors
     /// As [`at_depth`](Self::at_depth).
     pub fn at_force(&self, force: f64) -> Result<Option<ContactState>> {
-        crate::solver::check_finite("force", force)?;
-        self.stable_root(force, true)
+        stable_root(self, force, true)
+    }
+}
+
+impl LayeredTip {
+    /// The stable equilibrium at `depth` (m) under displacement control,
+    /// as [`LayeredParaboloid::at_depth`]: the largest-radius state, `None`
+    /// below the depth at which the contact jumps off (or at `depth <= 0`
+    /// without adhesion).
+    ///
+    /// ```
+    /// use layered_contact::analytic::{Axisymmetric, Tip};
+    /// use layered_contact::{Material, Substrate};
+    ///
+    /// let film = Substrate::layer_on_rigid_base(Material::new(1e6, 0.45)?, 1e-3)?;
+    /// let exact = Axisymmetric::new(&film, 4.0)?;
+    /// let ball = exact.tip(Tip::Sphere { radius: 5e-3 }, 0.05)?;
+    /// let state = ball.at_depth(2e-4)?.unwrap();
+    /// assert!((state.depth - 2e-4).abs() < 1e-15);
+    /// // The sphere is blunter than its paraboloid: less force at one depth.
+    /// let paraboloid = exact.paraboloid(5e-3, 0.05)?.at_depth(2e-4)?.unwrap();
+    /// assert!(state.force < paraboloid.force);
+    /// Ok::<(), layered_contact::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for a non-finite depth, one whose
+    /// contact lies beyond the tabulated range or beyond 0.95 of a
+    /// sphere's radius; others as [`at_contact_radius`](Self::at_contact_radius).
+    pub fn at_depth(&self, depth: f64) -> Result<Option<ContactState>> {
+        stable_root(self, depth, false)
+    }
+
+    /// The stable equilibrium under force `force` (N, negative pulls)
+    /// under load control, `None` below the pull-off force.
+    ///
+    /// # Errors
+    /// As [`at_depth`](Self::at_depth).
+    pub fn at_force(&self, force: f64) -> Result<Option<ContactState>> {
+        stable_root(self, force, true)
     }
 }
 

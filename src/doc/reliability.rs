@@ -107,4 +107,5 @@
 //!   their exact values ([`Scene::reference`](crate::scene::Scene::reference)):
 //!   within a tolerance of the discretisation, or a typed error that names
 //!   a limit of the method (a failed iteration fails the test). 12 cases in
-//!   `cargo test`; `LAYERED_CONTACT_REFERENCE_CASES=2000` a large run.
+//!   `cargo test`; `LAYERED_CONTACT_REFERENCE_CASES=2000` a large run,
+//!   `LAYERED_CONTACT_REFERENCE_SEED` its seed (default 7).

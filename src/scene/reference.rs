@@ -2,7 +2,7 @@
 //! axisymmetric solutions of [`analytic::Axisymmetric`](crate::analytic::Axisymmetric) for an untilted flat
 //! punch, paraboloid or sphere on an isolated half-space or coated body.
 
-use crate::analytic::{Axisymmetric, ContactState, JkrSphere};
+use crate::analytic::{Axisymmetric, ContactState, JkrSphere, Tip};
 use crate::error::{Error, Result};
 use crate::grid::Boundary;
 use crate::substrate::Substrate;
@@ -27,7 +27,7 @@ pub struct Reference {
 /// Nystrom order grows like `8 a/h`).
 const REFERENCE_MAX_EPS: f64 = 50.0;
 
-/// How many times [`paraboloid_peak`] widens its table fourfold for a peak
+/// How many times [`tip_peak`] widens its table fourfold for a peak
 /// the table does not reach (on a layered body `exact_to` refuses tables
 /// past their largest `a/h` first).
 const MAX_WIDENINGS: usize = 8;
@@ -35,8 +35,8 @@ const MAX_WIDENINGS: usize = 8;
 impl Scene {
     /// The exact values this scene's curve can be compared with: for an
     /// untilted flat punch, paraboloid or sphere on an isolated grid, from
-    /// the exact axisymmetric solution on the scene's substrate (a sphere by
-    /// its paraboloid, exact for contacts small against its radius).
+    /// the exact axisymmetric solution on the scene's substrate (the
+    /// sphere's own, not its paraboloid's: [`Tip::Sphere`]).
     ///
     /// * Flat punch: the stiffness; the force at the deepest step of a
     ///   depth-driven protocol; with adhesion the pull-off force at the
@@ -51,8 +51,9 @@ impl Scene {
     ///   (JKR's `-3/2 pi R dgamma` on a half-space), which is also the least
     ///   force of a displacement-controlled unloading.
     ///
-    /// Empty for other scenes, and for contacts wider than 50 layer
-    /// thicknesses.
+    /// Empty for other scenes, for contacts wider than 50 layer
+    /// thicknesses, and for a sphere pressed to a contact beyond 0.95 of its
+    /// radius.
     ///
     /// ```
     /// use layered_contact::scene::{IndenterSpec, Protocol, Quantity, Scene, SubstrateSpec};
@@ -121,10 +122,10 @@ impl Scene {
                 }
             }
             IndenterSpec::Sphere { radius } | IndenterSpec::Paraboloid { radius } => {
-                let source = if matches!(self.indenter, IndenterSpec::Sphere { .. }) {
-                    "exact axisymmetric paraboloid (sphere for a << R)"
+                let (tip, source) = if matches!(self.indenter, IndenterSpec::Sphere { .. }) {
+                    (Tip::Sphere { radius }, "exact axisymmetric sphere")
                 } else {
-                    "exact axisymmetric paraboloid"
+                    (Tip::Paraboloid { radius }, "exact axisymmetric paraboloid")
                 };
                 // The widest contact wanted: twice the Hertz radius at the
                 // peak (a force-driven peak by the surface material's
@@ -143,9 +144,9 @@ impl Scene {
                 let jkr = JkrSphere::new(substrate.surface_material(), radius, receding)?
                     .pull_off_contact_radius();
                 let widest = (2.0 * hertz).max(3.0 * jkr);
-                let Some((exact, peak)) = paraboloid_peak(
+                let Some((exact, peak)) = tip_peak(
                     &substrate,
-                    (radius, advancing),
+                    (tip, advancing),
                     self.protocol,
                     widest,
                     REFERENCE_MAX_EPS,
@@ -168,10 +169,15 @@ impl Scene {
                     });
                 }
                 if adhesive && receding > 0.0 {
-                    let pull_off = exact.paraboloid(radius, receding)?.pull_off()?;
+                    let force = match tip {
+                        Tip::Sphere { .. } => exact.tip(tip, receding)?.pull_off()?,
+                        _ => exact.paraboloid(radius, receding)?.pull_off()?,
+                    }
+                    .load_control
+                    .force;
                     out.push(Reference {
                         quantity: Quantity::PullOffForce,
-                        value: pull_off.load_control.force,
+                        value: force,
                         source,
                     });
                 }
@@ -192,39 +198,68 @@ impl Scene {
 }
 
 /// The exact solutions on `substrate` tabulated from contact radius
-/// `reach` (m) on, and the peak of `protocol` for the paraboloid of
-/// `(radius, work)` (tip radius m, work of adhesion J/m^2): where the peak
-/// lies beyond the table (a stiff layer on a far softer base, or adhesion,
+/// `reach` (m) on, and the peak of `protocol` for `(tip, work)` (a
+/// paraboloid or sphere, the work of adhesion J/m^2): where the peak lies
+/// beyond the table (a stiff layer on a far softer base, or adhesion,
 /// spreads the contact beyond twice Hertz's radius) the table widens
 /// fourfold, at most [`MAX_WIDENINGS`] times. `None` where it would reach
-/// past `max_eps` layer thicknesses.
+/// past `max_eps` layer thicknesses, or past 0.95 of a sphere's radius
+/// (where its exact solution ends).
 ///
 /// # Errors
 /// Failures of the exact solution other than a peak beyond the table.
-pub(super) fn paraboloid_peak(
+pub(super) fn tip_peak(
     substrate: &Substrate,
-    (radius, work): (f64, f64),
+    (tip, work): (Tip, f64),
     protocol: Protocol,
     reach: f64,
     max_eps: f64,
 ) -> Result<Option<(Axisymmetric, Option<ContactState>)>> {
+    let cap = match tip {
+        Tip::Sphere { radius } => 0.95 * radius,
+        _ => f64::INFINITY,
+    };
     let mut reach = reach;
     for widening in 0..=MAX_WIDENINGS {
         let Some(exact) = exact_to(substrate, reach, max_eps)? else {
             return Ok(None);
         };
-        let loading = exact.paraboloid(radius, work)?;
-        let peak = match protocol {
-            Protocol::Depth { depth }
-            | Protocol::Cycle {
-                max_depth: depth, ..
-            } => loading.at_depth(depth),
-            Protocol::Force { force }
-            | Protocol::ForceCycle {
-                max_force: force, ..
-            } => loading.at_force(force),
+        let peak = match (tip, protocol) {
+            (
+                Tip::Paraboloid { radius },
+                Protocol::Depth { depth }
+                | Protocol::Cycle {
+                    max_depth: depth, ..
+                },
+            ) => exact.paraboloid(radius, work)?.at_depth(depth),
+            (
+                Tip::Paraboloid { radius },
+                Protocol::Force { force }
+                | Protocol::ForceCycle {
+                    max_force: force, ..
+                },
+            ) => exact.paraboloid(radius, work)?.at_force(force),
+            (
+                _,
+                Protocol::Depth { depth }
+                | Protocol::Cycle {
+                    max_depth: depth, ..
+                },
+            ) => exact.tip(tip, work)?.at_depth(depth),
+            (
+                _,
+                Protocol::Force { force }
+                | Protocol::ForceCycle {
+                    max_force: force, ..
+                },
+            ) => exact.tip(tip, work)?.at_force(force),
         };
         match peak {
+            // Beyond a sphere's cap a wider table does not help.
+            Err(Error::InvalidParameter {
+                name: "depth" | "force",
+                ..
+            }) if reach >= cap => return Ok(None),
             Err(Error::InvalidParameter {
                 name: "depth" | "force",
                 ..

@@ -105,9 +105,9 @@ impl Scene {
         // twice the non-adhesive estimate (1.0 mm against 0.18 mm for an
         // adhesive paraboloid on a thin layer over a base a thousand times
         // softer), past what growing the grid reaches.
-        let (exact, peak) = super::reference::paraboloid_peak(
+        let (exact, peak) = super::reference::tip_peak(
             &substrate,
-            (radius, advancing),
+            (crate::analytic::Tip::Paraboloid { radius }, advancing),
             self.protocol,
             reach,
             SIZING_MAX_EPS,

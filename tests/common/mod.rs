@@ -7,10 +7,16 @@ use std::time::Duration;
 /// a hang (`LAYERED_CONTACT_CASE_SECONDS`, default 60: the slowest case of
 /// the heavy runs takes a few seconds on 2 cores).
 pub fn case_seconds() -> u64 {
-    std::env::var("LAYERED_CONTACT_CASE_SECONDS")
+    env_number("LAYERED_CONTACT_CASE_SECONDS", 60)
+}
+
+/// The number in the environment variable `name`, or `default` where it is
+/// unset or does not parse (the switches of the heavy test runs).
+pub fn env_number<T: std::str::FromStr>(name: &str, default: T) -> T {
+    std::env::var(name)
         .ok()
         .and_then(|v| v.parse().ok())
-        .unwrap_or(60)
+        .unwrap_or(default)
 }
 
 /// Whether `e` is one of the typed refusals a solve may end in on an

@@ -115,7 +115,7 @@ impl CosineKernel {
 /// ```
 #[derive(Debug, Clone)]
 pub struct Axisymmetric {
-    contact_modulus: f64,
+    pub(in crate::analytic) contact_modulus: f64,
     /// Layer thickness; `None` for a half-space.
     thickness: Option<f64>,
     kernel: Option<Arc<CosineKernel>>,

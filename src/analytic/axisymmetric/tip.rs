@@ -173,7 +173,7 @@ impl Tip {
     /// The largest contact radius the tip admits, m: `0.95 R` for a
     /// spherical cap (its slope grows without bound at the equator),
     /// unbounded otherwise.
-    pub(super) fn max_contact_radius(&self) -> f64 {
+    pub(in crate::analytic) fn max_contact_radius(&self) -> f64 {
         match *self {
             Tip::Sphere { radius } => MAX_CAP * radius,
             _ => f64::INFINITY,
@@ -229,9 +229,9 @@ fn sphere_equivalent(radius: f64, x: f64) -> f64 {
 /// A tip on the coated half-space, as functions of the contact radius.
 #[derive(Debug, Clone)]
 pub struct LayeredTip {
-    body: Axisymmetric,
-    tip: Tip,
-    work_of_adhesion: f64,
+    pub(in crate::analytic) body: Axisymmetric,
+    pub(in crate::analytic) tip: Tip,
+    pub(in crate::analytic) work_of_adhesion: f64,
 }
 
 /// The four numbers a contact radius needs: `Integral psi_1`, `psi_1(1)`,

@@ -89,6 +89,11 @@ struct Node {
     shape_energy: Fit,
 }
 
+/// The fewest cells of a set a receding contact may snap onto past a
+/// minimum of its balance (four times the family's smallest, a disc of
+/// about 3.4 cells' radius); a smaller one comes off instead.
+const RESOLVED_CELLS: usize = 4 * super::MIN_CELLS;
+
 /// The set terms at one contact area.
 #[derive(Debug, Clone, Copy)]
 struct Local {
@@ -465,12 +470,23 @@ impl AdhesiveBranches {
         }
         if target < receding(start) {
             // Recede: the first area below `start` where the balance holds.
-            let mut hi = start;
+            // A landing past a minimum of the balance is a snap to a smaller
+            // contact; onto a set the grid hardly resolves it is the
+            // staircase's, not the body's (a punch on a layer over a base
+            // 1800 times softer, 16 cells across: a 12-cell disc held at
+            // twice the depth the exact solution comes off at, with 1.8
+            // times its pull-off force), and the contact comes off.
+            let (mut hi, mut previous, mut snapped) = (start, receding(start), false);
             for node in nodes.iter().rev().filter(|n| n.area < start) {
-                if receding(node.area) <= target {
+                let value = receding(node.area);
+                if value <= target {
+                    if snapped && node.cells < RESOLVED_CELLS {
+                        return Ok(0.0);
+                    }
                     return Ok(self.crossing(node.area, hi, target, Edge::Receding, load));
                 }
-                hi = node.area;
+                snapped |= value > previous;
+                (hi, previous) = (node.area, value);
             }
             return Ok(0.0);
         }
