@@ -91,8 +91,11 @@
 //! base, `a/h = 1`: 0.067, 0.086, 0.091 % at 64, 128, 256 cells) while on
 //! the half-space it reaches `7e-6` at 256: the stall was the bias of its
 //! local quadratic fits in `(ln r, ln y)` over 35 % of the radius, exact
-//! for the half-space's power laws and not for a layer's terms. On a layer
-//! at least 8 cells thick under a curved indenter the family's sets are
+//! for the half-space's power laws and not for a layer's terms. On a
+//! layered body under a curved indenter (any layer thickness since
+//! 2026-11-29: a sphere pressed to 0.85 of its radius into a stack of
+//! layers about a cell thick came out 12 % under its exact peak force with
+//! the wide family, 1.0 % with this one) the family's sets are
 //! now 2.5 % of the radius apart and the fits span 10 % (at least one and
 //! four cells): 0.0026, 0.017, 0.0014 % on that case, and every layered
 //! body of the table below `1e-4` at 256 cells (`BENCHMARKS.md`), for

@@ -105,18 +105,55 @@ impl Scene {
         // twice the non-adhesive estimate (1.0 mm against 0.18 mm for an
         // adhesive paraboloid on a thin layer over a base a thousand times
         // softer), past what growing the grid reaches.
-        let (exact, peak) = super::reference::tip_peak(
+        let Some((exact, peak)) = super::reference::tip_peak(
             &substrate,
             (crate::analytic::Tip::Paraboloid { radius }, advancing),
             self.protocol,
             reach,
             SIZING_MAX_EPS,
         )
-        .ok()??;
+        .ok()?
+        else {
+            return self.base_jkr_radii(&substrate, radius, estimate);
+        };
         let peak = peak?;
         let ball = exact.paraboloid(radius, receding).ok()?;
         let pull_off = ball.load_controlled_pull_off().ok()?.contact_radius;
         Some((peak.contact_radius, pull_off))
+    }
+
+    /// Where the exact table stops short of the contact (beyond
+    /// [`SIZING_MAX_EPS`] layer thicknesses: layers on an elastic base
+    /// thousands of times softer, whose contact is so wide that the base
+    /// sets it): JKR on a half-space of the base (the long-wave limit of the
+    /// body; the layers only stiffen it), or the non-adhesive `estimate`
+    /// where that is wider. `None` on a rigid base. Three random scenes of
+    /// this kind, whose grids the non-adhesive estimate had made 10 to 30
+    /// times too narrow, now run (`tests/scene_reference.rs`).
+    fn base_jkr_radii(
+        &self,
+        substrate: &crate::substrate::Substrate,
+        radius: f64,
+        estimate: f64,
+    ) -> Option<(f64, f64)> {
+        let (advancing, receding) = self.adhesion.works()?;
+        let base = crate::material::Material::new(substrate.deep_contact_modulus(), 0.0).ok()?;
+        let loading = crate::analytic::JkrSphere::new(&base, radius, advancing).ok()?;
+        let peak = match self.protocol {
+            Protocol::Depth { depth }
+            | Protocol::Cycle {
+                max_depth: depth, ..
+            } => loading.contact_radius_at_depth(depth),
+            Protocol::Force { force }
+            | Protocol::ForceCycle {
+                max_force: force, ..
+            } => loading.contact_radius_at_force(force),
+        }?;
+        let pull_off = crate::analytic::JkrSphere::new(&base, radius, receding)
+            .ok()?
+            .pull_off_contact_radius();
+        let peak = peak.max(estimate);
+        (peak.is_normal() && pull_off.is_normal()).then_some((peak, pull_off))
     }
 
     /// The cohesive zone this scene's adhesion is solved with, `None`
