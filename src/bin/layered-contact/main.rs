@@ -311,7 +311,12 @@ fn check(scene: &Scene, ranks: Option<usize>) -> Result<()> {
 fn reference(scene: &Scene) -> Result<()> {
     let references = scene.reference()?;
     if references.is_empty() {
-        say!("no exact values for this scene (they exist for an untilted flat punch, paraboloid or sphere on an isolated grid)");
+        say!(
+            "no exact values for this scene (they exist for an untilted flat punch, paraboloid \
+             or sphere on an isolated grid, whose contact stays within 50 top-layer thicknesses \
+             and, for a sphere, within 0.95 of its radius; a punch without adhesion only where \
+             its bonded face presses everywhere)"
+        );
     }
     for r in references {
         say!("{}: {:.9e} ({})", r.quantity.name(), r.value, r.source);
