@@ -85,9 +85,15 @@ impl Scene {
     /// peak's. `None` where there is none, or it fails.
     fn adhesive_radii(&self, estimate: f64) -> Option<(f64, f64)> {
         let (advancing, receding) = self.adhesion.works()?;
-        let (IndenterSpec::Sphere { radius } | IndenterSpec::Paraboloid { radius }) = self.indenter
-        else {
-            return None;
+        // A sphere by its own solution: its paraboloid's contact is wider
+        // (at 0.8 of the radius the paraboloid's pull-off contact came to
+        // 1.6 radii, and the grid resolved half the cells asked for).
+        let (tip, radius) = match self.indenter {
+            IndenterSpec::Sphere { radius } => (crate::analytic::Tip::Sphere { radius }, radius),
+            IndenterSpec::Paraboloid { radius } => {
+                (crate::analytic::Tip::Paraboloid { radius }, radius)
+            }
+            _ => return None,
         };
         if receding == 0.0 {
             return None;
@@ -107,7 +113,7 @@ impl Scene {
         // softer), past what growing the grid reaches.
         let Some((exact, peak)) = super::reference::tip_peak(
             &substrate,
-            (crate::analytic::Tip::Paraboloid { radius }, advancing),
+            (tip, advancing),
             self.protocol,
             reach,
             SIZING_MAX_EPS,
@@ -117,9 +123,17 @@ impl Scene {
             return self.base_jkr_radii(&substrate, radius, estimate);
         };
         let peak = peak?;
-        let ball = exact.paraboloid(radius, receding).ok()?;
-        let pull_off = ball.load_controlled_pull_off().ok()?.contact_radius;
-        Some((peak.contact_radius, pull_off))
+        let pull_off = match tip {
+            crate::analytic::Tip::Sphere { .. } => {
+                exact.tip(tip, receding).ok()?.pull_off().ok()?.load_control
+            }
+            _ => exact
+                .paraboloid(radius, receding)
+                .ok()?
+                .load_controlled_pull_off()
+                .ok()?,
+        };
+        Some((peak.contact_radius, pull_off.contact_radius))
     }
 
     /// Where the exact table stops short of the contact (beyond
