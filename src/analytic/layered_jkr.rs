@@ -102,12 +102,11 @@ impl Branch for LayeredTip {
         }
     }
     fn least(&self, by_force: bool) -> Result<ContactState> {
-        let pull_off = self.pull_off()?;
-        Ok(if by_force {
-            pull_off.load_control
+        if by_force {
+            self.load_controlled_pull_off()
         } else {
-            pull_off.displacement_control
-        })
+            Ok(self.pull_off()?.displacement_control)
+        }
     }
 }
 

@@ -30,30 +30,26 @@ pub(super) fn run(
         iterations: 0,
         interrupt: solver.interrupt().cloned(),
     };
-    // A cycle's first step between the indenter's apex and its lowest cell
-    // centre would miss the contact that jumps in at touch (a paraboloid
-    // of 0.73 mm at 16 cells across a 1.2 mm contact: its apex between
-    // four centres 6 um below them, a step at 4.8 um reported no contact
-    // where 32 cells find -1.3 uN): the scene's grid is rebuilt with a
-    // centre on the axis, as for a peak that misses it.
-    if let Protocol::Cycle { max_depth, steps } = scene.protocol {
-        let first = max_depth / steps.max(1) as f64;
-        if first > 0.0
-            && !scene.indenter.is_map()
-            && scene.untilted()
-            && first <= solver.lowest_height(indenter)?
-        {
+    if let Reach::Depth(depth) = reach {
+        let lowest = solver.lowest_height(indenter)?;
+        // An indenter's lowest point is on its axis at height 0: past it, it
+        // touches (and a JKR contact jumps in), whether or not a cell centre
+        // does. A depth-driven step in between would miss that contact (a
+        // paraboloid of 0.73 mm at 16 cells across a 1.2 mm contact: its
+        // apex between four centres 6 um below them, a cycle's first step at
+        // 4.8 um reported no contact where 32 cells find -1.3 uN): the
+        // scene's grid is rebuilt with a centre on the axis. A height map is
+        // its own samples.
+        let first = match scene.protocol {
+            Protocol::Cycle { max_depth, steps } if scene.untilted() => {
+                max_depth / steps.max(1) as f64
+            }
+            _ => depth,
+        };
+        if first > 0.0 && first <= lowest && !scene.indenter.is_map() {
             return Ok(Outcome::MissesTip);
         }
-    }
-    if let Reach::Depth(depth) = reach {
-        if depth <= solver.lowest_height(indenter)? {
-            // An indenter's lowest point is on its axis at height 0: past
-            // it, it touches (and a JKR contact jumps in), whether or not
-            // a cell centre does. A height map is its own samples.
-            if depth > 0.0 && !scene.indenter.is_map() {
-                return Ok(Outcome::MissesTip);
-            }
+        if depth <= lowest {
             // The indenter never touches: every step is free.
             recorder.free(Phase::Loading, depth)?;
             return Ok(done(solver, recorder.steps, None, false));

@@ -177,10 +177,13 @@ impl Scene {
                         _ => exact.paraboloid(radius, receding)?.at_contact_radius(a),
                     };
                     let pull_off = match tip {
-                        Tip::Sphere { .. } => exact.tip(tip, receding)?.pull_off()?,
-                        _ => exact.paraboloid(radius, receding)?.pull_off()?,
-                    }
-                    .load_control;
+                        Tip::Sphere { .. } => {
+                            exact.tip(tip, receding)?.load_controlled_pull_off()?
+                        }
+                        _ => exact
+                            .paraboloid(radius, receding)?
+                            .load_controlled_pull_off()?,
+                    };
                     // A contact pinned at a peak narrower than the receding
                     // pull-off's (a receding work well above the advancing
                     // one) comes off as its edge lets go, at the receding

@@ -124,9 +124,11 @@ impl Scene {
         };
         let peak = peak?;
         let pull_off = match tip {
-            crate::analytic::Tip::Sphere { .. } => {
-                exact.tip(tip, receding).ok()?.pull_off().ok()?.load_control
-            }
+            crate::analytic::Tip::Sphere { .. } => exact
+                .tip(tip, receding)
+                .ok()?
+                .load_controlled_pull_off()
+                .ok()?,
             _ => exact
                 .paraboloid(radius, receding)
                 .ok()?

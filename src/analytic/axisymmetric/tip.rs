@@ -435,11 +435,17 @@ impl LayeredTip {
     /// [`LayeredTip::at_contact_radius`].
     pub fn pull_off(&self) -> Result<PullOff> {
         let (lo, hi) = self.range()?;
-        let state = |a: f64| self.at_contact_radius(a);
         Ok(PullOff {
-            load_control: minimise(lo, hi, state, |s| s.force)?,
-            displacement_control: minimise(lo, hi, state, |s| s.depth)?,
+            load_control: self.load_controlled_pull_off()?,
+            displacement_control: minimise(lo, hi, |a| self.at_contact_radius(a), |s| s.depth)?,
         })
+    }
+
+    /// The load-controlled half of [`pull_off`](Self::pull_off), at half
+    /// the cost (a Nystrom solve for each radius it tries).
+    pub(crate) fn load_controlled_pull_off(&self) -> Result<ContactState> {
+        let (lo, hi) = self.range()?;
+        minimise(lo, hi, |a| self.at_contact_radius(a), |s| s.force)
     }
 
     /// The pull-off of the tip held by a spring of stiffness `stiffness`

@@ -177,7 +177,7 @@ impl ContactSolver {
         // The sets' relative spacing and the fits' relative window, for
         // every widening (the profile does not change).
         let (relative_spacing, window) = if strip.is_none() {
-            self.family_fractions()
+            self.family_fractions(lowest)
         } else {
             (0.0, 0.0)
         };
@@ -257,7 +257,7 @@ impl ContactSolver {
 
     /// The family's relative set spacing and fit half-window, as fractions
     /// of the radius: the finer ones for a curved profile (no flat face:
-    /// more than four cells at the lowest height) on a layered body, else
+    /// more than four cells at `lowest`, the profile's least height) on a layered body, else
     /// the wider ones, for a half-space's power laws and a punch's sets
     /// pinned at the rim (whose pull-off on a layer they move by -0.5 %).
     /// Until 2026-11-29 a layer thinner than 8 cells, or a profile with
@@ -270,10 +270,14 @@ impl ContactSolver {
     /// 1.0 %. Over 400 random axisymmetric scenes (`tests/reference_sweep.rs`,
     /// seeds 7 and 11) one other moved by more than 0.5 % (a pull-off
     /// from 1.6 to 3.1 %), the paper example not at all.
-    fn family_fractions(&self) -> (f64, f64) {
-        let profile = &self.workspace.profile;
-        let lowest = profile.iter().copied().fold(f64::INFINITY, f64::min);
-        let flat_face = profile.iter().filter(|&&h| h == lowest).count() > 4;
+    fn family_fractions(&self, lowest: f64) -> (f64, f64) {
+        let flat_face = self
+            .workspace
+            .profile
+            .iter()
+            .filter(|&&h| h == lowest)
+            .count()
+            > 4;
         if self.substrate.top_thickness().is_some() && !flat_face {
             (LAYER_NODE_RELATIVE_SPACING, LAYER_FIT_RELATIVE_WINDOW)
         } else {
