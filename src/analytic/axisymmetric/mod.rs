@@ -122,6 +122,10 @@ pub struct Axisymmetric {
     max_eps: f64,
 }
 
+/// A third right-hand side of the Nystrom equation, `(kernel, eps, xi) ->
+/// r(xi)`.
+type ExtraRhs<'a> = dyn Fn(&CosineKernel, f64, f64) -> f64 + 'a;
+
 /// A converged Nystrom solution on `[0, 1]` for a given `eps`.
 #[derive(Debug, Clone)]
 struct Nystrom {
@@ -131,6 +135,11 @@ struct Nystrom {
     /// Solutions for the right-hand sides `1` and `xi^2`.
     unit: Vec<f64>,
     quadratic: Vec<f64>,
+    /// `Integral_0^1 chi` and `chi(1)` for a third right-hand side `r`
+    /// (`chi = r + K chi`), if one was asked for: a tip's profile
+    /// ([`super::LayeredTip`]) solved with the same factorisation and
+    /// converged with the others.
+    extra: Option<[f64; 2]>,
     kernel: Option<Arc<CosineKernel>>,
     /// Relative change at the last doubling.
     change: f64,
@@ -144,6 +153,7 @@ impl Nystrom {
             weights: Vec::new(),
             unit: Vec::new(),
             quadratic: Vec::new(),
+            extra: None,
             kernel: None,
             change: 0.0,
         }
@@ -160,8 +170,14 @@ impl Nystrom {
         eps * eps / PI * (sign * kernel.slope(eps * (xi - s).abs()) + kernel.slope(eps * (xi + s)))
     }
 
-    /// Solves at `order` points.
-    fn solve(kernel: &Arc<CosineKernel>, eps: f64, order: usize) -> Result<Self> {
+    /// Solves at `order` points, for the right-hand sides `1`, `xi^2` and
+    /// `extra` if given.
+    fn solve(
+        kernel: &Arc<CosineKernel>,
+        eps: f64,
+        order: usize,
+        extra: Option<&dyn Fn(f64) -> f64>,
+    ) -> Result<Self> {
         let rule = gauss(order);
         let (nodes, weights): (Vec<f64>, Vec<f64>) =
             rule.iter().map(|(x, w)| (0.5 * (x + 1.0), 0.5 * w)).unzip();
@@ -179,22 +195,42 @@ impl Nystrom {
         };
         let unit = solve(DVector::from_element(n, 1.0))?;
         let quadratic = solve(DVector::from_iterator(n, nodes.iter().map(|x| x * x)))?;
+        let extra = match extra {
+            None => None,
+            Some(rhs) => {
+                let chi = solve(DVector::from_iterator(n, nodes.iter().map(|&x| rhs(x))))?;
+                let integral = weights.iter().zip(chi.iter()).map(|(w, v)| w * v).sum();
+                let edge = rhs(1.0)
+                    + nodes
+                        .iter()
+                        .zip(&weights)
+                        .zip(chi.iter())
+                        .map(|((s, w), v)| w * Self::kernel_at(kernel, eps, 1.0, *s) * v)
+                        .sum::<f64>();
+                Some([integral, edge])
+            }
+        };
         Ok(Nystrom {
             eps,
             nodes,
             weights,
             unit: unit.as_slice().to_vec(),
             quadratic: quadratic.as_slice().to_vec(),
+            extra,
             kernel: Some(Arc::clone(kernel)),
             change: f64::INFINITY,
         })
     }
 
-    /// Doubles the order until integral and edge value of both solutions
+    /// Doubles the order until integral and edge value of every solution
     /// have converged.
-    fn converged(kernel: &Arc<CosineKernel>, eps: f64) -> Result<Self> {
+    fn converged(
+        kernel: &Arc<CosineKernel>,
+        eps: f64,
+        extra: Option<&dyn Fn(f64) -> f64>,
+    ) -> Result<Self> {
         let mut order = MIN_ORDER.max((4.0 * eps).ceil() as usize);
-        let mut previous = Self::solve(kernel, eps, order)?;
+        let mut previous = Self::solve(kernel, eps, order, extra)?;
         let mut last_change = f64::INFINITY;
         loop {
             order *= 2;
@@ -211,16 +247,20 @@ impl Nystrom {
                     residual: previous.change,
                 });
             }
-            let mut next = Self::solve(kernel, eps, order)?;
-            let change = [
+            let mut next = Self::solve(kernel, eps, order, extra)?;
+            let mut pairs = vec![
                 (next.integral(false), previous.integral(false)),
                 (next.edge(false), previous.edge(false)),
                 (next.integral(true), previous.integral(true)),
                 (next.edge(true), previous.edge(true)),
-            ]
-            .iter()
-            .map(|(a, b)| ((a - b) / a.abs().max(f64::MIN_POSITIVE)).abs())
-            .fold(0.0, f64::max);
+            ];
+            if let (Some(a), Some(b)) = (next.extra, previous.extra) {
+                pairs.extend([(a[0], b[0]), (a[1], b[1])]);
+            }
+            let change = pairs
+                .iter()
+                .map(|(a, b)| ((a - b) / a.abs().max(f64::MIN_POSITIVE)).abs())
+                .fold(0.0, f64::max);
             next.change = change;
             // Converged, or at the rounding floor: the change no longer
             // falls (the Nystrom error falls exponentially with the order
@@ -374,6 +414,16 @@ impl Axisymmetric {
 
     /// `eps = a/h` of a contact radius, checked against the tabulated range.
     fn nystrom(&self, radius: f64) -> Result<(f64, Nystrom)> {
+        self.nystrom_with(radius, None)
+    }
+
+    /// [`Axisymmetric::nystrom`] with a third right-hand side, given the
+    /// kernel and `eps` (see [`Nystrom::extra`]).
+    fn nystrom_with(
+        &self,
+        radius: f64,
+        extra: Option<&ExtraRhs>,
+    ) -> Result<(f64, Nystrom)> {
         let radius = positive_finite("radius", radius)?;
         match (&self.kernel, self.thickness) {
             (Some(kernel), Some(h)) => {
@@ -385,7 +435,9 @@ impl Axisymmetric {
                         expected: "within the range given to Axisymmetric::new",
                     });
                 }
-                Ok((radius, Nystrom::converged(kernel, eps)?))
+                let rhs = extra.map(|f| move |xi: f64| f(kernel, eps, xi));
+                let rhs = rhs.as_ref().map(|f| f as &dyn Fn(f64) -> f64);
+                Ok((radius, Nystrom::converged(kernel, eps, rhs)?))
             }
             _ => Ok((radius, Nystrom::trivial())),
         }

@@ -18,17 +18,12 @@ use std::sync::OnceLock;
 
 use gauss_quad::legendre::GaussLegendre;
 
-use nalgebra::{DMatrix, DVector};
-
-use super::{gauss, minimise, Axisymmetric, ContactState, Nystrom, PullOff, MAX_ORDER};
+use super::{gauss, minimise, Axisymmetric, ContactState, CosineKernel, Nystrom, PullOff};
 use crate::error::{non_negative_finite, positive_finite, Error, Result};
 
 /// Points of the piecewise Gauss-Legendre rule for `K g` and `Integral g`
 /// per piece (the integrands are smooth within a piece).
 const PIECE_ORDER: usize = 64;
-/// Relative change of `Integral psi_g` and `psi_g(1)` between a Nystrom
-/// order and its double that counts as converged.
-const CONVERGED: f64 = 1e-10;
 /// The piecewise rule, built once.
 fn piece_rule() -> &'static GaussLegendre {
     static RULE: OnceLock<GaussLegendre> = OnceLock::new();
@@ -295,7 +290,6 @@ impl LayeredTip {
                 });
             }
         }
-        let (_, unit) = self.body.nystrom(a)?;
         let g = |xi: f64| self.tip.equivalent_profile(a * xi);
         let mut breaks = vec![0.0];
         breaks.extend(self.tip.kink().map(|b| b / a).filter(|&k| k < 1.0));
@@ -314,69 +308,21 @@ impl LayeredTip {
             .map(|(s, weight)| (s, weight * g(s)))
             .collect();
         let integral_g: f64 = weighted.iter().map(|(_, wg)| wg).sum();
-        let unit_values = [unit.integral(false), unit.edge(false)];
-        let Some(kernel) = unit.kernel.as_ref() else {
-            return Ok(Solved {
-                eps: unit.eps,
-                unit: unit_values,
-                profile: [integral_g, g(1.0)],
-            });
-        };
-        let kg = |xi: f64| -> f64 {
+        // `chi = K g + K chi` shares the flat punch's factorisations and is
+        // converged with its solutions.
+        let kg = |kernel: &CosineKernel, eps: f64, xi: f64| -> f64 {
             weighted
                 .iter()
-                .map(|&(s, wg)| wg * Nystrom::kernel_at(kernel, unit.eps, xi, s))
+                .map(|&(s, wg)| wg * Nystrom::kernel_at(kernel, eps, xi, s))
                 .sum()
         };
-        let chi = |order: usize| -> Result<[f64; 2]> {
-            let (nodes, weights): (Vec<f64>, Vec<f64>) = gauss(order)
-                .iter()
-                .map(|(x, w)| (0.5 * (x + 1.0), 0.5 * w))
-                .unzip();
-            let n = nodes.len();
-            let matrix = DMatrix::from_fn(n, n, |i, j| {
-                let delta = if i == j { 1.0 } else { 0.0 };
-                delta - weights[j] * Nystrom::kernel_at(kernel, unit.eps, nodes[i], nodes[j])
-            });
-            let rhs = DVector::from_iterator(n, nodes.iter().map(|&x| kg(x)));
-            let values = matrix.lu().solve(&rhs).ok_or(Error::Internal {
-                what: "Nystrom solve of a tip's profile",
-                detail: "singular matrix".to_string(),
-            })?;
-            let integral: f64 = weights.iter().zip(values.iter()).map(|(w, v)| w * v).sum();
-            let edge = kg(1.0)
-                + nodes
-                    .iter()
-                    .zip(&weights)
-                    .zip(values.iter())
-                    .map(|((s, w), v)| w * Nystrom::kernel_at(kernel, unit.eps, 1.0, *s) * v)
-                    .sum::<f64>();
-            Ok([integral_g + integral, g(1.0) + edge])
-        };
-        let mut order = unit.nodes.len();
-        let mut previous = chi(order)?;
-        loop {
-            order *= 2;
-            let next = chi(order)?;
-            let scale = next[0].abs() + next[1].abs();
-            let change = ((next[0] - previous[0]).abs() + (next[1] - previous[1]).abs())
-                / scale.max(f64::MIN_POSITIVE);
-            if change < CONVERGED {
-                return Ok(Solved {
-                    eps: unit.eps,
-                    unit: unit_values,
-                    profile: next,
-                });
-            }
-            if 2 * order > MAX_ORDER {
-                return Err(Error::NoConvergence {
-                    method: "Nystrom discretisation of a tip's profile",
-                    iterations: order,
-                    residual: change,
-                });
-            }
-            previous = next;
-        }
+        let (_, unit) = self.body.nystrom_with(a, Some(&kg))?;
+        let chi = unit.extra.unwrap_or([0.0, 0.0]);
+        Ok(Solved {
+            eps: unit.eps,
+            unit: [unit.integral(false), unit.edge(false)],
+            profile: [integral_g + chi[0], g(1.0) + chi[1]],
+        })
     }
 
     fn state_at_depth(&self, a: f64, depth: f64, solved: &Solved) -> ContactState {
@@ -396,7 +342,7 @@ impl LayeredTip {
     /// As [`Axisymmetric::flat_punch`], and [`Error::InvalidParameter`] for
     /// a spherical cap's contact beyond 0.95 of its radius;
     /// [`Error::NoConvergence`] if the profile's solution does not converge
-    /// by order 4096.
+    /// with the flat punch's (by order 4096).
     pub fn at_contact_radius(&self, contact_radius: f64) -> Result<ContactState> {
         let solved = self.solved(contact_radius)?;
         let e = self.body.contact_modulus;
