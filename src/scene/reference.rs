@@ -172,18 +172,8 @@ impl Scene {
                     });
                 }
                 if adhesive && receding > 0.0 {
-                    let state = |a: f64| match tip {
-                        Tip::Sphere { .. } => exact.tip(tip, receding)?.at_contact_radius(a),
-                        _ => exact.paraboloid(radius, receding)?.at_contact_radius(a),
-                    };
-                    let pull_off = match tip {
-                        Tip::Sphere { .. } => {
-                            exact.tip(tip, receding)?.load_controlled_pull_off()?
-                        }
-                        _ => exact
-                            .paraboloid(radius, receding)?
-                            .load_controlled_pull_off()?,
-                    };
+                    let unloading = exact.tip(tip, receding)?;
+                    let pull_off = unloading.load_controlled_pull_off()?;
                     // A contact pinned at a peak narrower than the receding
                     // pull-off's (a receding work well above the advancing
                     // one) comes off as its edge lets go, at the receding
@@ -193,7 +183,7 @@ impl Scene {
                     // pull-off's.
                     let force = match peak.filter(|s| s.contact_radius > 0.0) {
                         Some(p) if p.contact_radius < pull_off.contact_radius => {
-                            state(p.contact_radius)?.force
+                            unloading.at_contact_radius(p.contact_radius)?.force
                         }
                         _ => pull_off.force,
                     };
@@ -246,35 +236,16 @@ pub(super) fn tip_peak(
         let Some(exact) = exact_to(substrate, reach, max_eps)? else {
             return Ok(None);
         };
-        let peak = match (tip, protocol) {
-            (
-                Tip::Paraboloid { radius },
-                Protocol::Depth { depth }
-                | Protocol::Cycle {
-                    max_depth: depth, ..
-                },
-            ) => exact.paraboloid(radius, work)?.at_depth(depth),
-            (
-                Tip::Paraboloid { radius },
-                Protocol::Force { force }
-                | Protocol::ForceCycle {
-                    max_force: force, ..
-                },
-            ) => exact.paraboloid(radius, work)?.at_force(force),
-            (
-                _,
-                Protocol::Depth { depth }
-                | Protocol::Cycle {
-                    max_depth: depth, ..
-                },
-            ) => exact.tip(tip, work)?.at_depth(depth),
-            (
-                _,
-                Protocol::Force { force }
-                | Protocol::ForceCycle {
-                    max_force: force, ..
-                },
-            ) => exact.tip(tip, work)?.at_force(force),
+        let tip_solution = exact.tip(tip, work)?;
+        let peak = match protocol {
+            Protocol::Depth { depth }
+            | Protocol::Cycle {
+                max_depth: depth, ..
+            } => tip_solution.at_depth(depth),
+            Protocol::Force { force }
+            | Protocol::ForceCycle {
+                max_force: force, ..
+            } => tip_solution.at_force(force),
         };
         match peak {
             // Beyond a sphere's cap a wider table does not help.

@@ -123,18 +123,11 @@ impl Scene {
             return self.base_jkr_radii(&substrate, radius, estimate);
         };
         let peak = peak?;
-        let pull_off = match tip {
-            crate::analytic::Tip::Sphere { .. } => exact
-                .tip(tip, receding)
-                .ok()?
-                .load_controlled_pull_off()
-                .ok()?,
-            _ => exact
-                .paraboloid(radius, receding)
-                .ok()?
-                .load_controlled_pull_off()
-                .ok()?,
-        };
+        let pull_off = exact
+            .tip(tip, receding)
+            .ok()?
+            .load_controlled_pull_off()
+            .ok()?;
         Some((peak.contact_radius, pull_off.contact_radius))
     }
 

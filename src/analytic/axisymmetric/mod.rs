@@ -419,11 +419,7 @@ impl Axisymmetric {
 
     /// [`Axisymmetric::nystrom`] with a third right-hand side, given the
     /// kernel and `eps` (see [`Nystrom::extra`]).
-    fn nystrom_with(
-        &self,
-        radius: f64,
-        extra: Option<&ExtraRhs>,
-    ) -> Result<(f64, Nystrom)> {
+    fn nystrom_with(&self, radius: f64, extra: Option<&ExtraRhs>) -> Result<(f64, Nystrom)> {
         let radius = positive_finite("radius", radius)?;
         match (&self.kernel, self.thickness) {
             (Some(kernel), Some(h)) => {

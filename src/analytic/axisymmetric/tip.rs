@@ -290,6 +290,17 @@ impl LayeredTip {
                 });
             }
         }
+        if let Tip::Paraboloid { radius } = self.tip {
+            // `g(a xi) = (a^2/R) xi^2`: the punch's own quadratic solution,
+            // as `LayeredParaboloid` has it (the same values).
+            let (_, unit) = self.body.nystrom(a)?;
+            let curvature = a * a / radius;
+            return Ok(Solved {
+                eps: unit.eps,
+                unit: [unit.integral(false), unit.edge(false)],
+                profile: [curvature * unit.integral(true), curvature * unit.edge(true)],
+            });
+        }
         let g = |xi: f64| self.tip.equivalent_profile(a * xi);
         let mut breaks = vec![0.0];
         breaks.extend(self.tip.kink().map(|b| b / a).filter(|&k| k < 1.0));
