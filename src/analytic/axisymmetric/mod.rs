@@ -223,14 +223,16 @@ impl Nystrom {
     }
 
     /// Doubles the order until integral and edge value of every solution
-    /// have converged.
+    /// have converged; `extra` is a third right-hand side and the scale its
+    /// solution's change is measured on.
     fn converged(
         kernel: &Arc<CosineKernel>,
         eps: f64,
-        extra: Option<&dyn Fn(f64) -> f64>,
+        extra: Option<(&dyn Fn(f64) -> f64, f64)>,
     ) -> Result<Self> {
+        let rhs = extra.map(|(f, _)| f);
         let mut order = MIN_ORDER.max((4.0 * eps).ceil() as usize);
-        let mut previous = Self::solve(kernel, eps, order, extra)?;
+        let mut previous = Self::solve(kernel, eps, order, rhs)?;
         let mut last_change = f64::INFINITY;
         loop {
             order *= 2;
@@ -247,20 +249,24 @@ impl Nystrom {
                     residual: previous.change,
                 });
             }
-            let mut next = Self::solve(kernel, eps, order, extra)?;
-            let mut pairs = vec![
+            let mut next = Self::solve(kernel, eps, order, rhs)?;
+            let pairs = [
                 (next.integral(false), previous.integral(false)),
                 (next.edge(false), previous.edge(false)),
                 (next.integral(true), previous.integral(true)),
                 (next.edge(true), previous.edge(true)),
             ];
-            if let (Some(a), Some(b)) = (next.extra, previous.extra) {
-                pairs.extend([(a[0], b[0]), (a[1], b[1])]);
-            }
-            let change = pairs
+            let mut change = pairs
                 .iter()
                 .map(|(a, b)| ((a - b) / a.abs().max(f64::MIN_POSITIVE)).abs())
                 .fold(0.0, f64::max);
+            // The extra solution's change on the scale its caller gives (a
+            // tip's `chi` beside its profile's own terms, which it corrects:
+            // `chi` itself may be a small difference).
+            if let (Some(a), Some(b), Some((_, scale))) = (next.extra, previous.extra, extra) {
+                let size = scale.max(a[0].abs() + a[1].abs()).max(f64::MIN_POSITIVE);
+                change = change.max(((a[0] - b[0]).abs() + (a[1] - b[1]).abs()) / size);
+            }
             next.change = change;
             // Converged, or at the rounding floor: the change no longer
             // falls (the Nystrom error falls exponentially with the order
@@ -418,8 +424,9 @@ impl Axisymmetric {
     }
 
     /// [`Axisymmetric::nystrom`] with a third right-hand side, given the
-    /// kernel and `eps` (see [`Nystrom::extra`]).
-    fn nystrom_with(&self, radius: f64, extra: Option<&ExtraRhs>) -> Result<(f64, Nystrom)> {
+    /// kernel and `eps` (see [`Nystrom::extra`]), and the scale its
+    /// solution converges on.
+    fn nystrom_with(&self, radius: f64, extra: Option<(&ExtraRhs, f64)>) -> Result<(f64, Nystrom)> {
         let radius = positive_finite("radius", radius)?;
         match (&self.kernel, self.thickness) {
             (Some(kernel), Some(h)) => {
@@ -431,8 +438,10 @@ impl Axisymmetric {
                         expected: "within the range given to Axisymmetric::new",
                     });
                 }
-                let rhs = extra.map(|f| move |xi: f64| f(kernel, eps, xi));
-                let rhs = rhs.as_ref().map(|f| f as &dyn Fn(f64) -> f64);
+                let rhs = extra.map(|(f, scale)| (move |xi: f64| f(kernel, eps, xi), scale));
+                let rhs = rhs
+                    .as_ref()
+                    .map(|(f, scale)| (f as &dyn Fn(f64) -> f64, *scale));
                 Ok((radius, Nystrom::converged(kernel, eps, rhs)?))
             }
             _ => Ok((radius, Nystrom::trivial())),

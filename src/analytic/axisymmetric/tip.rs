@@ -327,7 +327,10 @@ impl LayeredTip {
                 .map(|&(s, wg)| wg * Nystrom::kernel_at(kernel, eps, xi, s))
                 .sum()
         };
-        let (_, unit) = self.body.nystrom_with(a, Some(&kg))?;
+        // Converged on the scale of the profile's own terms, which `chi`
+        // corrects.
+        let scale = integral_g.abs() + g(1.0).abs();
+        let (_, unit) = self.body.nystrom_with(a, Some((&kg, scale)))?;
         let chi = unit.extra.unwrap_or([0.0, 0.0]);
         Ok(Solved {
             eps: unit.eps,
