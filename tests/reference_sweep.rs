@@ -18,7 +18,8 @@
 //! stack of thin layers 12 % under its exact peak force at any
 //! resolution (`tests/scene_reference.rs`).
 //!
-//! Seeds 13 and 17 (200 cases each, 2026-11-29) each draw a scene that
+//! Seeds 13 and 17 (200 cases each, 2026-11-29; measured in BENCHMARKS.md,
+//! "Slow scenes of the reference sweep") each draw a scene that
 //! passes the 60 s bound of a case, slow rather than wrong: a sphere on an
 //! incompressible layer resting on a base about a thousand times stiffer,
 //! whose pull-off contact is 44 (seed 17) and 53 (seed 13) times narrower
