@@ -315,3 +315,30 @@ fn a_scene_step_out_of_reach_is_taken_in_substeps() {
     // Measured 5e-14 apart: the same equilibria, to the search's rounding.
     assert!((held.0 / free.0 - 1.0).abs() < 1e-9, "{held:?} {free:?}");
 }
+
+/// A force cycle whose steps the cohesive path cannot resolve: a work of
+/// adhesion of 1e30 J/m^2 under a paraboloid of 10 mm (the grid sized to a
+/// pull-off contact some 1e7 m across, JKR's pull-off force about 5e28 N)
+/// cycled to 1 mN in steps of 0.25 mN. Every step landed on one and the
+/// same equilibrium (6.3e12 N), and the unloading into tension would have
+/// repeated it up to the protocol's bound of 100000 steps (hours). It now
+/// stops with a typed error naming the step after 32 such steps (4 s).
+#[cfg(feature = "serde")]
+#[test]
+fn a_force_cycle_whose_steps_the_path_cannot_resolve_is_a_typed_error() {
+    let text = "[substrate]\nkind = \"half_space\"\nyoungs_modulus = 1e6\npoisson_ratio = 0.48\n\
+                [indenter]\nkind = \"paraboloid\"\nradius = 10e-3\n\
+                [adhesion]\nkind = \"constant\"\nwork_of_adhesion = 1e30\n\
+                [protocol]\nkind = \"force_cycle\"\nmax_force = 1e-3\nsteps = 4\n\
+                [resolution]\ncells_across = 16\n\
+                [solver]\nadhesion_method = \"cohesive_zone\"\n";
+    let scene = Scene::from_toml(text).unwrap();
+    let outcome = common::bounded(move || scene.run(&mut |_| {}));
+    match outcome {
+        Err(Error::InvalidParameter { name, value, .. }) => {
+            assert_eq!(name, "protocol.max_force / steps (N)");
+            assert_eq!(value, 2.5e-4);
+        }
+        other => panic!("{other:?}"),
+    }
+}

@@ -79,6 +79,10 @@ struct Path {
     iterations: usize,
 }
 
+/// Consecutive unloading steps of a force cycle that may land on one and the
+/// same equilibrium before the cycle stops with a typed error.
+const STILL_STEPS: usize = 32;
+
 impl Runner<'_> {
     /// The scene's force protocol through the cohesive zone: from the
     /// touch up to `max_force`, in `steps` increments if `cycle` (from zero
@@ -158,6 +162,7 @@ impl Runner<'_> {
             // A punch's face bonded at its rim: its peeling path.
             return self.unload_peeled_force(max_force, increment, progress);
         }
+        let mut still = 0;
         for k in 1..=MAX_PROTOCOL_STEPS {
             let force = max_force - k as f64 * increment;
             let step = secant_step(&path, force).unwrap_or(fallback);
@@ -183,6 +188,23 @@ impl Runner<'_> {
                         return self.jump_off(&mut path, least, progress);
                     }
                 },
+            }
+            // A step that lands on the last one's equilibrium again: the
+            // decrement is below the force the path resolves (a work of
+            // adhesion whose forces dwarf the protocol's), and stepping
+            // on would only repeat it up to the protocol's bound.
+            let same = path.before.as_ref().is_some_and(|before| {
+                before.depth == path.current.depth && before.force == path.current.force
+            });
+            still = if same { still + 1 } else { 0 };
+            if still == STILL_STEPS {
+                return Err(Error::InvalidParameter {
+                    name: "protocol.max_force / steps (N)",
+                    value: increment,
+                    expected: "a force step the cohesive path resolves: the unloading stood \
+                               at one equilibrium for 32 steps (forces of adhesion that dwarf \
+                               the protocol's; raise max_force or lower the work of adhesion)",
+                });
             }
         }
         Err(Error::NoConvergence {
