@@ -18,12 +18,7 @@ pub(super) fn run(
     progress: &mut dyn FnMut(&Step),
     observer: &mut dyn Observer,
 ) -> Result<Outcome> {
-    let reach = match scene.protocol {
-        Protocol::Depth { depth } => Reach::Depth(depth),
-        Protocol::Cycle { max_depth, .. } => Reach::Depth(max_depth),
-        Protocol::Force { force } => Reach::Force(force),
-        Protocol::ForceCycle { max_force, .. } => Reach::Force(max_force),
-    };
+    let reach = scene.protocol.peak();
     let mut recorder = Recorder {
         steps: Vec::new(),
         progress,

@@ -140,6 +140,18 @@ pub struct Resolution {
 }
 
 impl Protocol {
+    /// The depth or force of the protocol's peak (its deepest depth or
+    /// largest force).
+    pub(crate) fn peak(&self) -> crate::solver::Reach {
+        use crate::solver::Reach;
+        match *self {
+            Protocol::Depth { depth } => Reach::Depth(depth),
+            Protocol::Cycle { max_depth, .. } => Reach::Depth(max_depth),
+            Protocol::Force { force } => Reach::Force(force),
+            Protocol::ForceCycle { max_force, .. } => Reach::Force(max_force),
+        }
+    }
+
     /// The name and value of what the protocol reaches for (a depth or a
     /// force, as in the scene file), for error messages.
     pub(crate) fn reach(&self) -> (&'static str, f64) {

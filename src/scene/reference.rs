@@ -5,6 +5,7 @@
 use crate::analytic::{Axisymmetric, ContactState, JkrSphere, Tip};
 use crate::error::{Error, Result};
 use crate::grid::Boundary;
+use crate::solver::Reach;
 use crate::substrate::Substrate;
 
 use super::{IndenterSpec, Protocol, Quantity, Scene};
@@ -85,8 +86,8 @@ impl Scene {
         let (advancing, receding) = self.adhesion.works().unwrap_or((0.0, 0.0));
         let adhesive = self.adhesion.works().is_some();
         let mut out = Vec::new();
-        match self.indenter {
-            IndenterSpec::FlatPunch { radius } => {
+        match (&self.indenter, curved_tip(&self.indenter)) {
+            (&IndenterSpec::FlatPunch { radius }, _) => {
                 let Some(exact) = exact_to(&substrate, radius, REFERENCE_MAX_EPS)? else {
                     return Ok(out);
                 };
@@ -124,25 +125,19 @@ impl Scene {
                     });
                 }
             }
-            IndenterSpec::Sphere { radius } | IndenterSpec::Paraboloid { radius } => {
-                let (tip, source) = if matches!(self.indenter, IndenterSpec::Sphere { .. }) {
-                    (Tip::Sphere { radius }, "exact axisymmetric sphere")
+            (_, Some((tip, radius))) => {
+                let source = if matches!(tip, Tip::Sphere { .. }) {
+                    "exact axisymmetric sphere"
                 } else {
-                    (Tip::Paraboloid { radius }, "exact axisymmetric paraboloid")
+                    "exact axisymmetric paraboloid"
                 };
                 // The widest contact wanted: twice the Hertz radius at the
                 // peak (a force-driven peak by the surface material's
                 // modulus), or a few JKR radii at pull-off.
                 let modulus = substrate.surface_material().contact_modulus();
-                let hertz = match self.protocol {
-                    Protocol::Depth { depth }
-                    | Protocol::Cycle {
-                        max_depth: depth, ..
-                    } => (radius * depth.max(0.0)).sqrt(),
-                    Protocol::Force { force }
-                    | Protocol::ForceCycle {
-                        max_force: force, ..
-                    } => (0.75 * force * radius / modulus).cbrt(),
+                let hertz = match self.protocol.peak() {
+                    Reach::Depth(depth) => (radius * depth.max(0.0)).sqrt(),
+                    Reach::Force(force) => (0.75 * force * radius / modulus).cbrt(),
                 };
                 let jkr = JkrSphere::new(substrate.surface_material(), radius, receding)?
                     .pull_off_contact_radius();
@@ -201,11 +196,20 @@ impl Scene {
 
     /// The deepest depth of a depth-driven protocol.
     fn peak_depth(&self) -> Option<f64> {
-        match self.protocol {
-            Protocol::Depth { depth } => Some(depth),
-            Protocol::Cycle { max_depth, .. } => Some(max_depth),
-            Protocol::Force { .. } | Protocol::ForceCycle { .. } => None,
+        match self.protocol.peak() {
+            Reach::Depth(depth) => Some(depth),
+            Reach::Force(_) => None,
         }
+    }
+}
+
+/// The exact solution's tip for a sphere or paraboloid indenter, and its
+/// radius (m); `None` for other indenters.
+pub(super) fn curved_tip(indenter: &IndenterSpec) -> Option<(Tip, f64)> {
+    match *indenter {
+        IndenterSpec::Sphere { radius } => Some((Tip::Sphere { radius }, radius)),
+        IndenterSpec::Paraboloid { radius } => Some((Tip::Paraboloid { radius }, radius)),
+        _ => None,
     }
 }
 
@@ -237,15 +241,9 @@ pub(super) fn tip_peak(
             return Ok(None);
         };
         let tip_solution = exact.tip(tip, work)?;
-        let peak = match protocol {
-            Protocol::Depth { depth }
-            | Protocol::Cycle {
-                max_depth: depth, ..
-            } => tip_solution.at_depth(depth),
-            Protocol::Force { force }
-            | Protocol::ForceCycle {
-                max_force: force, ..
-            } => tip_solution.at_force(force),
+        let peak = match protocol.peak() {
+            Reach::Depth(depth) => tip_solution.at_depth(depth),
+            Reach::Force(force) => tip_solution.at_force(force),
         };
         match peak {
             // Beyond a sphere's cap a wider table does not help.

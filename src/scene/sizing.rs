@@ -88,13 +88,7 @@ impl Scene {
         // A sphere by its own solution: its paraboloid's contact is wider
         // (at 0.8 of the radius the paraboloid's pull-off contact came to
         // 1.6 radii, and the grid resolved half the cells asked for).
-        let (tip, radius) = match self.indenter {
-            IndenterSpec::Sphere { radius } => (crate::analytic::Tip::Sphere { radius }, radius),
-            IndenterSpec::Paraboloid { radius } => {
-                (crate::analytic::Tip::Paraboloid { radius }, radius)
-            }
-            _ => return None,
-        };
+        let (tip, radius) = super::reference::curved_tip(&self.indenter)?;
         if receding == 0.0 {
             return None;
         }
@@ -148,15 +142,9 @@ impl Scene {
         let (advancing, receding) = self.adhesion.works()?;
         let base = crate::material::Material::new(substrate.deep_contact_modulus(), 0.0).ok()?;
         let loading = crate::analytic::JkrSphere::new(&base, radius, advancing).ok()?;
-        let peak = match self.protocol {
-            Protocol::Depth { depth }
-            | Protocol::Cycle {
-                max_depth: depth, ..
-            } => loading.contact_radius_at_depth(depth),
-            Protocol::Force { force }
-            | Protocol::ForceCycle {
-                max_force: force, ..
-            } => loading.contact_radius_at_force(force),
+        let peak = match self.protocol.peak() {
+            crate::solver::Reach::Depth(depth) => loading.contact_radius_at_depth(depth),
+            crate::solver::Reach::Force(force) => loading.contact_radius_at_force(force),
         }?;
         let pull_off = crate::analytic::JkrSphere::new(&base, radius, receding)
             .ok()?
