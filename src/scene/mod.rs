@@ -107,7 +107,11 @@ pub enum Protocol {
     /// recedes on the way down, and the unloading goes on into tension with
     /// the same increment until the pull-off force, which is added as an
     /// exact step (the jump-off under load control), followed by a step
-    /// without contact.
+    /// without contact. A cycle whose unloading would need more than 100000
+    /// steps to reach a tenth of the closed form's pull-off (JKR's for a
+    /// paraboloid, Kendall's for an untilted flat punch, the smaller of the
+    /// two for a sphere; isolated grids) is refused by `Scene::validate`
+    /// before any solve.
     ForceCycle {
         /// Maximum force, N.
         max_force: f64,
@@ -427,6 +431,22 @@ impl Scene {
             Protocol::ForceCycle { max_force, steps } => {
                 positive_finite("max_force", max_force)?;
                 check_steps(steps)?;
+                // The unloading walks down by the same decrement to the
+                // pull-off: where that lies beyond the protocol's bound
+                // of steps, say so now rather than after hours of solves.
+                let increment = max_force / steps as f64;
+                if let Some(bound) = self.pull_off_bound(&substrate) {
+                    if (max_force + bound) / increment > MAX_PROTOCOL_STEPS as f64 {
+                        return Err(Error::InvalidParameter {
+                            name: "protocol.max_force / steps (N)",
+                            value: increment,
+                            expected: "a force step that reaches the pull-off within 100000 \
+                                       unloading steps (a tenth of the closed form's pull-off \
+                                       already lies beyond them: raise max_force or lower \
+                                       steps)",
+                        });
+                    }
+                }
             }
         }
         let method = self.resolved_adhesion_method();

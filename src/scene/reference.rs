@@ -203,6 +203,47 @@ impl Scene {
     }
 }
 
+/// The closed form's pull-off over this factor bounds a force cycle's
+/// pull-off from below ([`Scene::pull_off_bound`]).
+const PULL_OFF_MARGIN: f64 = 10.0;
+
+impl Scene {
+    /// A lower bound (N, positive) on the magnitude of the pull-off force of
+    /// this scene's adhesive unloading, where a closed form gives one; `None`
+    /// elsewhere (periodic grids, cones, height maps, custom and tilted
+    /// flat indenters) and without adhesion. A tenth
+    /// ([`PULL_OFF_MARGIN`]) of:
+    ///
+    /// * a paraboloid: JKR's `3/2 pi R dgamma` (Johnson, Kendall & Roberts
+    ///   1971, Proc. R. Soc. A 324, 301), which does not depend on the
+    ///   body's modulus (a layered body's pull-off lies near it: between
+    ///   its two half-space limits);
+    /// * a sphere: the smaller of that and Kendall's punch of the sphere's
+    ///   radius, `sqrt(8 pi R^3 E* dgamma)` (Kendall 1971, J. Phys. D 4,
+    ///   1186), since its contact cannot pass the equator;
+    /// * an untilted flat punch: Kendall's of its radius;
+    ///
+    /// `E*` the softest contact modulus of the body (a softer body lets go
+    /// at a smaller force), `dgamma` the receding work of adhesion.
+    pub(super) fn pull_off_bound(&self, substrate: &Substrate) -> Option<f64> {
+        let (_, receding) = self.adhesion.works()?;
+        if self.boundary != Boundary::Isolated {
+            return None;
+        }
+        let modulus = substrate.softest_contact_modulus();
+        let kendall =
+            |radius: f64| (8.0 * std::f64::consts::PI * radius.powi(3) * modulus * receding).sqrt();
+        let jkr = |radius: f64| 1.5 * std::f64::consts::PI * radius * receding;
+        let closed = match self.indenter {
+            IndenterSpec::Paraboloid { radius } => jkr(radius),
+            IndenterSpec::Sphere { radius } => jkr(radius).min(kendall(radius)),
+            IndenterSpec::FlatPunch { radius } if self.untilted() => kendall(radius),
+            _ => return None,
+        };
+        Some(closed / PULL_OFF_MARGIN).filter(|b| b.is_finite())
+    }
+}
+
 /// The exact solution's tip for a sphere or paraboloid indenter, and its
 /// radius (m); `None` for other indenters.
 pub(super) fn curved_tip(indenter: &IndenterSpec) -> Option<(Tip, f64)> {
