@@ -25,16 +25,15 @@
 //! whose pull-off contact is 44 (seed 17) and 53 (seed 13) times narrower
 //! than its peak's. Sized for 16 cells across the pull-off contact, the
 //! grids are 1080 and 1296 cells across, and the energy balance solves
-//! about 140 sets of its family there (two clamped solves each, about 30
-//! iterations apiece: the conjugate gradients' rate on that body is 0.6 a
-//! step). Seed 17's, run through the tool at one thread, took 791 s and
-//! came within 0.001, 0.006 and 0.027 % of the exact peak force, contact
-//! radius and pull-off (seed 13's was stopped after 90 s, six sets). Seed
-//! 19 draws one more of the kind (a paraboloid on a 1.7 kPa layer resting
-//! on a nearly incompressible base 488 times stiffer, 672 cells across):
-//! 287 s, 124 sets, within 0.001, 0.003 and 0.063 %. Seed 23 ran 117
-//! cases without a failure or a slow one (the worst at 0.59 of its
-//! tolerance) before it was stopped.
+//! about 140 sets of its family there (two clamped solves each). Seed 19
+//! draws one more of the kind (a paraboloid on a 1.7 kPa layer resting on
+//! a nearly incompressible base 488 times stiffer, 672 cells across). All
+//! three come within 0.07 % of their exact values. Since 2026-11-30 the
+//! family's smaller sets are solved on windows of the grid around them
+//! (BENCHMARKS.md, "The family on windows of the grid"): seed 17's scene
+//! takes about a tenth of the time it took, but seeds 13 and 17 still pass
+//! the bound at one thread. Seed 23 ran 117 cases without a failure or a
+//! slow one (the worst at 0.59 of its tolerance) before it was stopped.
 //!
 //! `cargo test --release --test reference_sweep` runs a small seeded budget;
 //! `LAYERED_CONTACT_REFERENCE_CASES=2000` a large one, and

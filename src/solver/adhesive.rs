@@ -202,12 +202,16 @@ impl ContactSolver {
 
     /// Preconditioned conjugate gradients for the pressures on the attached
     /// cells that give `u = depth - f` there (pressure 0 elsewhere), with the
-    /// operator's approximate inverse ([`ComplianceOperator::precondition`])
-    /// restricted to the attached set as preconditioner. Leaves the
+    /// body's compliance inverted on a box around the attached set
+    /// (Vollebregt 2014, as the contact solves' preconditioner) restricted
+    /// to it as preconditioner. Until 2026-11-30 this was the half-space
+    /// stiffness `E* |q| / 2` of the surface material on the whole padded
+    /// grid: a round trip of the grid's size for every set, however small,
+    /// and on a soft layer over a far stiffer base (where the body is far
+    /// stiffer at long waves than its surface) more iterations
+    /// (`BENCHMARKS.md`, "The family on windows of the grid"). Leaves the
     /// displacement of the result in the workspace. Returns iterations and
     /// the final relative residual.
-    ///
-    /// [`ComplianceOperator::precondition`]: crate::kernel::ComplianceOperator::precondition
     pub(super) fn clamped_solve(
         &mut self,
         depth: f64,
@@ -259,7 +263,12 @@ impl ContactSolver {
             &[b_norm, r_norm],
         )?;
         let b_norm = b_norm.sqrt().max(f64::MIN_POSITIVE);
-        let mut rz = precondition(&mut self.operator, attached, &ws.gap, &mut ws.previous)?;
+        ws.working.copy_from_slice(attached);
+        let columns = self.grid().columns();
+        let set = attached.iter().enumerate().filter(|(_, on)| **on);
+        let bounds = super::passes::bounds_of(set.map(|(c, _)| c), columns);
+        let mut rz = self.precondition_attached(attached, bounds)?;
+        let ws = &mut self.workspace;
         ws.direction.copy_from_slice(&ws.previous);
         let mut iterations = 0;
         while r_norm.sqrt() > tolerance * b_norm {
@@ -275,6 +284,7 @@ impl ContactSolver {
                 });
             }
             iterations += 1;
+            let ws = &mut self.workspace;
             self.operator.apply(&ws.direction, &mut ws.response)?;
             let mut curvature = 0.0;
             for c in 0..n {
@@ -294,9 +304,10 @@ impl ContactSolver {
                     r_norm += ws.gap[c] * ws.gap[c];
                 }
             }
-            let rz_new = precondition(&mut self.operator, attached, &ws.gap, &mut ws.previous)?;
+            let rz_new = self.precondition_attached(attached, bounds)?;
             let beta = rz_new / rz;
             rz = rz_new;
+            let ws = &mut self.workspace;
             for c in 0..n {
                 ws.direction[c] = if attached[c] {
                     ws.previous[c] + beta * ws.direction[c]
@@ -305,28 +316,36 @@ impl ContactSolver {
                 };
             }
         }
+        let ws = &mut self.workspace;
         self.operator.apply(pressure, &mut ws.displacement)?;
         Ok((iterations, r_norm.sqrt() / b_norm))
     }
-}
 
-/// `z = M r` restricted to the attached cells; returns `<r, z>`.
-fn precondition(
-    operator: &mut crate::kernel::ComplianceOperator,
-    attached: &[bool],
-    residual: &[f64],
-    z: &mut [f64],
-) -> Result<f64> {
-    operator.precondition(residual, z)?;
-    let mut rz = 0.0;
-    for c in 0..z.len() {
-        if attached[c] {
-            rz += residual[c] * z[c];
-        } else {
-            z[c] = 0.0;
+    /// `previous = P M^-1 P gap` on the attached cells (the working set,
+    /// whose bounding box is `bounds`), `M^-1` the body's compliance
+    /// inverted on a box around them ([`ContactSolver::precondition_working_set`]);
+    /// returns `<gap, previous>`.
+    fn precondition_attached(
+        &mut self,
+        attached: &[bool],
+        bounds: Option<super::passes::Bounds>,
+    ) -> Result<f64> {
+        let ws = &self.workspace;
+        let gap_max = attached
+            .iter()
+            .zip(&ws.gap)
+            .filter(|(on, _)| **on)
+            .fold(0.0f64, |m, (_, g)| m.max(g.abs()));
+        let (_, rz) = self.precondition_working_set(bounds, 0.0, gap_max)?;
+        let ws = &mut self.workspace;
+        std::mem::swap(&mut ws.previous, &mut ws.response);
+        for (z, &on) in ws.previous.iter_mut().zip(attached) {
+            if !on {
+                *z = 0.0;
+            }
         }
+        Ok(rz)
     }
-    Ok(rz)
 }
 
 /// Whether cell `c` has an attached 4-neighbour.

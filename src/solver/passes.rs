@@ -59,6 +59,14 @@ pub(super) struct WorkingSet {
 /// Rows `(first, last)` and columns `(first, last)` of a set of cells.
 pub(super) type Bounds = ((usize, usize), (usize, usize));
 
+/// The bounds of `cells` on a grid `columns` wide, `None` if there are
+/// none.
+pub(super) fn bounds_of(cells: impl Iterator<Item = usize>, columns: usize) -> Option<Bounds> {
+    cells
+        .map(|c| Some(((c / columns, c / columns), (c % columns, c % columns))))
+        .fold(None, union)
+}
+
 /// The bounds of two sets' union.
 fn union(a: Option<Bounds>, b: Option<Bounds>) -> Option<Bounds> {
     match (a, b) {

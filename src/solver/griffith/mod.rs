@@ -22,6 +22,7 @@ mod material;
 mod peel;
 mod periodic;
 mod release;
+mod window;
 
 use branches::Raw;
 pub use branches::{AdhesiveBranches, BranchPoint};
@@ -408,11 +409,18 @@ impl ContactSolver {
         let mut shape = vec![0.0; n];
         let mut raw = Vec::with_capacity(sizes.len());
         let mut current = usable;
+        // Smaller sets move to a window of the grid around them.
+        let mut window: Option<window::Window> = None;
         for (index, &m) in sizes.iter().rev().enumerate() {
             for &(c, _) in &order[m..current] {
                 attached[c] = false;
-                punch[c] = 0.0;
-                shape[c] = 0.0;
+                match window.as_mut() {
+                    Some(w) => w.detach(c),
+                    None => {
+                        punch[c] = 0.0;
+                        shape[c] = 0.0;
+                    }
+                }
             }
             current = m;
             if !connected(&attached, columns, periodic, strip.is_some(), order[0].0, m) {
@@ -437,13 +445,29 @@ impl ContactSolver {
                              mesh-dependent criterion",
                 });
             }
-            let (solved, worst) =
-                self.solve_clamped_pair(&attached, lowest, &mut target, &mut punch, &mut shape)?;
+            let set = order[..m].iter().map(|&(c, _)| c);
+            if let Some(bounds) = super::passes::bounds_of(set.clone(), columns) {
+                let moved =
+                    self.window_for(bounds, set, window.as_ref(), (&punch[..], &shape[..]))?;
+                if moved.is_some() {
+                    window = moved;
+                }
+            }
+            let (solved, worst) = match window.as_mut() {
+                Some(w) => w.solve(lowest)?,
+                None => {
+                    self.solve_clamped_pair(&attached, lowest, &mut target, &mut punch, &mut shape)?
+                }
+            };
             let (mut k, mut f1, mut f2) = (0.0, 0.0, 0.0);
             for &(c, _) in &order[..m] {
-                k += punch[c];
-                f1 += shape[c];
-                f2 += shape[c] * target[c];
+                let [p1, pf, t] = match window.as_ref() {
+                    Some(w) => w.values(c),
+                    None => [punch[c], shape[c], target[c]],
+                };
+                k += p1;
+                f1 += pf;
+                f2 += pf * t;
             }
             let values = Raw {
                 cells: m,
