@@ -489,6 +489,10 @@ impl ContactSolver {
             });
             raw.push(values);
         }
+        if window.is_some() {
+            // The scratch vectors the first window freed.
+            self.workspace.fit(self.local_cells())?;
+        }
         raw.reverse();
         Ok((raw, iterations, residual))
     }

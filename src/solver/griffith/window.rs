@@ -90,8 +90,13 @@ impl ContactSolver {
     /// (`current`, or this solver's), `None` to stay. The window takes the
     /// set's cells `set` (full-grid indices), their profile and their
     /// pressures (`current`'s, or `punch` and `shape` on the full grid).
+    /// The first window frees this solver's FFT buffer, preconditioner and
+    /// scratch vectors (but the profile) before it is built: they idle
+    /// while windows solve, and the family's peak memory stays near the
+    /// grid's own. The caller sizes the scratch vectors again after the
+    /// family ([`Workspace::fit`](crate::solver::workspace::Workspace::fit)).
     pub(super) fn window_for(
-        &self,
+        &mut self,
         bounds: Bounds,
         set: impl Iterator<Item = usize>,
         current: Option<&Window>,
@@ -107,6 +112,11 @@ impl ContactSolver {
             return Ok(None);
         }
         let grid = Grid::new(rows, columns, self.grid().spacing())?;
+        if current.is_none() {
+            self.preconditioner = None;
+            self.operator.release_buffer();
+            drop(self.workspace.lend());
+        }
         let mut solver =
             ContactSolver::new(&self.substrate, &grid, Boundary::Isolated, self.params)?;
         solver.interrupt.clone_from(&self.interrupt);
