@@ -2,9 +2,10 @@
 //! axisymmetric solutions of [`analytic::Axisymmetric`](crate::analytic::Axisymmetric) for an untilted flat
 //! punch, paraboloid or sphere on an isolated half-space or coated body.
 
-use crate::analytic::{Axisymmetric, ContactState, JkrSphere, Tip};
+use crate::analytic::{Axisymmetric, ContactState, JkrFlatPunch, JkrSphere, Tip};
 use crate::error::{Error, Result};
 use crate::grid::Boundary;
+use crate::material::Material;
 use crate::solver::Reach;
 use crate::substrate::Substrate;
 
@@ -230,14 +231,26 @@ impl Scene {
         if self.boundary != Boundary::Isolated {
             return None;
         }
-        let modulus = substrate.softest_contact_modulus();
-        let kendall =
-            |radius: f64| (8.0 * std::f64::consts::PI * radius.powi(3) * modulus * receding).sqrt();
-        let jkr = |radius: f64| 1.5 * std::f64::consts::PI * radius * receding;
+        // A half-space of the softest modulus (`nu = 0`: `E* = E`).
+        let softest = Material::new(substrate.softest_contact_modulus(), 0.0).ok()?;
+        let jkr = |radius| {
+            Some(
+                -JkrSphere::new(&softest, radius, receding)
+                    .ok()?
+                    .pull_off_force(),
+            )
+        };
+        let kendall = |radius| {
+            Some(
+                -JkrFlatPunch::new(&softest, radius, receding)
+                    .ok()?
+                    .pull_off_force(),
+            )
+        };
         let closed = match self.indenter {
-            IndenterSpec::Paraboloid { radius } => jkr(radius),
-            IndenterSpec::Sphere { radius } => jkr(radius).min(kendall(radius)),
-            IndenterSpec::FlatPunch { radius } if self.untilted() => kendall(radius),
+            IndenterSpec::Paraboloid { radius } => jkr(radius)?,
+            IndenterSpec::Sphere { radius } => jkr(radius)?.min(kendall(radius)?),
+            IndenterSpec::FlatPunch { radius } if self.untilted() => kendall(radius)?,
             _ => return None,
         };
         Some(closed / PULL_OFF_MARGIN).filter(|b| b.is_finite())

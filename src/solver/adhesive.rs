@@ -244,16 +244,21 @@ impl ContactSolver {
         let tolerance = self.params.tolerance;
         let ws = &mut self.workspace;
         // `gap` holds the residual r = b - K p on the attached set,
-        // `previous` the preconditioned residual z, `direction` the search direction.
+        // `response` the preconditioned residual z (the box inverse on the
+        // attached set, the working set) and then K t, `direction` the
+        // search direction t.
         self.operator.apply(pressure, &mut ws.displacement)?;
         let mut b_norm = 0.0;
         let mut r_norm = 0.0;
+        // The residual's largest magnitude, for the single-precision box.
+        let mut gap_max = 0.0f64;
         for c in 0..n {
             if attached[c] {
                 let b = target[c];
                 b_norm += b * b;
                 ws.gap[c] = b - ws.displacement[c];
                 r_norm += ws.gap[c] * ws.gap[c];
+                gap_max = gap_max.max(ws.gap[c].abs());
             } else {
                 ws.gap[c] = 0.0;
             }
@@ -267,9 +272,12 @@ impl ContactSolver {
         let columns = self.grid().columns();
         let set = attached.iter().enumerate().filter(|(_, on)| **on);
         let bounds = super::passes::bounds_of(set.map(|(c, _)| c), columns);
-        let mut rz = self.precondition_attached(attached, bounds)?;
+        let mut rz = self.precondition_working_set(bounds, 0.0, gap_max)?.1;
         let ws = &mut self.workspace;
-        ws.direction.copy_from_slice(&ws.previous);
+        // Only the attached cells of the box's `response` are read.
+        for ((d, &z), &on) in ws.direction.iter_mut().zip(&ws.response).zip(attached) {
+            *d = if on { z } else { 0.0 };
+        }
         let mut iterations = 0;
         while r_norm.sqrt() > tolerance * b_norm {
             super::interrupted(
@@ -297,20 +305,22 @@ impl ContactSolver {
             }
             let step = rz / curvature;
             r_norm = 0.0;
+            gap_max = 0.0;
             for c in 0..n {
                 if attached[c] {
                     pressure[c] += step * ws.direction[c];
                     ws.gap[c] -= step * ws.response[c];
                     r_norm += ws.gap[c] * ws.gap[c];
+                    gap_max = gap_max.max(ws.gap[c].abs());
                 }
             }
-            let rz_new = self.precondition_attached(attached, bounds)?;
+            let rz_new = self.precondition_working_set(bounds, 0.0, gap_max)?.1;
             let beta = rz_new / rz;
             rz = rz_new;
             let ws = &mut self.workspace;
             for c in 0..n {
                 ws.direction[c] = if attached[c] {
-                    ws.previous[c] + beta * ws.direction[c]
+                    ws.response[c] + beta * ws.direction[c]
                 } else {
                     0.0
                 };
@@ -319,32 +329,6 @@ impl ContactSolver {
         let ws = &mut self.workspace;
         self.operator.apply(pressure, &mut ws.displacement)?;
         Ok((iterations, r_norm.sqrt() / b_norm))
-    }
-
-    /// `previous = P M^-1 P gap` on the attached cells (the working set,
-    /// whose bounding box is `bounds`), `M^-1` the body's compliance
-    /// inverted on a box around them ([`ContactSolver::precondition_working_set`]);
-    /// returns `<gap, previous>`.
-    fn precondition_attached(
-        &mut self,
-        attached: &[bool],
-        bounds: Option<super::passes::Bounds>,
-    ) -> Result<f64> {
-        let ws = &self.workspace;
-        let gap_max = attached
-            .iter()
-            .zip(&ws.gap)
-            .filter(|(on, _)| **on)
-            .fold(0.0f64, |m, (_, g)| m.max(g.abs()));
-        let (_, rz) = self.precondition_working_set(bounds, 0.0, gap_max)?;
-        let ws = &mut self.workspace;
-        std::mem::swap(&mut ws.previous, &mut ws.response);
-        for (z, &on) in ws.previous.iter_mut().zip(attached) {
-            if !on {
-                *z = 0.0;
-            }
-        }
-        Ok(rz)
     }
 }
 

@@ -38,10 +38,10 @@ pub(super) struct Window {
     /// Its columns, and the full grid's.
     columns: usize,
     full_columns: usize,
-    pub(super) attached: Vec<bool>,
-    pub(super) target: Vec<f64>,
-    pub(super) punch: Vec<f64>,
-    pub(super) shape: Vec<f64>,
+    attached: Vec<bool>,
+    target: Vec<f64>,
+    punch: Vec<f64>,
+    shape: Vec<f64>,
 }
 
 impl Window {
