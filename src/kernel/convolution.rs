@@ -150,6 +150,23 @@ fn widen<T: Precision>(value: Complex<T>) -> Complex<f64> {
     Complex::new(value.re.into(), value.im.into())
 }
 
+/// A multiplier and the factor its values are multiplied by as they are
+/// narrowed to the convolution's type (a power of two that brings an `f64`
+/// multiplier into `f32`'s range without rounding it; 1 where the types
+/// match).
+#[derive(Clone, Copy)]
+pub(crate) struct Scaled<'a, M> {
+    pub(crate) values: &'a [M],
+    pub(crate) scale: f64,
+}
+
+impl<'a, M> Scaled<'a, M> {
+    /// The multiplier as it is.
+    pub(crate) fn exact(values: &'a [M]) -> Self {
+        Scaled { values, scale: 1.0 }
+    }
+}
+
 /// Buffer sizes are fixed at construction, so an FFT error is a bug of this
 /// module; it is reported rather than unwrapped.
 fn fft_error(error: realfft::FftError) -> Error {
@@ -326,11 +343,11 @@ impl<T: Precision> Convolution<T> {
     /// As [`Convolution::apply`], the input's data row `i` (of this rank)
     /// written into `line` by `load(i, line)` instead of read from a grid:
     /// a gather from elsewhere needs no buffer of its own.
-    pub(super) fn apply_loaded(
+    pub(super) fn apply_loaded<M: Copy + Into<f64> + Sync>(
         &mut self,
         load: impl Fn(usize, &mut [T]) + Sync,
         output: &mut [f64],
-        multiplier: &[T],
+        multiplier: Scaled<'_, M>,
         combine: impl Fn(f64, T) -> f64 + Sync,
     ) -> Result<()> {
         let columns = self.columns;
@@ -349,10 +366,10 @@ impl<T: Precision> Convolution<T> {
     /// (a masked copy, sums over it) runs inside the transform's last pass.
     /// Returns the sinks' results in row order (to be added in that order:
     /// the same whatever the threads).
-    pub(super) fn apply_into<O: Send, S: Send>(
+    pub(super) fn apply_into<M: Copy + Into<f64> + Sync, O: Send, S: Send>(
         &mut self,
         load: impl Fn(usize, &mut [T]) + Sync,
-        multiplier: &[T],
+        multiplier: Scaled<'_, M>,
         targets: Vec<O>,
         sink: impl Fn(usize, O, &[T]) -> S + Sync,
     ) -> Result<Vec<S>> {
@@ -436,9 +453,13 @@ impl<T: Precision> Convolution<T> {
     /// threads.
     fn filter_columns<M: Copy + Into<f64> + Sync>(
         &mut self,
-        multiplier: &[M],
+        multiplier: Scaled<'_, M>,
         stage: Stage,
     ) -> Result<f64> {
+        let Scaled {
+            values: multiplier,
+            scale,
+        } = multiplier;
         let (rows, n0) = (self.rows, self.size.0);
         let even = self.size.1.is_multiple_of(2);
         let half = self.size.1 / 2 + 1;
@@ -511,12 +532,12 @@ impl<T: Precision> Convolution<T> {
                         *energy += line_energy(low, high, k, if single { 1.0 } else { 2.0 });
                         continue;
                     }
-                    // (`M` is `T` here: the conversions are exact.)
+                    // (Exact where `M` is `T` and the scale 1.)
                     for (c, k) in low.iter_mut().zip(k) {
-                        *c = *c * T::narrow((*k).into());
+                        *c = *c * T::narrow((*k).into() * scale);
                     }
                     for (c, k) in high.iter_mut().zip(high_k) {
-                        *c = *c * T::narrow((*k).into());
+                        *c = *c * T::narrow((*k).into() * scale);
                     }
                 }
                 if stage == Stage::Energy {
@@ -565,7 +586,7 @@ impl Convolution {
         combine: impl Fn(f64, f64) -> f64 + Sync,
     ) -> Result<()> {
         let load = data_rows(input, self.columns);
-        self.apply_loaded(load, output, multiplier, combine)
+        self.apply_loaded(load, output, Scaled::exact(multiplier), combine)
     }
 
     /// As [`Convolution::apply_into`], the input read from the grid `input`.
@@ -577,6 +598,6 @@ impl Convolution {
         sink: impl Fn(usize, O, &[f64]) -> S + Sync,
     ) -> Result<Vec<S>> {
         let load = data_rows(input, self.columns);
-        self.apply_into(load, multiplier, targets, sink)
+        self.apply_into(load, Scaled::exact(multiplier), targets, sink)
     }
 }

@@ -21,7 +21,9 @@
 use crate::error::Result;
 use crate::slab::{agree, even_starts, lengths, Slab};
 
-use super::convolution::{multiplier, power_of_two_above, wavenumber, Convolution, Precision};
+use super::convolution::{
+    multiplier, power_of_two_above, wavenumber, Convolution, Precision, Scaled,
+};
 use super::fourier::FourierCompliance;
 use super::operator::{cell_filter, ShareBuffer};
 
@@ -257,9 +259,9 @@ impl<T: Precision> BoxInverse<T> {
             }
             sums
         };
-        let sums = self
-            .convolution
-            .apply_into(load, &self.multiplier, targets, sink)?;
+        let sums =
+            self.convolution
+                .apply_into(load, Scaled::exact(&self.multiplier), targets, sink)?;
         Ok(sums
             .into_iter()
             .fold((0.0, 0.0), |(s, d), (a, b)| (s + a, d + b)))

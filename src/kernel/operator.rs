@@ -11,6 +11,7 @@ use super::fourier::FourierCompliance;
 use super::influence::InfluenceCoefficients;
 
 mod energy;
+mod single;
 
 /// Applies the compliance of a substrate on a grid: given the cell pressures
 /// `p` (Pa, row-major), the displacements `u` (m) at the cell centres,
@@ -71,9 +72,12 @@ pub struct ComplianceOperator {
     /// `E*` of the surface material, for the approximate inverse.
     surface_modulus: f64,
     convolution: Convolution,
-    /// The same transform in single precision, for the energy
-    /// ([`ComplianceOperator::energy_single`]; built on first use).
+    /// The same transform in single precision, for the energy and the
+    /// early iterations' applications (`single.rs`; built on first use).
     single: Option<Convolution<f32>>,
+    /// The power of two the spectrum is multiplied by as the
+    /// single-precision transform narrows it (set when that is built).
+    single_scale: f64,
     /// The split across the ranks of a distributed run, `None` when serial.
     slab: Option<Slab>,
 }
@@ -358,6 +362,7 @@ impl ComplianceOperator {
             surface_modulus: substrate.surface_material().contact_modulus(),
             convolution,
             single: None,
+            single_scale: 1.0,
             slab: slab.cloned(),
         };
         operator.spectrum = match boundary {

@@ -263,12 +263,14 @@ impl ContactSolver {
             let inner = tolerance.max(1e-2 * change.min(scale) / scale);
             self.params.tolerance = inner;
             // The fixed point follows the inner solves' last digits: a
-            // double-precision preconditioner (`Preconditioner`).
+            // double-precision preconditioner (`Preconditioner`) and
+            // operator.
             let before = std::mem::replace(&mut self.double_preconditioner, true);
             let solved = self.constrained_cg(
                 inner_control,
                 Some(Cow::Owned(start)),
                 mode,
+                false,
                 false,
                 observer,
             );

@@ -134,6 +134,10 @@ pub struct ContactSolver {
     /// Whether the preconditioner runs in double precision (the cohesive
     /// zone's rounds) rather than single ([`Preconditioner`]).
     double_preconditioner: bool,
+    /// Whether the constrained conjugate gradients' early iterations apply
+    /// the operator in single precision (`polonsky_keer.rs`; on by
+    /// default, off in the tests that compare against double throughout).
+    single_precision: bool,
     /// The factor by which the last solve scaled its warm start, its own
     /// (`ContactSolver::scale_warm_start`; 1 when it had none) times its
     /// coarser levels': a coarse start level's, read by the finer level to
@@ -225,6 +229,7 @@ impl ContactSolver {
             compliance: FourierCompliance::new(substrate),
             preconditioner: None,
             double_preconditioner: false,
+            single_precision: true,
             warm_scale: 1.0,
             substrate: substrate.clone(),
             coarse: None,

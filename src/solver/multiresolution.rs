@@ -135,6 +135,7 @@ impl ContactSolver {
             self.coarse = Some(self.agreed(built).ok().map(Box::new));
         }
         let coarse = self.coarse.as_mut()?.as_mut()?;
+        coarse.single_precision = self.single_precision;
         // The coarse cell of fine cell `c`.
         let block = |c: usize| (c / columns / 2) * half + (c % columns) / 2;
         let restricted = warm.map(|w| {

@@ -264,6 +264,9 @@ pub(super) struct Step {
     pub(super) size: f64,
     /// Cells with pressure.
     pub(super) contact: usize,
+    /// The largest absolute value written to `correction` (the scale of a
+    /// single-precision application to it).
+    pub(super) largest: f64,
 }
 
 /// The step `p -= step t` on the working set, clamped at zero. With
@@ -340,6 +343,7 @@ pub(super) fn step<const DEFERRED: bool>(
                 *u -= step * kt;
                 *corr = new - stepped;
             }
+            s.largest = s.largest.max(corr.abs());
             s.corrected += usize::from(new != stepped);
             s.change += (new - old).abs();
             s.size += new;
@@ -359,6 +363,7 @@ pub(super) fn step<const DEFERRED: bool>(
         change: a.change + b.change,
         size: a.size + b.size,
         contact: a.contact + b.contact,
+        largest: a.largest.max(b.largest),
     })
 }
 

@@ -6,9 +6,14 @@
 //! Fletcher-Reeves step, Fletcher & Reeves 1964, Comput. J. 7, 149-154),
 //! restarted only where the new direction would not descend: rough
 //! contacts, whose working set grows in most early iterations, otherwise
-//! iterate near steepest descent. The multi-resolution start is in
-//! [`multiresolution`](super::multiresolution), the preconditioner's box in
-//! [`preconditioning`](super::preconditioning).
+//! iterate near steepest descent. A cold solve's early iterations, until the
+//! change per iteration falls to `1e-5`, apply the operator in single
+//! precision; the displacement is then recomputed in double and the solve
+//! ends in double ([`EARLY_ABOVE`]), its conjugation restarted there and
+//! once before ([`RESTART_BELOW`]). The multi-resolution start
+//! is in [`multiresolution`](super::multiresolution), the preconditioner's
+//! box in [`preconditioning`](super::preconditioning), the operator's part
+//! of a step in [`step_response`](super::step_response).
 
 use std::borrow::Cow;
 use std::ops::Range;
@@ -17,6 +22,7 @@ use crate::error::{Error, Result};
 use crate::indenter::Indenter;
 
 use super::multiresolution::loosened;
+use super::step_response::Arithmetic;
 use super::{check_finite, passes, ContactSolver, IterationInfo, Observer, Solution, WarmStart};
 
 /// The smallest load the solver takes, as a penetration over the cell size
@@ -30,6 +36,24 @@ const MIN_LOAD_SCALE: f64 = 1e-100;
 /// tests, so that the refreshes, and the one that keeps a given start
 /// displacement's offset, run in short solves too).
 const REFRESH: usize = if cfg!(test) { 3 } else { 50 };
+
+/// The relative change of the pressure per iteration that ends a cold
+/// solve's early iterations, which apply the operator in single precision
+/// ([`Arithmetic`]): `f32`'s rounding moves the displacement by about
+/// `1e-7` of its scale a step, and the change stays far above that until
+/// here. The displacement is then recomputed in double and the
+/// conjugation restarts. Measured in BENCHMARKS.md ("Speed: rough
+/// contacts on large grids"): the same iterations with the end at `1e-6`,
+/// seven more at `1e-7` on the rough film at 4096^2.
+const EARLY_ABOVE: f64 = 1e-5;
+
+/// The relative change of the pressure per iteration at which a cold
+/// solve restarts its conjugation once (besides at [`EARLY_ABOVE`]): the
+/// conjugation kept while the working set changed (a projected
+/// Fletcher-Reeves step) carries the directions of sets the contact has
+/// left, and a steepest-descent step clears them. Measured in
+/// BENCHMARKS.md ("Speed: rough contacts on large grids").
+const RESTART_BELOW: f64 = 1e-3;
 
 /// Which quantity a non-adhesive solve prescribes.
 #[derive(Clone, Copy)]
@@ -167,11 +191,16 @@ impl ContactSolver {
             Some((start, iterations, scale)) => (Some(Cow::Owned(start)), iterations, scale),
             None => (warm.map(Cow::Borrowed), 0, 1.0),
         };
+        // A cold solve (the coarse levels' start is no warm start of the
+        // caller's) iterates long enough for the early iterations in single
+        // precision to pay; a warm one may end before the displacement's
+        // recomputation in double would.
         let (mut solution, end) = self.constrained_cg(
             control,
             start,
             StartDisplacement::Compute,
             prolonged,
+            warm.is_none(),
             observer,
         )?;
         solution.coarse_iterations = coarse_iterations;
@@ -182,13 +211,17 @@ impl ContactSolver {
     /// The constrained conjugate gradients from `warm` (or a uniform
     /// pressure), to the solver's tolerance; `prolonged`: the start came
     /// from this start level's coarser level, and the tolerance loosens to
-    /// a fraction of the first iteration's change ([`loosened`]).
+    /// a fraction of the first iteration's change ([`loosened`]);
+    /// `cold`: a solve of many iterations, whose early ones apply the
+    /// operator in single precision ([`EARLY_ABOVE`]) and whose
+    /// conjugation restarts twice ([`RESTART_BELOW`]).
     pub(super) fn constrained_cg(
         &mut self,
         control: Control,
         warm: Option<Cow<'_, WarmStart>>,
         start_displacement: StartDisplacement,
         prolonged: bool,
+        cold: bool,
         observer: &mut dyn Observer,
     ) -> Result<(Solution, WarmStart)> {
         let n = self.local_cells();
@@ -257,9 +290,34 @@ impl ContactSolver {
             }
             None
         };
+        // A cold solve's early iterations, until the change falls to
+        // EARLY_ABOVE (or the tolerance, if looser), apply the operator in
+        // single precision; then the displacement is recomputed in double
+        // and the conjugation restarts, as it does once before, where the
+        // change first falls to RESTART_BELOW. A start level may stop in
+        // the early phase (its pressures are only a start), a fine solve
+        // only after it. The cohesive zone's rounds (warm, whose fixed
+        // point follows the inner solves' last digits) stay in double.
+        let cold = cold && !self.double_preconditioner;
+        let mut early = cold;
+        let mut restarted = !cold;
         for iteration in 1..=self.params.max_iterations {
             self.check_interrupt("the constrained conjugate gradients")?;
-            if iteration % REFRESH == 0 {
+            let leave = early && residual <= EARLY_ABOVE.max(tolerance);
+            if leave {
+                // The recomputed displacement moves the gaps off the early
+                // iterations' own (kept across that move, the conjugation
+                // of a 4 x 5 grid of an incompressible film crept at a
+                // change of 3e-9 an iteration for ever).
+                early = false;
+                rz_old = 0.0;
+            }
+            if !restarted && residual <= RESTART_BELOW {
+                restarted = true;
+                rz_old = 0.0;
+            }
+            let single = early && self.single_precision;
+            if iteration % REFRESH == 0 || leave {
                 let ws = &mut self.workspace;
                 match &start {
                     Some((p0, u0)) => {
@@ -405,11 +463,20 @@ impl ContactSolver {
             // After a step whose clamping needed a convolution, the next
             // likely clamps too: the energy, not `K t`.
             let deferred = clamped;
-            let (energy, single) = self.direction_energy(deferred, working_cells.clone(), t_max)?;
+            let mut arithmetic = Arithmetic::default();
+            if single {
+                // A scale the same on every rank: the sum of the largest.
+                let mut magnitude = [t_max];
+                self.sum_over_ranks(&mut magnitude);
+                arithmetic.direction = Some(magnitude[0]);
+            }
+            let cells = working_cells.clone();
+            let (energy, summed_single) =
+                self.direction_energy(deferred, cells, t_max, arithmetic)?;
             let mut dots = [gap_dot, energy, t_sum];
             self.sum_over_ranks(&mut dots);
             let [gap_dot, mut denominator, t_sum] = dots;
-            if single && !(denominator.is_finite() && denominator > 0.0) {
+            if summed_single && !(denominator.is_finite() && denominator > 0.0) {
                 // Out of single precision's reach after all: in double.
                 let mut energy = [self.operator.energy(&self.workspace.direction)?];
                 self.sum_over_ranks(&mut energy);
@@ -449,6 +516,9 @@ impl ContactSolver {
                 &mut ws.previous,
             );
             stats = self.whole_step(stats);
+            if single {
+                arithmetic.change = Some(stats.largest);
+            }
             // Pressures are now zero off the working set.
             pressure_cells = working_cells.clone();
             // Under force control the pressure is rescaled to the load:
@@ -469,6 +539,7 @@ impl ContactSolver {
                 working_cells.clone(),
                 &mut pressure,
                 factor,
+                arithmetic,
             )?;
             let ws = &mut self.workspace;
             if let Control::Force(w) = control {
@@ -520,7 +591,10 @@ impl ContactSolver {
             });
             // A fine solve stops only once no cell overlaps; a start level
             // may stop with overlap left (`ContactSolver::start_level`).
-            if residual <= tolerance && (!set.overlap || self.start_level) {
+            if residual <= tolerance
+                && (!set.overlap || self.start_level)
+                && (!early || self.start_level)
+            {
                 return self.converged(control, pressure, depth, iteration, residual);
             }
         }
@@ -529,5 +603,73 @@ impl ContactSolver {
             iterations: self.params.max_iterations,
             residual,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::solver::{ContactSolver, SolverParams};
+    use crate::topography::{Amplitude, SelfAffine};
+    use crate::{Boundary, Grid, Material, Substrate};
+
+    /// A rough contact (the surface of `examples/rough_benchmark.rs` on a
+    /// 128 x 128 grid, about 8 % in contact) on a film, isolated, and on a
+    /// periodic half-space, under force and depth control, solved with the
+    /// early iterations in single precision and in double throughout: the
+    /// same pressures within 1e-13 of the largest (measured 1.5e-15 and
+    /// 2.9e-15: the double-precision iterations that follow remove what
+    /// `f32`'s rounding, about 2e-7 of a response, moved), forces and
+    /// depths within 1e-12, iteration counts within one. A single-precision
+    /// response off by 1e-3 of itself moves the pressures by 5e-12, off by
+    /// 0.1 adds eight iterations.
+    #[test]
+    fn single_precision_early_iterations_reach_the_same_pressures() {
+        let rubber = Material::new(1e6, 0.49).unwrap();
+        let bodies = [
+            (
+                Substrate::layer_on_rigid_base(rubber, 1e-4).unwrap(),
+                Boundary::Isolated,
+            ),
+            (Substrate::half_space(rubber), Boundary::Periodic),
+        ];
+        let grid = Grid::square_of_side(128, 1e-3).unwrap();
+        let surface = SelfAffine {
+            hurst: 0.8,
+            amplitude: Amplitude::RmsSlope(0.1),
+            long_cutoff: 0.25e-3,
+            short_cutoff: 4.0 * grid.spacing(),
+            seed: 1,
+        }
+        .indenter(&grid)
+        .unwrap();
+        for (body, boundary) in bodies {
+            let mut solutions = Vec::new();
+            for single in [true, false] {
+                let params = SolverParams {
+                    tolerance: 1e-10,
+                    ..SolverParams::default()
+                };
+                let mut solver = ContactSolver::new(&body, &grid, boundary, params).unwrap();
+                solver.single_precision = single;
+                let (by_force, warm) = solver.solve_force(&surface, 5e-3, None, &mut ()).unwrap();
+                let (by_depth, _) = solver
+                    .solve_depth(&surface, by_force.depth, None, &mut ())
+                    .unwrap();
+                solutions.push((by_force, by_depth, warm.pressure));
+            }
+            let (single, double) = (&solutions[0], &solutions[1]);
+            let largest = double.2.iter().fold(0.0_f64, |m, p| m.max(*p));
+            let difference = single
+                .2
+                .iter()
+                .zip(&double.2)
+                .fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
+            assert!(difference <= 1e-13 * largest, "{boundary:?}: {difference}");
+            for (a, b) in [(&single.0, &double.0), (&single.1, &double.1)] {
+                assert!(a.iterations.abs_diff(b.iterations) <= 1, "{boundary:?}");
+                assert!((a.force / b.force - 1.0).abs() < 1e-12, "{boundary:?}");
+                assert!((a.depth / b.depth - 1.0).abs() < 1e-12, "{boundary:?}");
+            }
+        }
     }
 }

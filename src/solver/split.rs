@@ -143,11 +143,14 @@ impl ContactSolver {
                 stats.change,
                 stats.size,
                 stats.contact as f64,
+                // A scale the same on every rank: the sum of the largest.
+                stats.largest,
             ];
             self.sum_over_ranks(&mut sums);
             stats.corrected = sums[0] as usize;
             (stats.change, stats.size) = (sums[1], sums[2]);
             stats.contact = sums[3] as usize;
+            stats.largest = sums[4];
         }
         stats
     }

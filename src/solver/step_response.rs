@@ -11,8 +11,12 @@
 //! the bytes; a relative rounding of about `1e-7` in the step length,
 //! while the displacement moves by the double-precision response to the
 //! step actually taken, so that `u = K p` holds to `f64`'s rounding).
-//! Measured in `BENCHMARKS.md` ("Rough contacts beside tamaas", "Speed:
-//! rough contacts on large grids").
+//! In a cold solve's early iterations every application runs in single
+//! precision ([`Arithmetic`]): there the pressure still changes by more
+//! than `1e-5` an iteration, far above the `1e-7` by which `f32`'s rounding
+//! moves the displacement, and the solve recomputes the displacement in
+//! double before it ends. Measured in `BENCHMARKS.md` ("Rough contacts
+//! beside tamaas", "Speed: rough contacts on large grids").
 
 use std::ops::Range;
 
@@ -36,22 +40,35 @@ impl ContactSolver {
         deferred: bool,
         cells: Range<usize>,
         t_max: f64,
+        arithmetic: Arithmetic,
     ) -> Result<(f64, bool)> {
-        if deferred && !self.double_preconditioner {
-            // A scale the same on every rank: the sum of the ranks' largest.
-            let mut magnitude = [t_max];
-            self.sum_over_ranks(&mut magnitude);
-            let ws = &self.workspace;
-            let energy = self.operator.energy_single(&ws.direction, magnitude[0])?;
-            return Ok((energy, true));
-        }
+        let magnitude = match arithmetic.direction {
+            Some(magnitude) => Some(magnitude),
+            None if deferred && !self.double_preconditioner => {
+                // A scale the same on every rank: the sum of the ranks' largest.
+                let mut magnitude = [t_max];
+                self.sum_over_ranks(&mut magnitude);
+                Some(magnitude[0])
+            }
+            None => None,
+        };
         let ws = &mut self.workspace;
-        if deferred {
-            return Ok((self.operator.energy(&ws.direction)?, false));
+        match (deferred, magnitude) {
+            (true, Some(m)) => Ok((self.operator.energy_single(&ws.direction, m)?, true)),
+            (true, None) => Ok((self.operator.energy(&ws.direction)?, false)),
+            (false, Some(m)) => {
+                let response = &mut ws.response;
+                self.operator
+                    .apply_single(&ws.direction, response, m, |_, k| k)?;
+                let energy = passes::dot(&ws.response[cells.clone()], &ws.direction[cells]);
+                Ok((energy, true))
+            }
+            (false, None) => {
+                self.operator.apply(&ws.direction, &mut ws.response)?;
+                let energy = passes::dot(&ws.response[cells.clone()], &ws.direction[cells]);
+                Ok((energy, false))
+            }
         }
-        self.operator.apply(&ws.direction, &mut ws.response)?;
-        let energy = passes::dot(&ws.response[cells.clone()], &ws.direction[cells]);
-        Ok((energy, false))
     }
 
     /// Moves the displacement by the response to the step just taken
@@ -73,10 +90,12 @@ impl ContactSolver {
         cells: Range<usize>,
         pressure: &mut [f64],
         rescale: Option<f64>,
+        arithmetic: Arithmetic,
     ) -> Result<Option<Rescaled>> {
         if deferred && corrected == 0 {
             // No clamping after all: the direction's response.
-            return self.respond(true, true, -step, cells, pressure, rescale);
+            let magnitude = arithmetic.direction;
+            return self.respond(true, true, -step, cells, pressure, rescale, magnitude);
         }
         if corrected == 0 {
             return Ok(None);
@@ -91,11 +110,15 @@ impl ContactSolver {
                 return Ok(None);
             }
         }
-        self.respond(false, deferred, 1.0, cells, pressure, rescale)
+        let magnitude = arithmetic.change;
+        self.respond(false, deferred, 1.0, cells, pressure, rescale, magnitude)
     }
 
     /// `u += factor K x`, `x` the direction or else `gap`, rescaled by
-    /// `rescale` inside the convolution if given (its sums returned).
+    /// `rescale` inside the convolution if given (its sums returned); in
+    /// single precision if `x`'s `magnitude` is given (a scale the same on
+    /// every rank, [`Arithmetic`]).
+    #[allow(clippy::too_many_arguments)]
     fn respond(
         &mut self,
         x_is_direction: bool,
@@ -104,6 +127,7 @@ impl ContactSolver {
         cells: Range<usize>,
         pressure: &mut [f64],
         rescale: Option<f64>,
+        magnitude: Option<f64>,
     ) -> Result<Option<Rescaled>> {
         let columns = self.grid().columns();
         let ws = &mut self.workspace;
@@ -113,7 +137,13 @@ impl ContactSolver {
             &ws.gap
         };
         let Some(scale) = rescale else {
-            self.operator.apply_add(x, &mut ws.displacement, factor)?;
+            let output = &mut ws.displacement;
+            match magnitude {
+                Some(m) => self
+                    .operator
+                    .apply_single(x, output, m, |u, k| u + factor * k)?,
+                None => self.operator.apply_add(x, output, factor)?,
+            }
             return Ok(None);
         };
         // A deferred step left the change of the pressure in `gap`.
@@ -124,7 +154,7 @@ impl ContactSolver {
         };
         let profile = &ws.profile;
         let targets = passes::rescale_targets(cells, columns, pressure, &mut ws.displacement);
-        let rows = self.operator.apply_into(x, targets, |i, row, response| {
+        let sink = |i: usize, row, response: &[f64]| {
             let cells = i * columns..(i + 1) * columns;
             passes::rescale_row(
                 row,
@@ -134,7 +164,26 @@ impl ContactSolver {
                 &profile[cells],
                 scale,
             )
-        })?;
+        };
+        let rows = match magnitude {
+            Some(m) => self.operator.apply_into_single(x, m, targets, sink)?,
+            None => self.operator.apply_into(x, targets, sink)?,
+        };
         Ok(Some(passes::add_rescaled(rows)))
     }
+}
+
+/// The arithmetic of a constrained conjugate-gradient step's applications
+/// of the operator: in double precision, or in single with the scales of
+/// what it is applied to (the same on every rank, about their largest
+/// absolute values; [`ComplianceOperator::apply_single`]).
+///
+/// [`ComplianceOperator::apply_single`]: crate::kernel::ComplianceOperator
+#[derive(Clone, Copy, Default)]
+pub(super) struct Arithmetic {
+    /// The search direction's scale, single precision only.
+    pub(super) direction: Option<f64>,
+    /// The scale of the step's change of the pressure (or its clamping
+    /// correction), single precision only.
+    pub(super) change: Option<f64>,
 }

@@ -67,6 +67,6 @@ impl<T: Precision> Convolution<T> {
             }
         })?;
         self.exchange_to_columns()?;
-        Ok(self.filter_columns(multiplier, Stage::Energy)? / (scale * scale))
+        Ok(self.filter_columns(super::Scaled::exact(multiplier), Stage::Energy)? / (scale * scale))
     }
 }

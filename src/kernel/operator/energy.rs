@@ -1,5 +1,5 @@
 //! The operator's energy `x . (K x)` in half a round trip
-//! ([`Convolution::forward_energy`]) and `output += factor K x` without a
+//! (`Convolution::forward_energy`) and `output += factor K x` without a
 //! buffer for `K x`: the constrained conjugate gradients' step on a
 //! clamping iteration (a step length from the direction's energy, one
 //! convolution of the whole change of the pressure) instead of two
@@ -8,7 +8,6 @@
 
 use crate::error::Result;
 
-use super::super::convolution::{power_of_two_above, Convolution};
 use super::ComplianceOperator;
 
 impl ComplianceOperator {
@@ -21,48 +20,6 @@ impl ComplianceOperator {
     pub(crate) fn energy(&mut self, x: &[f64]) -> Result<f64> {
         self.check_lengths(&[("direction", x.len())])?;
         self.convolution.forward_energy(x, &self.spectrum, 1.0)
-    }
-
-    /// As [`ComplianceOperator::energy`], the transform in single precision
-    /// (half the bytes through its memory-bound passes; the multiplier and
-    /// the sum stay in `f64`), `x` scaled by a power of two from
-    /// `magnitude`, about its largest absolute value (the same on every
-    /// rank), into `f32`'s range. Its relative rounding is about `1e-7`;
-    /// the caller checks that the total is finite and positive. The
-    /// single-precision transform is built on first use and works in this
-    /// operator's buffers (lent: no memory added but its plans and a few
-    /// lines per thread).
-    ///
-    /// # Errors
-    /// As [`ComplianceOperator::energy`].
-    pub(crate) fn energy_single(&mut self, x: &[f64], magnitude: f64) -> Result<f64> {
-        self.check_lengths(&[("direction", x.len())])?;
-        let single = match self.single.take() {
-            Some(single) => single,
-            None => {
-                let (rows, columns) = (self.grid.rows(), self.grid.columns());
-                let size = self.convolution.size();
-                let built = match self.slab.as_ref() {
-                    None => Convolution::new(rows, columns, size),
-                    // It works in the operator's buffers: none of its own.
-                    Some(slab) => Convolution::distributed_unallocated(
-                        rows,
-                        columns,
-                        size,
-                        slab,
-                        slab.counts(),
-                    ),
-                };
-                // Distributed, a rank that could not build it stops every rank.
-                crate::slab::agree(self.slab.as_ref(), built)?
-            }
-        };
-        let single = self.single.insert(single);
-        single.give_buffers(self.convolution.take_buffers());
-        let scale = 1.0 / power_of_two_above(magnitude);
-        let energy = single.forward_energy(x, &self.spectrum, scale);
-        self.convolution.give_buffers(single.take_buffers());
-        energy
     }
 
     /// `output += factor K x` in one round trip.
@@ -100,13 +57,13 @@ impl ComplianceOperator {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::{Boundary, Grid, Material, Substrate};
 
     /// A seeded pseudo-random field of `n` values in `[-1, 1)` (a linear
     /// congruential generator: no dependency for a test).
-    fn field(n: usize, seed: u64) -> Vec<f64> {
+    pub(in crate::kernel::operator) fn field(n: usize, seed: u64) -> Vec<f64> {
         let mut state = seed;
         (0..n)
             .map(|_| {
@@ -118,7 +75,7 @@ mod tests {
             .collect()
     }
 
-    fn bodies() -> Vec<Substrate> {
+    pub(in crate::kernel::operator) fn bodies() -> Vec<Substrate> {
         let rubber = Material::new(1e6, 0.45).unwrap();
         vec![
             Substrate::half_space(rubber),
@@ -154,42 +111,6 @@ mod tests {
                     (energy - dot).abs() <= 1e-12 * norms,
                     "{rows}x{columns} {boundary:?}: {energy} against {dot}"
                 );
-            }
-        }
-    }
-
-    /// The energy in single precision against the energy in double, on
-    /// periodic and isolated grids of a half-space and a layer, for fields
-    /// scaled far outside `f32`'s range (1e-38 to 3e38): within 1e-6
-    /// (measured 1e-9 to 9e-8, `f32`'s unit rounding 6e-8 grown through
-    /// the transforms; without the power-of-two scaling the factor 1e-45 is
-    /// 117 % off).
-    #[test]
-    fn the_energy_in_single_precision_is_double_to_its_rounding() {
-        for body in bodies() {
-            for (rows, columns, boundary) in
-                [(32, 30, Boundary::Periodic), (17, 24, Boundary::Isolated)]
-            {
-                let grid = Grid::new(rows, columns, 1e-6).unwrap();
-                let mut operator = ComplianceOperator::new(&body, &grid, boundary).unwrap();
-                for factor in [1.0, 1e-45, 1e45] {
-                    let x: Vec<f64> = field(grid.len(), 3).iter().map(|v| v * factor).collect();
-                    let largest = x.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-                    let double = operator.energy(&x).unwrap();
-                    let single = operator.energy_single(&x, largest).unwrap();
-                    let error = (single / double - 1.0).abs();
-                    assert!(
-                        error < 1e-6,
-                        "{boundary:?} {factor}: {single} against {double}"
-                    );
-                }
-                // The operator's own applications are untouched by the
-                // buffers it lent.
-                let x = field(grid.len(), 4);
-                let mut kx = vec![0.0; grid.len()];
-                operator.apply(&x, &mut kx).unwrap();
-                let dot: f64 = x.iter().zip(&kx).map(|(a, b)| a * b).sum();
-                assert!((operator.energy(&x).unwrap() / dot - 1.0).abs() < 1e-12);
             }
         }
     }
