@@ -34,7 +34,9 @@ impl ContactSolver {
     /// (a step length; the displacement's move stays in double) except in
     /// the cohesive zone's rounds (whose fixed point follows the inner
     /// solves' last digits); else through `K t`, left in `response` for
-    /// [`ContactSolver::respond_to_step`].
+    /// [`ContactSolver::respond_to_step`], in single precision where
+    /// `arithmetic` gives the direction's scale (a cold solve's early
+    /// iterations).
     pub(super) fn direction_energy(
         &mut self,
         deferred: bool,
