@@ -156,20 +156,24 @@ impl ContactSolver {
         };
         let profile = &ws.profile;
         let targets = passes::rescale_targets(cells, columns, pressure, &mut ws.displacement);
-        let sink = |i: usize, row, response: &[f64]| {
+        // Row `i`'s old pressures (or changes) and profile.
+        let of_row = |i: usize| {
             let cells = i * columns..(i + 1) * columns;
-            passes::rescale_row(
-                row,
-                response,
-                factor,
-                before.cells(cells.clone()),
-                &profile[cells],
-                scale,
-            )
+            (before.cells(cells.clone()), &profile[cells])
         };
         let rows = match magnitude {
-            Some(m) => self.operator.apply_into_single(x, m, targets, sink)?,
-            None => self.operator.apply_into(x, targets, sink)?,
+            // `K x` of a row is `unscale` times its single-precision values.
+            Some(m) => {
+                self.operator
+                    .apply_into_single(x, m, targets, |i, row, response, unscale| {
+                        let (before, profile) = of_row(i);
+                        passes::rescale_row(row, response, unscale * factor, before, profile, scale)
+                    })?
+            }
+            None => self.operator.apply_into(x, targets, |i, row, response| {
+                let (before, profile) = of_row(i);
+                passes::rescale_row(row, response, factor, before, profile, scale)
+            })?,
         };
         Ok(Some(passes::add_rescaled(rows)))
     }

@@ -16,11 +16,6 @@ use crate::error::Result;
 use super::super::convolution::{power_of_two_above, Convolution, Scaled};
 use super::ComplianceOperator;
 
-thread_local! {
-    /// A row of a single-precision response widened to `f64` for its sink.
-    static ROW: std::cell::RefCell<Vec<f64>> = const { std::cell::RefCell::new(Vec::new()) };
-}
-
 impl ComplianceOperator {
     /// Runs `f` with the single-precision transform (built on first use)
     /// working in this operator's buffers, the spectrum and the power of
@@ -101,17 +96,18 @@ impl ComplianceOperator {
         self.check_lengths(&[("displacement", output.len())])?;
         let columns = self.grid.columns();
         let rows = output.chunks_exact_mut(columns).collect();
-        self.apply_into_single(x, magnitude, rows, |_, row, values| {
+        self.apply_into_single(x, magnitude, rows, |_, row, values, unscale| {
             for (out, value) in row.iter_mut().zip(values) {
-                *out = combine(*out, *value);
+                *out = combine(*out, f64::from(*value) * unscale);
             }
         })?;
         Ok(())
     }
 
     /// As [`ComplianceOperator::apply_into`], in single precision (`x`
-    /// scaled as in [`ComplianceOperator::apply_single`]); each row reaches
-    /// its sink in `f64`.
+    /// scaled as in [`ComplianceOperator::apply_single`]): each row reaches
+    /// its sink as computed, in `f32`, with the factor that turns its
+    /// values into `K x` (`sink(i, targets[i], values, factor)`).
     ///
     /// # Errors
     /// As [`ComplianceOperator::apply_into`].
@@ -120,7 +116,7 @@ impl ComplianceOperator {
         x: &[f64],
         magnitude: f64,
         targets: Vec<O>,
-        sink: impl Fn(usize, O, &[f64]) -> S + Sync,
+        sink: impl Fn(usize, O, &[f32], f64) -> S + Sync,
     ) -> Result<Vec<S>> {
         self.check_lengths(&[("pressure", x.len())])?;
         let columns = self.grid.columns();
@@ -133,11 +129,7 @@ impl ComplianceOperator {
                 }
             };
             single.apply_into(load, spectrum, targets, |i, target, values| {
-                ROW.with_borrow_mut(|row| {
-                    row.clear();
-                    row.extend(values.iter().map(|v| f64::from(*v) * unscale));
-                    sink(i, target, row)
-                })
+                sink(i, target, values, unscale)
             })
         })
     }
@@ -237,9 +229,12 @@ mod tests {
                     let added = error(&added, &|c| 2.0 * start[c]);
                     let targets: Vec<usize> = (0..rows).collect();
                     let rows_out = operator
-                        .apply_into_single(&x, largest, targets, |i, r, values| {
+                        .apply_into_single(&x, largest, targets, |i, r, values, unscale| {
                             assert_eq!(i, r);
-                            values.to_vec()
+                            values
+                                .iter()
+                                .map(|v| f64::from(*v) * unscale)
+                                .collect::<Vec<_>>()
                         })
                         .unwrap()
                         .concat();

@@ -56,7 +56,7 @@ pub(in crate::solver) fn rescale(
     let displacement = &mut displacement[cells];
     let pass = |(k, (p, u)): (usize, (&mut [f64], &mut [f64]))| {
         let cells = k * CHUNK..k * CHUNK + p.len();
-        rescale_cells(
+        rescale_cells::<f64>(
             p,
             u,
             None,
@@ -83,10 +83,10 @@ pub(in crate::solver) fn add_rescaled(parts: Vec<Rescaled>) -> Rescaled {
 
 /// `p *= factor`, `u = factor (u + add_factor add)` (`add` 0 if `None`)
 /// on a run of cells, with their [`Rescaled`] sums.
-fn rescale_cells(
+fn rescale_cells<A: Copy + Into<f64>>(
     pressure: &mut [f64],
     displacement: &mut [f64],
-    add: Option<&[f64]>,
+    add: Option<&[A]>,
     add_factor: f64,
     before: Before<'_>,
     profile: &[f64],
@@ -116,10 +116,10 @@ fn rescale_cells(
 
 /// [`rescale_cells`] with the old pressure of cell `i` `old(i, p)` from its
 /// new one before the scaling.
-fn rescale_with(
+fn rescale_with<A: Copy + Into<f64>>(
     pressure: &mut [f64],
     displacement: &mut [f64],
-    add: Option<&[f64]>,
+    add: Option<&[A]>,
     add_factor: f64,
     profile: &[f64],
     factor: f64,
@@ -133,7 +133,7 @@ fn rescale_with(
     for (i, ((p, u), h)) in cells.enumerate() {
         let old = old(i, *p);
         *p *= factor;
-        *u = factor * (*u + add.map_or(0.0, |a| add_factor * a[i]));
+        *u = factor * (*u + add.map_or(0.0, |a| add_factor * a[i].into()));
         sums[0] += (*p - old).abs();
         sums[1] += *p;
         // In the order of `contact_sum`; a select, not a branch.
@@ -170,9 +170,9 @@ pub(in crate::solver) fn rescale_targets<'a>(
 /// the convolution whose response row is `response`: `u = factor (u +
 /// add_factor response)` and, on the pressure's rows, `p *= factor` with
 /// the [`Rescaled`] sums (zero on the other rows).
-pub(in crate::solver) fn rescale_row(
+pub(in crate::solver) fn rescale_row<A: Copy + Into<f64>>(
     row: RescaleRow<'_>,
-    response: &[f64],
+    response: &[A],
     add_factor: f64,
     before: Before<'_>,
     profile: &[f64],
@@ -183,7 +183,7 @@ pub(in crate::solver) fn rescale_row(
         Some(p) => rescale_cells(p, u, Some(response), add_factor, before, profile, factor),
         None => {
             for (u, v) in u.iter_mut().zip(response) {
-                *u = factor * (*u + add_factor * v);
+                *u = factor * (*u + add_factor * (*v).into());
             }
             [0.0; 4]
         }
