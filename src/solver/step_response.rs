@@ -55,22 +55,21 @@ impl ContactSolver {
             None => None,
         };
         let ws = &mut self.workspace;
-        match (deferred, magnitude) {
-            (true, Some(m)) => Ok((self.operator.energy_single(&ws.direction, m)?, true)),
-            (true, None) => Ok((self.operator.energy(&ws.direction)?, false)),
-            (false, Some(m)) => {
-                let response = &mut ws.response;
-                self.operator
-                    .apply_single(&ws.direction, response, m, |_, k| k)?;
-                let energy = passes::dot(&ws.response[cells.clone()], &ws.direction[cells]);
-                Ok((energy, true))
-            }
-            (false, None) => {
-                self.operator.apply(&ws.direction, &mut ws.response)?;
-                let energy = passes::dot(&ws.response[cells.clone()], &ws.direction[cells]);
-                Ok((energy, false))
-            }
+        if deferred {
+            return match magnitude {
+                Some(m) => Ok((self.operator.energy_single(&ws.direction, m)?, true)),
+                None => Ok((self.operator.energy(&ws.direction)?, false)),
+            };
         }
+        let (direction, response) = (&ws.direction, &mut ws.response);
+        match magnitude {
+            Some(m) => self
+                .operator
+                .apply_single(direction, response, m, |_, k| k)?,
+            None => self.operator.apply(direction, response)?,
+        }
+        let energy = passes::dot(&ws.response[cells.clone()], &ws.direction[cells]);
+        Ok((energy, magnitude.is_some()))
     }
 
     /// Moves the displacement by the response to the step just taken
