@@ -343,6 +343,37 @@ impl InfluenceCoefficients {
         });
     }
 
+    /// The coefficients of the grid of half the cells each way (`coarse`:
+    /// `rows / 2 x columns / 2` cells of twice the size, both sides even),
+    /// Galerkin's `R K P`: a uniform pressure on a coarse cell is one on its
+    /// four fine cells (`P`), and a coarse cell's displacement is the mean of
+    /// its four fine cells' (`R`). So `K_c(I, J) = 1/4 sum w(a) w(b) K(2I + a,
+    /// 2J + b)` over `a, b` in `-1, 0, 1`, `w = (1, 2, 1)` (the pairs of a
+    /// source and a target cell per offset). Every fine offset it reads lies
+    /// on the table (at most `2 (rows / 2 - 1) + 1 = rows - 1`).
+    pub(crate) fn halved(&self, coarse: &Grid) -> Self {
+        let (rows, columns) = (coarse.rows(), coarse.columns());
+        let weight = |a: isize| if a == 0 { 2.0 } else { 1.0 };
+        let mut values = vec![0.0; rows * columns];
+        crate::parallel::for_each_row(&mut values, columns, |i, row| {
+            for (j, value) in row.iter_mut().enumerate() {
+                let (fi, fj) = (2 * i as isize, 2 * j as isize);
+                let mut sum = 0.0;
+                for a in -1..=1 {
+                    for b in -1..=1 {
+                        sum += weight(a) * weight(b) * self.get(fi + a, fj + b);
+                    }
+                }
+                *value = 0.25 * sum;
+            }
+        });
+        InfluenceCoefficients {
+            grid: *coarse,
+            values,
+            tail_error: self.tail_error,
+        }
+    }
+
     /// The self-coefficient `K(0, 0)`, m/Pa.
     pub fn self_coefficient(&self) -> f64 {
         self.values[0]

@@ -11,6 +11,7 @@ use super::fourier::FourierCompliance;
 use super::influence::InfluenceCoefficients;
 
 mod energy;
+mod halved;
 mod single;
 
 /// Applies the compliance of a substrate on a grid: given the cell pressures
@@ -137,6 +138,30 @@ pub fn distributed_memory_estimate(grid: &Grid, boundary: Boundary, ranks: usize
     memory_estimate(grid, boundary).div_ceil(ranks)
         + building
         + 3 * 16 * grid.rows().div_ceil(ranks) * half
+}
+
+/// Checks that the cell compliance `Delta / E*` of `grid` lies where
+/// coefficients and pressures stay normal `f64` numbers.
+fn check_cell_compliance(grid: &Grid, modulus: f64) -> Result<()> {
+    crate::error::within(
+        "cell compliance Delta / E* (m/Pa)",
+        grid.spacing() / modulus,
+        (MIN_CELL_COMPLIANCE, MAX_CELL_COMPLIANCE),
+        "within [1e-280, 1e280]: rescale lengths or moduli",
+    )
+    .map(|_| ())
+}
+
+/// Reserves the big buffers' `estimate` (bytes) all at once first, so that
+/// a grid too large for this machine is a typed error carrying the
+/// estimate instead of an abort.
+fn reserve(estimate: usize) -> Result<()> {
+    Vec::<u8>::new()
+        .try_reserve_exact(estimate)
+        .map_err(|_| Error::OutOfMemory {
+            bytes: estimate,
+            what: "the compliance operator and solver buffers",
+        })
 }
 
 /// The FFT grid: when isolated, zero padding to at least `2n - 1` cells
@@ -324,27 +349,12 @@ impl ComplianceOperator {
         slab: Option<&Slab>,
     ) -> Result<Self> {
         check_film(substrate, grid)?;
-        let cell_compliance = grid.spacing() / substrate.surface_material().contact_modulus();
-        crate::error::within(
-            "cell compliance Delta / E* (m/Pa)",
-            cell_compliance,
-            (MIN_CELL_COMPLIANCE, MAX_CELL_COMPLIANCE),
-            "within [1e-280, 1e280]: rescale lengths or moduli",
-        )?;
+        check_cell_compliance(grid, substrate.surface_material().contact_modulus())?;
         let size = fft_size(grid, boundary);
-        // The big buffers: reserve all at once first, so that a grid too
-        // large for this machine is a typed error carrying the estimate
-        // instead of an abort.
-        let estimate = match slab {
+        reserve(match slab {
             None => memory_estimate(grid, boundary),
             Some(slab) => distributed_memory_estimate(grid, boundary, slab.exchange.ranks()),
-        };
-        Vec::<u8>::new()
-            .try_reserve_exact(estimate)
-            .map_err(|_| Error::OutOfMemory {
-                bytes: estimate,
-                what: "the compliance operator and solver buffers",
-            })?;
+        })?;
         let convolution = match slab {
             None => Convolution::new(grid.rows(), grid.columns(), size)?,
             Some(slab) => {

@@ -5,6 +5,8 @@
 
 use crate::grid::Grid;
 use crate::indenter::Indenter;
+#[cfg(doc)]
+use crate::kernel::ComplianceOperator;
 
 use super::polonsky_keer::Control;
 use super::{ContactSolver, Fields, SolverParams, WarmStart};
@@ -73,7 +75,13 @@ impl ContactSolver {
     /// started from the next coarser grid, its pressures spread over the
     /// four cells each coarse cell covers. The coarse grid sees the
     /// indenter shifted so that its cell centres fall on the centres of the
-    /// fine cells they cover (half a fine cell along an odd side). `None`
+    /// fine cells they cover (half a fine cell along an odd side). Where
+    /// the fine grid is isolated, serial and even each way, the coarse
+    /// operator is Galerkin's `R K P` of the fine one, taken from its
+    /// spectrum ([`ComplianceOperator::halved`]; no influence coefficient
+    /// evaluated: 1.5 s less of a 4096^2 film's start, BENCHMARKS.md "Speed:
+    /// rough contacts on large grids"); elsewhere the substrate's own
+    /// coefficients on the coarse grid. `None`
     /// for grids smaller than [`MULTIRESOLUTION_CELLS`], or if the coarse
     /// grid cannot resolve the substrate (a film too thin
     /// for its cells) or its solve fails: the fine solve then starts from
@@ -109,7 +117,18 @@ impl ContactSolver {
                 .operator
                 .slab()
             {
-                None => ContactSolver::new(&self.substrate, &g, boundary, params),
+                // Galerkin's coarse operator from this one's spectrum where
+                // the grid halves (`ComplianceOperator::halved`), else the
+                // substrate's own on the coarse grid.
+                None => {
+                    crate::kernel::check_film(&self.substrate, &g)?;
+                    match self.operator.halved(&g) {
+                        Some(operator) => {
+                            ContactSolver::with_operator(operator?, &self.substrate, params)
+                        }
+                        None => ContactSolver::new(&self.substrate, &g, boundary, params),
+                    }
+                }
                 Some(slab) => ContactSolver::on_slab(
                     &self.substrate,
                     &g,
