@@ -68,17 +68,20 @@ pub(in crate::kernel) fn multiplier(
     size: (usize, usize),
     delta: f64,
     columns: std::ops::Range<usize>,
-    f: impl Fn(f64, f64) -> f64,
+    f: impl Fn(f64, f64) -> f64 + Sync + Send,
 ) -> Result<Vec<f64>> {
     let (n0, n1) = size;
     let normalisation = 1.0 / (n0 * n1) as f64;
     let distinct = n0 / 2 + 1;
     let mut values = zeroed(columns.len() * distinct)?;
-    for (ky, column) in columns.zip(values.chunks_exact_mut(distinct)) {
-        let qy = wavenumber(ky, n1, delta);
+    // Columns on every thread: a layer's compliance at the 10.6 million
+    // wavevectors of the 4608^2 box of a rough film at 4096^2 took 0.27 s
+    // on one.
+    crate::parallel::for_each_row(&mut values, distinct, |c, column| {
+        let qy = wavenumber(columns.start + c, n1, delta);
         for (kx, value) in column.iter_mut().enumerate() {
             *value = f(wavenumber(kx, n0, delta), qy) * normalisation;
         }
-    }
+    });
     Ok(values)
 }
