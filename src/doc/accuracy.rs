@@ -242,9 +242,15 @@
 //! iterations before, 46 after, on the periodic half-space of the tamaas
 //! comparison at 1024 x 1024). On an isolated grid a contact spread over
 //! the whole grid keeps its preconditioner box's margin (the grid
-//! zero-padded): the rough film of those tables takes 27 / 36 / 48
+//! zero-padded): the rough film of those tables took 27 / 36 / 48
 //! iterations at 1024^2 / 2048^2 / 4096^2, 31 / 41 / 58 with a box cut to
-//! the grid, whose periodic images coupled opposite edges; 62 at 8192^2.
+//! the grid, whose periodic images coupled opposite edges; 62 at 8192^2
+//! (2026-11-29). A cold solve's early iterations in single precision (until
+//! the pressure changes by less than `1e-5` an iteration, then the
+//! displacement recomputed in double) and two restarts of its conjugation
+//! brought that to 26 / 34 / 43 (2026-12-02; the 4096^2 film then solves
+//! in 20 to 23 s on two threads, `BENCHMARKS.md` "The coarse levels'
+//! kernels from the fine spectrum").
 //! With the roughness's cut-off fixed as the grid is refined the count
 //! stays nearly flat (18 to 28 from 512^2 to 8192^2): the growth is the
 //! surface's, which gains a scale with every doubling. On an isolated grid
