@@ -253,10 +253,10 @@
 //! kernels from the fine spectrum").
 //! With the roughness's cut-off fixed as the grid is refined the count
 //! stays nearly flat (18 to 28 from 512^2 to 8192^2): the growth is the
-//! surface's, which gains a scale with every doubling. On an isolated grid
-//! even each way the coarse levels take Galerkin's coarse operator `R K P`
-//! of the level above from its spectrum (no coefficients evaluated on the
-//! coarse grids: 1.5 s less of the 4096^2 film's start). The coarse levels of
+//! surface's, which gains a scale with every doubling. On a grid even each
+//! way the coarse levels take Galerkin's coarse operator `R K P` of the
+//! level above from its spectrum (nothing evaluated on the coarse grids:
+//! 1.5 s less of the isolated 4096^2 film's start). The coarse levels of
 //! the multi-resolution start stop at their tolerance with overlap left,
 //! which the fine solve takes in, and a level started from its own coarser
 //! level stops at 3 % of how far that start was (its first iteration's

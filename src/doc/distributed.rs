@@ -44,9 +44,9 @@
 //! control (the outer ranks' rows then hold no contact), each warm-started
 //! through two loads, on 2 and 4 ranks: forces within 2e-15 and pressures
 //! within 8e-15 of the largest (asserted below 1e-12). The iteration
-//! counts are the serial solver's on periodic grids and differ by at most
-//! one on the isolated ones (2026-12-02): a serial solver's coarse levels on an isolated grid
-//! even each way take Galerkin's operator from the finer level's spectrum
+//! counts differ by at most one (2026-12-02): a serial solver's coarse
+//! levels on a grid even each way take Galerkin's operator from the finer
+//! level's spectrum
 //! ([`ComplianceOperator`](crate::kernel::ComplianceOperator)), of which
 //! each rank holds only its columns, so split solvers build theirs from
 //! the substrate on each coarse grid; both converge to the same contact. It also runs the tool on a scene file under

@@ -76,12 +76,13 @@ impl ContactSolver {
     /// four cells each coarse cell covers. The coarse grid sees the
     /// indenter shifted so that its cell centres fall on the centres of the
     /// fine cells they cover (half a fine cell along an odd side). Where
-    /// the fine grid is isolated, serial and even each way, the coarse
+    /// the fine grid is even each way (and the solver serial), the coarse
     /// operator is Galerkin's `R K P` of the fine one, taken from its
-    /// spectrum ([`ComplianceOperator::halved`]; no influence coefficient
-    /// evaluated: 1.5 s less of a 4096^2 film's start, BENCHMARKS.md "Speed:
-    /// rough contacts on large grids"); elsewhere the substrate's own
-    /// coefficients on the coarse grid. `None`
+    /// spectrum ([`ComplianceOperator::halved`]; nothing evaluated on the
+    /// coarse grid: 1.5 s less of an isolated 4096^2 film's start, 4 s of a
+    /// periodic 8192^2 one's, BENCHMARKS.md "Speed: rough contacts on large
+    /// grids"); elsewhere the substrate's own kernel on the coarse grid.
+    /// `None`
     /// for grids smaller than [`MULTIRESOLUTION_CELLS`], or if the coarse
     /// grid cannot resolve the substrate (a film too thin
     /// for its cells) or its solve fails: the fine solve then starts from
