@@ -193,16 +193,28 @@ impl ContactSolver {
         // the new depth's scale; the warm start's detail is scaled alike.
         let scale = coarse.warm_scale;
         let (solution, solved) = self.agreed(solved).ok()?;
-        let fine = self.local_cells();
-        let pressure: Vec<f64> = match (warm, start) {
-            (Some(w), Some(r)) => (0..fine)
-                .map(|c| {
-                    let detail = w.pressure[c] - r.pressure[block(c)];
-                    (scale * detail + solved.pressure[block(c)]).max(0.0)
-                })
-                .collect(),
-            _ => (0..fine).map(|c| solved.pressure[block(c)]).collect(),
-        };
+        // Row by row on every thread (cell by cell, with a division for
+        // each cell's coarse cell, the prolongation to a periodic 8192^2
+        // grid took 1.5 s).
+        let mut pressure = vec![0.0; self.local_cells()];
+        crate::parallel::for_each_row(&mut pressure, columns, |i, row| {
+            let coarse_row = &solved.pressure[(i / 2) * half..][..half];
+            match (warm, start) {
+                (Some(w), Some(r)) => {
+                    let warm_row = &w.pressure[i * columns..][..columns];
+                    let restricted_row = &r.pressure[(i / 2) * half..][..half];
+                    for (j, (p, w)) in row.iter_mut().zip(warm_row).enumerate() {
+                        let detail = w - restricted_row[j / 2];
+                        *p = (scale * detail + coarse_row[j / 2]).max(0.0);
+                    }
+                }
+                _ => {
+                    for (j, p) in row.iter_mut().enumerate() {
+                        *p = coarse_row[j / 2];
+                    }
+                }
+            }
+        });
         let attached = pressure.iter().map(|p| *p > 0.0).collect();
         Some((
             WarmStart { pressure, attached },
