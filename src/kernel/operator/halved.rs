@@ -63,25 +63,28 @@ impl ComplianceOperator {
         let distinct = n0 / 2 + 1;
         let coarse_distinct = m0 / 2 + 1;
         let coarse_half = m1 / 2 + 1;
-        // The filter's factor at index k of n, and where the even spectrum
-        // keeps index k.
-        let weight = |k: usize, n: usize| {
-            2.0 + 2.0 * (2.0 * std::f64::consts::PI * k as f64 / n as f64).cos()
+        // The filter's factor at each index of n, and where the even
+        // spectrum keeps index k.
+        let weights = |n: usize| -> Vec<f64> {
+            (0..n)
+                .map(|k| 2.0 + 2.0 * (2.0 * std::f64::consts::PI * k as f64 / n as f64).cos())
+                .collect()
         };
+        let (w0, w1) = (weights(n0), weights(n1));
         let fold = |k: usize, n: usize| k.min(n - k);
         let mut spectrum = zeroed(coarse_distinct * coarse_half)?;
-        for (b, column) in spectrum.chunks_exact_mut(coarse_distinct).enumerate() {
+        crate::parallel::for_each_row(&mut spectrum, coarse_distinct, |b, column| {
             for (a, value) in column.iter_mut().enumerate() {
                 let mut sum = 0.0;
                 for k0 in [a, a + m0] {
                     for k1 in [b, b + m1] {
                         let fine = self.spectrum[fold(k1, n1) * distinct + fold(k0, n0)];
-                        sum += weight(k0, n0) * weight(k1, n1) * fine;
+                        sum += w0[k0] * w1[k1] * fine;
                     }
                 }
                 *value = 0.25 * sum;
             }
-        }
+        });
         let influence = self
             .influence
             .as_ref()
