@@ -2,7 +2,7 @@
 //! operator's spectrum alone: Galerkin's coarse operator `R K P`
 //! (a coarse cell's pressure spread over its four fine cells, its
 //! displacement the mean of theirs; Hackbusch 1985, Multi-Grid Methods and
-//! Applications, Springer, section 3.8), for the coarse levels of the
+//! Applications, Springer), for the coarse levels of the
 //! solver's multi-resolution start. No influence coefficient of the coarse
 //! grid is evaluated and no transform run: on a rough film at 4096^2 the
 //! coarse levels' kernels took 1.5 s of the solve's start from the
