@@ -249,8 +249,8 @@
 //! the pressure changes by less than `1e-5` an iteration, then the
 //! displacement recomputed in double) and two restarts of its conjugation
 //! brought that to 26 / 34 / 43 (2026-12-02; the 4096^2 film then solves
-//! in 18 to 25 s on two threads as this machine's speed drifts, `BENCHMARKS.md` "The coarse levels'
-//! kernels from the fine spectrum").
+//! in 18 to 25 s on two threads as this machine's speed drifts,
+//! `BENCHMARKS.md` "The coarse levels' kernels from the fine spectrum").
 //! With the roughness's cut-off fixed as the grid is refined the count
 //! stays nearly flat (18 to 28 from 512^2 to 8192^2): the growth is the
 //! surface's, which gains a scale with every doubling. On a grid even each

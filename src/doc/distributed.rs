@@ -49,8 +49,9 @@
 //! level's spectrum
 //! ([`ComplianceOperator`](crate::kernel::ComplianceOperator)), of which
 //! each rank holds only its columns, so split solvers build theirs from
-//! the substrate on each coarse grid; both converge to the same contact. It also runs the tool on a scene file under
-//! `mpirun -np 2` and compares the curve with the one-process run.
+//! the substrate on each coarse grid; both converge to the same contact.
+//! It also runs the tool on a scene file under `mpirun -np 2` and compares
+//! the curve with the one-process run.
 //!
 //! What stays whole on every rank: the kernel's spectrum while it is built
 //! (each rank keeps its columns), the influence coefficients it is built
