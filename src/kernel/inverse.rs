@@ -17,6 +17,11 @@
 //! itself, as before 2026-11-29, coupled cells on opposite edges as if
 //! neighbours: 31, 41 and 58 fine iterations at 1024^2, 2048^2 and 4096^2
 //! on the rough film of `BENCHMARKS.md` against 27, 36 and 48 padded.
+//!
+//! Contact solves carry the residual one cell past the set's edges before
+//! the transform and gather the result back after it (`extension`: the
+//! zero extension's jump at every edge removed, a quarter fewer iterations
+//! on rough contacts).
 
 use crate::error::Result;
 use crate::slab::{agree, even_starts, lengths, Slab};
@@ -27,12 +32,18 @@ use super::convolution::{
 use super::fourier::FourierCompliance;
 use super::operator::{cell_filter, ShareBuffer};
 
+mod extension;
+
+use extension::Band;
+
 /// What a [`BoxInverse`] is applied to: a residual on a row-major grid of
 /// `columns` columns and `values.len() / columns` rows, restricted to the
 /// cells where `member` holds and shifted by `-shift` there (the force
 /// projection), with the box's first cell at grid cell `origin`;
 /// `magnitude` bounds `|values - shift|` on the members (it scales them
-/// into single precision's range).
+/// into single precision's range). With `extend` the residual is carried
+/// one cell past the members' edges first and the result gathered back
+/// (`extension`): the box's non-members then hold its raw output.
 #[derive(Clone, Copy)]
 pub(crate) struct Residual<'a> {
     pub(crate) columns: usize,
@@ -41,6 +52,7 @@ pub(crate) struct Residual<'a> {
     pub(crate) values: &'a [f64],
     pub(crate) shift: f64,
     pub(crate) magnitude: f64,
+    pub(crate) extend: bool,
 }
 
 /// The approximate inverse on a box of a fixed size (plans, multiplier and
@@ -169,13 +181,15 @@ impl<T: Precision> BoxInverse<T> {
     /// `result = P M^-1 P (r - shift)` for the [`Residual`] `r` on its grid,
     /// `P` the restriction to its members, with the box's first cell at grid
     /// cell `origin` (rows and columns, possibly negative: box cells off the
-    /// grid are zero). Only members in the box are written: the box must
-    /// hold every member. Returns `(sum result, sum result * (r - shift))`
-    /// over the members, added row by row in order (the same whatever the
-    /// threads).
+    /// grid are zero); extended, `P E^T M^-1 E P (r - shift)`
+    /// (`extension`). Only cells in the box are written (without the
+    /// extension only its members): the box must hold every member.
+    /// Returns `(sum result, sum result * (r - shift))` over the members,
+    /// added row by row in order (the same whatever the threads).
     ///
-    /// The result goes to the members from the transform's last pass
-    /// (no buffer of the box's values).
+    /// The result goes to the box's cells from the transform's last pass
+    /// (no buffer of the box's values); extended, the members are then
+    /// gathered in place.
     ///
     /// # Errors
     /// As the FFT ([`Error::Internal`](crate::Error::Internal), a bug).
@@ -187,17 +201,23 @@ impl<T: Precision> BoxInverse<T> {
             values: residual,
             shift,
             magnitude,
+            extend,
         } = *residual;
         // The residual into single precision's range, the result back.
         let scale = 1.0 / power_of_two_above(magnitude);
         let unscale = self.multiplier_scale / scale;
         // The data's extent: where the box meets the grid.
-        let m1 = self.data.1;
+        let (m0, m1) = self.data;
         // This rank's grid rows `grid.start..` and box rows `boxed`
         // (serial: all of either); distributed, a rank whose buffers could
         // not grow stops every rank.
-        let placed = self.place(origin.0, residual.len() / columns.max(1));
+        let local = residual.len() / columns.max(1);
+        let placed = self.place(origin.0, local);
         let (grid, boxed) = agree(self.slab.as_ref(), placed)?;
+        let grid_rows = self
+            .slab
+            .as_ref()
+            .map_or(local, |s| s.starts[s.starts.len() - 1]);
         // The box columns on the grid, `first..last`, and the grid column
         // of the first.
         let first = usize::try_from(-origin.1).unwrap_or(0).min(m1);
@@ -213,15 +233,38 @@ impl<T: Precision> BoxInverse<T> {
                 .filter(|i| grid.contains(i))
                 .map(|i| i - grid.start)
         };
+        // Extended, the box's rows on this rank's band, and distributed the
+        // members' residual on the rows past it.
+        let band = Band {
+            member,
+            columns,
+            cells: cells.clone(),
+            start: grid.start,
+            local,
+            box_rows: usize::try_from(origin.0).unwrap_or(0)
+                ..usize::try_from(origin.0 + m0 as isize)
+                    .unwrap_or(0)
+                    .min(grid_rows),
+        };
+        let slab = self.slab.as_ref();
+        let edges = if extend {
+            band.edges(slab, |i| band.members_of(residual, i, shift))
+        } else {
+            (Vec::new(), Vec::new())
+        };
         // The box rows are gathered as the convolution reads them.
         let load = |b: usize, line: &mut [T]| {
             line.fill(T::zero());
             if let Some(i) = grid_row(b) {
-                let cells = i * columns + column(first)..i * columns + column(last);
+                if extend {
+                    band.spread(&mut line[first..last], i, residual, &edges, (shift, scale));
+                    return;
+                }
+                let row = i * columns..(i + 1) * columns;
                 for ((value, &m), &r) in line[first..last]
                     .iter_mut()
-                    .zip(&member[cells.clone()])
-                    .zip(&residual[cells])
+                    .zip(&member[row.clone()][cells.clone()])
+                    .zip(&residual[row][cells.clone()])
                 {
                     if m {
                         *value = T::narrow((r - shift) * scale);
@@ -239,7 +282,8 @@ impl<T: Precision> BoxInverse<T> {
             .map(|b| grid_row(b).and_then(|i| rows.get_mut(i).and_then(Option::take)))
             .collect();
         // ... written on the members as the inverse transform makes it,
-        // with the sums over them.
+        // with the sums over them (extended: on every cell of the box,
+        // gathered below).
         let sink = |b: usize, row: Option<&mut [f64]>, values: &[T]| {
             let mut sums = (0.0, 0.0);
             if let (Some(row), Some(i)) = (row, grid_row(b)) {
@@ -249,7 +293,9 @@ impl<T: Precision> BoxInverse<T> {
                     .zip(&residual[i * columns..][cells.clone()])
                     .zip(&values[first..last])
                 {
-                    if m {
+                    if extend {
+                        *out = z.into() * unscale;
+                    } else if m {
                         let z = z.into() * unscale;
                         *out = z;
                         sums.0 += z;
@@ -262,9 +308,16 @@ impl<T: Precision> BoxInverse<T> {
         let sums =
             self.convolution
                 .apply_into(load, Scaled::exact(&self.multiplier), targets, sink)?;
-        Ok(sums
-            .into_iter()
-            .fold((0.0, 0.0), |(s, d), (a, b)| (s + a, d + b)))
+        drop(rows);
+        if !extend {
+            return Ok(sums
+                .into_iter()
+                .fold((0.0, 0.0), |(s, d), (a, b)| (s + a, d + b)));
+        }
+        // The transpose of the extension, with the box inverse's output off
+        // the members on the rows past the band.
+        let edges = band.edges(slab, |i| band.outside_of(result, i));
+        Ok(band.gather(result, residual, &edges, shift))
     }
 
     /// This rank's grid rows and the box rows it holds, the box's first row
@@ -336,6 +389,7 @@ mod tests {
             values: &scaled,
             shift,
             magnitude: scaled.iter().fold(0.0_f64, |m, v| m.max(v.abs())) + shift.abs(),
+            extend: false,
         };
         let mut result = vec![0.0; n * n];
         let sums = inverse.apply_with(&residual, &mut result).unwrap();

@@ -144,6 +144,7 @@ impl ContactSolver {
                 values: &ws.gap,
                 shift,
                 magnitude: gap_max + shift.abs(),
+                extend: !double,
             };
             inverse.apply_in(buffer, &residual, &mut ws.response)
         })

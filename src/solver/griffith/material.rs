@@ -69,6 +69,18 @@ impl crate::solver::ContactSolver {
         for ((t, h), &on) in target.iter_mut().zip(&self.workspace.profile).zip(attached) {
             *t = if on { h - lowest } else { 0.0 };
         }
+        // A set all at the lowest height (a strip's lowest lines) has no
+        // shape pressures: zero exactly, not the warm start iterated down to
+        // rounding, whose sign decided a pull-off's refusal
+        // (`tests/adhesion_limits.rs`, Johnson's sinusoid at alpha = 0.1).
+        if target.iter().all(|&t| t == 0.0) {
+            for (p, &on) in shape.iter_mut().zip(attached) {
+                if on {
+                    *p = 0.0;
+                }
+            }
+            return Ok((i1, r1));
+        }
         let (i2, r2) = self.clamped_cg(attached, target, shape)?;
         Ok((i1 + i2, r1.max(r2)))
     }
