@@ -129,16 +129,21 @@ fn print_rates(trace: &[(f64, usize)]) {
         .rev()
         .find(|&k| trace[k].1 != trace[k - 1].1)
         .unwrap_or(0);
+    // "-" where there is no iteration to measure (the contact settled at
+    // the last one).
     let rate = |from: usize, to: usize| {
         if to > from {
-            (trace[to].0 / trace[from].0).powf(1.0 / (to - from) as f64)
+            format!(
+                "{:.3}",
+                (trace[to].0 / trace[from].0).powf(1.0 / (to - from) as f64)
+            )
         } else {
-            f64::NAN
+            "-".to_string()
         }
     };
     let last = trace.len().saturating_sub(1);
     println!(
-        "# contact settled at iteration {} of {}; residual factor per iteration {:.3} before, {:.3} after",
+        "# contact settled at iteration {} of {}; residual factor per iteration {} before, {} after",
         settled + 1,
         trace.len(),
         rate(0, settled),

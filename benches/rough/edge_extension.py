@@ -18,6 +18,8 @@ energy-minimising one. Measured here:
   held), from zero: a discrete Laplace (H^1, not the elastic H^1/2)
   extension reaching `k` cells out, and its transpose on the way back;
 - the extension of the one sweep scaled by `theta`;
+- the sweeps along the rows only (`rows k`), which a split run could do
+  without its neighbours' rows;
 - a normalised convolution (the binomial blur of the set's residual over
   that of its indicator) out to `r` cells: full weight next to the set;
 - the stiffness's multiplier itself reshaped (`q^0.8`, `q^0.6`,
@@ -58,6 +60,25 @@ def laplace(sweeps, theta, stiffness):
     return precondition
 
 
+def mean2(x):
+    """The two-neighbour mean along the rows (symmetric)."""
+    return 0.5 * (np.roll(x, 1, 1) + np.roll(x, -1, 1))
+
+
+def along_rows(sweeps, stiffness):
+    """`E^T K^-1 E`, `E` the sweeps of the mean along the rows only."""
+    def precondition(member, r):
+        outside = ~member
+        x = np.where(member, r, 0.0)
+        for _ in range(sweeps):
+            x = np.where(member, x, mean2(x))
+        y = stiffness(x)
+        for _ in range(sweeps):
+            y = np.where(member, y, 0.0) + mean2(np.where(outside, y, 0.0))
+        return y
+    return precondition
+
+
 def binomial(x, radius):
     """The separable binomial blur of `2 radius + 1` taps (symmetric)."""
     weights = np.array([1.0])
@@ -91,6 +112,7 @@ def main(pbar, sizes):
         cases = [("box", laplace(0, 1.0, stiffness))]
         cases += [(f"k={k}", laplace(k, 1.0, stiffness)) for k in (1, 2, 4, 16)]
         cases += [(f"k=1, theta={t}", laplace(1, t, stiffness)) for t in (1.5, 2.0)]
+        cases += [(f"rows {k}", along_rows(k, stiffness)) for k in (1, 2)]
         cases += [(f"normalised r={r}", normalised(r, stiffness)) for r in (1, 2)]
         for name, reshaped in [("q^0.8", multiplier ** 0.8), ("q^0.6", multiplier ** 0.6),
                                ("1/(1+q)", multiplier / (1 + q / n))]:

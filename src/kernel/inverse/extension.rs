@@ -57,15 +57,6 @@ pub(super) enum Row<'a> {
 }
 
 impl Row<'_> {
-    /// The residual less `shift` at column `j` if a member, else zero.
-    fn member_value(&self, j: usize, shift: f64) -> f64 {
-        match *self {
-            Row::Local { member, values } if member[j] => values[j] - shift,
-            Row::Local { .. } => 0.0,
-            Row::Edge(values) => values[j],
-        }
-    }
-
     /// The box inverse's output at column `j` if not a member, else zero.
     fn outside_value(&self, j: usize) -> f64 {
         match *self {
@@ -87,31 +78,40 @@ fn spread<T: Precision>(
     shift: f64,
     scale: f64,
 ) {
-    let this = Row::Local {
-        member,
-        values: residual,
-    };
     let n = line.len();
-    for (j, value) in line.iter_mut().enumerate() {
-        if member[j] {
-            *value = T::narrow((residual[j] - shift) * scale);
-            continue;
+    // The members' values of the rows above and below, summed column by
+    // column (a loop per kind of row, not a match per cell).
+    let mut vertical = vec![0.0; n];
+    for row in [above, below].into_iter().flatten() {
+        match row {
+            Row::Local { member, values } => {
+                for ((v, &m), &r) in vertical.iter_mut().zip(member).zip(values) {
+                    if m {
+                        *v += r - shift;
+                    }
+                }
+            }
+            Row::Edge(values) => {
+                for (v, &r) in vertical.iter_mut().zip(values) {
+                    *v += r;
+                }
+            }
         }
-        let mut sum = 0.0;
-        if j > 0 {
-            sum += this.member_value(j - 1, shift);
-        }
-        if j + 1 < n {
-            sum += this.member_value(j + 1, shift);
-        }
-        for row in [above, below].iter().flatten() {
-            sum += row.member_value(j, shift);
-        }
-        *value = if sum == 0.0 {
+    }
+    let value = |j: usize| if member[j] { residual[j] - shift } else { 0.0 };
+    // The row's own neighbours, a window sliding along it.
+    let (mut left, mut here) = (0.0, if n > 0 { value(0) } else { 0.0 });
+    for (j, out) in line.iter_mut().enumerate() {
+        let right = if j + 1 < n { value(j + 1) } else { 0.0 };
+        let sum = left + right + vertical[j];
+        *out = if member[j] {
+            T::narrow(here * scale)
+        } else if sum == 0.0 {
             T::zero()
         } else {
             T::narrow(WEIGHT * sum * scale)
         };
+        (left, here) = (here, right);
     }
 }
 
