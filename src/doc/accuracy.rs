@@ -248,12 +248,21 @@
 //! (2026-11-29). A cold solve's early iterations in single precision (until
 //! the pressure changes by less than `1e-5` an iteration, then the
 //! displacement recomputed in double) and two restarts of its conjugation
-//! brought that to 26 / 34 / 43 (2026-12-02; the 4096^2 film then solves
-//! in 18 to 25 s on two threads as this machine's speed drifts,
-//! `BENCHMARKS.md` "The coarse levels' kernels from the fine spectrum").
+//! brought that to 26 / 34 / 43 (2026-12-02; the 4096^2 film then solved
+//! in 18 to 25 s on two threads as this machine's speed drifts). The
+//! preconditioner extends the residual by zero off the working set, which
+//! leaves a jump at every edge of every patch; carrying it one cell past
+//! the edges (the four-neighbour mean) and gathering the result back by
+//! the transpose (`P E^T M^-1 E P`, still symmetric and positive) brought
+//! the count to 17 / 20 / 25 / 34 / 41 from 512^2 to 8192^2 (the periodic
+//! film's 17 / 20 / 26 / - / 42), at the same cost an iteration on an
+//! isolated grid: the 4096^2 film in 15.3 to 18.1 s, against 17.7 to 20.8
+//! s without, in runs alternating through the machine's drift
+//! (`BENCHMARKS.md`, "The box inverse past the contact's edges").
 //! With the roughness's cut-off fixed as the grid is refined the count
-//! stays nearly flat (18 to 28 from 512^2 to 8192^2): the growth is the
-//! surface's, which gains a scale with every doubling. On a grid even each
+//! stays nearly flat (18 to 28 from 512^2 to 8192^2, before the
+//! extension): the growth is the surface's, which gains a scale with every
+//! doubling. On a grid even each
 //! way the coarse levels take Galerkin's coarse operator `R K P` of the
 //! level above from its spectrum (nothing evaluated on the coarse grids:
 //! 1.5 s less of the isolated 4096^2 film's start). The coarse levels of

@@ -32,7 +32,13 @@
 //! bit. The box preconditioner (Vollebregt 2014, J. Comput. Phys. 257,
 //! 333) is the same convolution on a box around the contact (in single
 //! precision; the exchanges carry its values as `f64`, exactly), whose rows
-//! each rank takes from its band. Every sum over the grid (the
+//! each rank takes from its band. It carries the residual one cell past
+//! the contact's edges first and gathers the result back after (the
+//! four-neighbour mean, `kernel::inverse`'s extension): before and after
+//! the transform each rank sends its band's first row to the rank before
+//! and its last to the rank after (one `MPI_Alltoallv` of two rows each),
+//! so that the cells next to a band's edge see their neighbours on the
+//! other rank as on one process. Every sum over the grid (the
 //! conjugate-gradient products, the force, the contact's bounds) is added
 //! over the ranks with `MPI_Allreduce`, so every rank takes the same
 //! decisions and the same steps.

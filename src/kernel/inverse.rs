@@ -235,22 +235,22 @@ impl<T: Precision> BoxInverse<T> {
         };
         // Extended, the box's rows on this rank's band, and distributed the
         // members' residual on the rows past it.
-        let band = Band {
+        let box_rows = usize::try_from(origin.0).unwrap_or(0)
+            ..usize::try_from(origin.0 + m0 as isize)
+                .unwrap_or(0)
+                .min(grid_rows);
+        let band = Band::new(
             member,
             columns,
-            cells: cells.clone(),
-            start: grid.start,
-            local,
-            box_rows: usize::try_from(origin.0).unwrap_or(0)
-                ..usize::try_from(origin.0 + m0 as isize)
-                    .unwrap_or(0)
-                    .min(grid_rows),
-        };
+            cells.clone(),
+            (grid.start, local),
+            box_rows,
+        );
         let slab = self.slab.as_ref();
         let edges = if extend {
-            band.edges(slab, |i| band.members_of(residual, i, shift))
+            band.edges(slab, residual)
         } else {
-            (Vec::new(), Vec::new())
+            (None, None)
         };
         // The box rows are gathered as the convolution reads them.
         let load = |b: usize, line: &mut [T]| {
@@ -316,7 +316,7 @@ impl<T: Precision> BoxInverse<T> {
         }
         // The transpose of the extension, with the box inverse's output off
         // the members on the rows past the band.
-        let edges = band.edges(slab, |i| band.outside_of(result, i));
+        let edges = band.edges(slab, result);
         Ok(band.gather(result, residual, &edges, shift))
     }
 

@@ -37,34 +37,46 @@ const WEIGHT: f64 = 0.25;
 /// Rows of a piece of work of [`Band::gather`], which runs in place.
 const GATHER_ROWS: usize = 32;
 
-/// Copies of the rows above and below a piece of [`Band::gather`], where
-/// they are the box's.
-type Beside = (Option<Vec<f64>>, Option<Vec<f64>>);
-
-/// A row next to the one worked on, over the box's columns.
+/// A row over the box's columns: which cells are members, and the values
+/// (the residual before the box inverse, its output after). A row that is
+/// not the box's is a blank one (no members, zeros), so that every row has
+/// two neighbours and the passes run without a branch per cell.
 #[derive(Clone, Copy)]
-pub(super) enum Row<'a> {
-    /// A row of this rank: its members and values (the residual before the
-    /// box inverse, its output after).
-    Local {
-        member: &'a [bool],
-        values: &'a [f64],
-    },
-    /// A row of another rank, already reduced to what the other side
-    /// reads: the members' residual less the shift (zero elsewhere) before
-    /// the box inverse, the other cells' output (zero at members) after.
-    Edge(&'a [f64]),
+pub(super) struct Row<'a> {
+    member: &'a [bool],
+    values: &'a [f64],
 }
 
-impl Row<'_> {
-    /// The box inverse's output at column `j` if not a member, else zero.
-    fn outside_value(&self, j: usize) -> f64 {
-        match *self {
-            Row::Local { member, values } if !member[j] => values[j],
-            Row::Local { .. } => 0.0,
-            Row::Edge(values) => values[j],
+/// A row of another rank, or a copy of one of this rank's.
+pub(super) struct OwnedRow {
+    member: Vec<bool>,
+    values: Vec<f64>,
+}
+
+impl OwnedRow {
+    fn row(&self) -> Row<'_> {
+        Row {
+            member: &self.member,
+            values: &self.values,
         }
     }
+}
+
+/// `value` where `keep`, else zero: a select the compiler makes without a
+/// branch per cell (members lie at random in a rough contact), and never
+/// `0 * value` (a gap off the indenter is infinite).
+#[inline(always)]
+fn masked(keep: bool, value: f64) -> f64 {
+    if keep {
+        value
+    } else {
+        0.0
+    }
+}
+
+/// `row` cut to `n` cells.
+fn cut(row: Row<'_>, n: usize) -> (&[bool], &[f64]) {
+    (&row.member[..n], &row.values[..n])
 }
 
 /// `line = E (r - shift) scale` on one row: the members' residual less
@@ -72,83 +84,72 @@ impl Row<'_> {
 /// `below`) the extension; all scaled by `scale` into `T`.
 fn spread<T: Precision>(
     line: &mut [T],
-    member: &[bool],
-    residual: &[f64],
-    (above, below): (Option<Row<'_>>, Option<Row<'_>>),
+    this: Row<'_>,
+    [a, b]: [Row<'_>; 2],
     shift: f64,
     scale: f64,
 ) {
     let n = line.len();
-    // The members' values of the rows above and below, summed column by
-    // column (a loop per kind of row, not a match per cell).
-    let mut vertical = vec![0.0; n];
-    for row in [above, below].into_iter().flatten() {
-        match row {
-            Row::Local { member, values } => {
-                for ((v, &m), &r) in vertical.iter_mut().zip(member).zip(values) {
-                    if m {
-                        *v += r - shift;
-                    }
-                }
-            }
-            Row::Edge(values) => {
-                for (v, &r) in vertical.iter_mut().zip(values) {
-                    *v += r;
-                }
-            }
-        }
-    }
-    let value = |j: usize| if member[j] { residual[j] - shift } else { 0.0 };
+    // Every row cut to the line's length: the loop then checks no index.
+    let ((m, r), (ma, ra), (mb, rb)) = (cut(this, n), cut(a, n), cut(b, n));
+    let value = |m: bool, r: f64| masked(m, r - shift);
     // The row's own neighbours, a window sliding along it.
-    let (mut left, mut here) = (0.0, if n > 0 { value(0) } else { 0.0 });
-    for (j, out) in line.iter_mut().enumerate() {
-        let right = if j + 1 < n { value(j + 1) } else { 0.0 };
-        let sum = left + right + vertical[j];
-        *out = if member[j] {
-            T::narrow(here * scale)
-        } else if sum == 0.0 {
-            T::zero()
+    let (mut left, mut here) = (0.0, if n > 0 { value(m[0], r[0]) } else { 0.0 });
+    for j in 0..n {
+        let right = if j + 1 < n {
+            value(m[j + 1], r[j + 1])
         } else {
-            T::narrow(WEIGHT * sum * scale)
+            0.0
         };
+        let sum = left + right + value(ma[j], ra[j]) + value(mb[j], rb[j]);
+        line[j] = T::narrow(if m[j] { here } else { WEIGHT * sum } * scale);
         (left, here) = (here, right);
     }
 }
 
-/// `E^T` on one row in place: each member's output plus a quarter of its
-/// non-member neighbours' (in the row, and in `above` and `below`). Returns
-/// `(sum z, sum z (r - shift))` over the members.
+/// `E^T` on one row in place (`row`, its members `member`): each member's
+/// output plus a quarter of its non-member neighbours' (in the row, and in
+/// `a` and `b`); the other cells keep theirs. Returns `(sum z, sum z (r -
+/// shift))` over the members, in four lanes (cell `j` in lane `j % 4`)
+/// added in a fixed order: four chains of additions instead of one.
 fn gather(
     row: &mut [f64],
     member: &[bool],
     residual: &[f64],
-    (above, below): (Option<Row<'_>>, Option<Row<'_>>),
+    [a, b]: [Row<'_>; 2],
     shift: f64,
 ) -> (f64, f64) {
     let n = row.len();
-    let mut sums = (0.0, 0.0);
+    // Every row cut to this one's length: the loop then checks no index.
+    let (member, residual) = (&member[..n], &residual[..n]);
+    let ((ma, ya), (mb, yb)) = (cut(a, n), cut(b, n));
+    let mut lanes = [[0.0; 2]; 4];
+    // A member's neighbour in the row is read before it is written only
+    // where it is not a member, and those keep their values.
     for j in 0..n {
-        if !member[j] {
-            continue;
-        }
-        // The row's own neighbours are read before being written only at
-        // members, which are never read here.
-        let mut sum = 0.0;
-        if j > 0 && !member[j - 1] {
-            sum += row[j - 1];
-        }
-        if j + 1 < n && !member[j + 1] {
-            sum += row[j + 1];
-        }
-        for r in [above, below].iter().flatten() {
-            sum += r.outside_value(j);
-        }
-        let z = row[j] + WEIGHT * sum;
+        let left = if j > 0 {
+            masked(!member[j - 1], row[j - 1])
+        } else {
+            0.0
+        };
+        let right = if j + 1 < n {
+            masked(!member[j + 1], row[j + 1])
+        } else {
+            0.0
+        };
+        let m = member[j];
+        let z = row[j]
+            + masked(
+                m,
+                WEIGHT * (left + right + masked(!ma[j], ya[j]) + masked(!mb[j], yb[j])),
+            );
         row[j] = z;
-        sums.0 += z;
-        sums.1 += z * (residual[j] - shift);
+        let lane = &mut lanes[j % 4];
+        lane[0] += masked(m, z);
+        lane[1] += masked(m, z * (residual[j] - shift));
     }
-    sums
+    let total = |k: usize| (lanes[0][k] + lanes[1][k]) + (lanes[2][k] + lanes[3][k]);
+    (total(0), total(1))
 }
 
 /// This rank's rows of a grid and where a box lies on them.
@@ -163,17 +164,47 @@ pub(super) struct Band<'a> {
     pub(super) local: usize,
     /// The (global) grid rows of the box.
     pub(super) box_rows: Range<usize>,
+    /// A row of no members and zeros, the box's width.
+    pub(super) blank: OwnedRow,
 }
 
+/// The rows just above and below a band, from its neighbouring ranks.
+pub(super) type Edges = (Option<OwnedRow>, Option<OwnedRow>);
+
 impl<'a> Band<'a> {
-    /// Local row `i` of `values` over the box's columns.
-    fn row<'b>(&self, values: &'b [f64], i: usize) -> &'b [f64] {
-        &values[i * self.columns..][self.cells.clone()]
+    /// The band of `member` (this rank's rows, `columns` wide) whose box
+    /// covers `cells` and the (global) grid rows `box_rows`.
+    pub(super) fn new(
+        member: &'a [bool],
+        columns: usize,
+        cells: Range<usize>,
+        (start, local): (usize, usize),
+        box_rows: Range<usize>,
+    ) -> Self {
+        let blank = OwnedRow {
+            member: vec![false; cells.len()],
+            values: vec![0.0; cells.len()],
+        };
+        Band {
+            member,
+            columns,
+            cells,
+            start,
+            local,
+            box_rows,
+            blank,
+        }
     }
 
-    /// Local row `i`'s members over the box's columns.
-    fn members(&self, i: usize) -> &'a [bool] {
-        &self.member[i * self.columns..][self.cells.clone()]
+    /// Local row `i` of `values`.
+    fn row<'b>(&self, values: &'b [f64], i: usize) -> Row<'b>
+    where
+        'a: 'b,
+    {
+        Row {
+            member: &self.member[i * self.columns..][self.cells.clone()],
+            values: &values[i * self.columns..][self.cells.clone()],
+        }
     }
 
     /// Whether local row `i` (or the one past either end of the band) is
@@ -183,110 +214,71 @@ impl<'a> Band<'a> {
         g >= 0 && self.box_rows.contains(&(g as usize))
     }
 
-    /// Distributed, the rows next to this band from the neighbouring ranks
-    /// (`send(i)` of local row `i` is what this rank sends of its first
-    /// and last rows, zeros if off the box); serial, none. Every rank must
-    /// call it.
-    pub(super) fn edges(
-        &self,
-        slab: Option<&Slab>,
-        send: impl Fn(usize) -> Vec<f64>,
-    ) -> (Vec<f64>, Vec<f64>) {
+    /// Distributed, the rows next to this band from the neighbouring ranks:
+    /// each rank sends its first and last rows of `values` (members and
+    /// values; blank off the box); serial, none. Every rank must call it.
+    pub(super) fn edges(&self, slab: Option<&Slab>, values: &[f64]) -> Edges {
         let Some(slab) = slab else {
-            return (Vec::new(), Vec::new());
+            return (None, None);
         };
         let end = |i: usize| {
             if self.local > 0 && self.boxed(i as isize) {
-                send(i)
+                self.row(values, i)
             } else {
-                vec![0.0; self.cells.len()]
+                self.blank.row()
             }
         };
-        edge_rows(slab, &end(0), &end(self.local.saturating_sub(1)))
+        edge_rows(slab, end(0), end(self.local.saturating_sub(1)))
     }
 
     /// The box's rows next to local row `i`: rows of `values` on this rank
-    /// or, past the band, the `edges` from its neighbours.
-    pub(super) fn neighbours<'b>(
-        &'b self,
-        i: usize,
-        values: &'b [f64],
-        edges: &'b (Vec<f64>, Vec<f64>),
-    ) -> (Option<Row<'b>>, Option<Row<'b>>) {
-        let local = |j: usize| Row::Local {
-            member: self.members(j),
-            values: self.row(values, j),
-        };
-        let edge = |row: &'b Vec<f64>| (!row.is_empty()).then_some(Row::Edge(row));
+    /// or, past the band, the `edges` from its neighbours; blank if not
+    /// the box's.
+    fn neighbours<'b>(&'b self, i: usize, values: &'b [f64], edges: &'b Edges) -> [Row<'b>; 2] {
+        let past =
+            |edge: &'b Option<OwnedRow>| edge.as_ref().map_or(self.blank.row(), OwnedRow::row);
         let up = if !self.boxed(i as isize - 1) {
-            None
+            self.blank.row()
         } else if i > 0 {
-            Some(local(i - 1))
+            self.row(values, i - 1)
         } else {
-            edge(&edges.0)
+            past(&edges.0)
         };
         let down = if !self.boxed(i as isize + 1) {
-            None
+            self.blank.row()
         } else if i + 1 < self.local {
-            Some(local(i + 1))
+            self.row(values, i + 1)
         } else {
-            edge(&edges.1)
+            past(&edges.1)
         };
-        (up, down)
+        [up, down]
     }
 
     /// `E (r - shift) scale` on local row `i` into `line` (the box's
-    /// columns), `edges` the members' residual of the rows past the band.
+    /// columns), `edges` the residual's rows past the band.
     pub(super) fn spread<T: Precision>(
         &self,
         line: &mut [T],
         i: usize,
         residual: &[f64],
-        edges: &(Vec<f64>, Vec<f64>),
+        edges: &Edges,
         (shift, scale): (f64, f64),
     ) {
         let next = self.neighbours(i, residual, edges);
-        spread(
-            line,
-            self.members(i),
-            self.row(residual, i),
-            next,
-            shift,
-            scale,
-        );
-    }
-
-    /// The members' residual less `shift` on local row `i`: what this rank
-    /// sends its neighbours before the box inverse.
-    pub(super) fn members_of(&self, residual: &[f64], i: usize, shift: f64) -> Vec<f64> {
-        self.members(i)
-            .iter()
-            .zip(self.row(residual, i))
-            .map(|(&m, &r)| if m { r - shift } else { 0.0 })
-            .collect()
-    }
-
-    /// The box inverse's output off the members on local row `i`: what this
-    /// rank sends its neighbours after it.
-    pub(super) fn outside_of(&self, output: &[f64], i: usize) -> Vec<f64> {
-        self.members(i)
-            .iter()
-            .zip(self.row(output, i))
-            .map(|(&m, &y)| if m { 0.0 } else { y })
-            .collect()
+        spread(line, self.row(residual, i), next, shift, scale);
     }
 
     /// `E^T` on the band's rows of the box, in place in `output` (the box
-    /// inverse's output on every box cell), `edges` the other cells'
-    /// output on the rows past the band. Runs in pieces of [`GATHER_ROWS`]
-    /// rows on all threads: a piece writes only its members and reads only
-    /// non-members of the rows next to it, copied first. Returns `(sum z,
-    /// sum z (r - shift))` over the members, added row by row in order.
+    /// inverse's output on every box cell), `edges` its rows past the
+    /// band. Runs in pieces of [`GATHER_ROWS`] rows on all threads: a
+    /// piece writes only its members and reads only non-members of the
+    /// rows next to it, copied first. Returns `(sum z, sum z (r - shift))`
+    /// over the members, added row by row in order.
     pub(super) fn gather(
         &self,
         output: &mut [f64],
         residual: &[f64],
-        edges: &(Vec<f64>, Vec<f64>),
+        edges: &Edges,
         shift: f64,
     ) -> (f64, f64) {
         let boxed: Vec<usize> = (0..self.local)
@@ -297,27 +289,19 @@ impl<'a> Band<'a> {
         };
         let end = last + 1;
         let columns = self.columns;
-        // Each piece's rows above and below it, if the box's.
-        let copies: Vec<Beside> = (first..end)
+        let copy = |row: Row<'_>| OwnedRow {
+            member: row.member.to_vec(),
+            values: row.values.to_vec(),
+        };
+        // Each piece's rows above and below it.
+        let copies: Vec<[OwnedRow; 2]> = (first..end)
             .step_by(GATHER_ROWS)
             .map(|s| {
                 let e = (s + GATHER_ROWS).min(end);
-                let past = |row: &Vec<f64>| (!row.is_empty()).then(|| row.clone());
-                let up = if !self.boxed(s as isize - 1) {
-                    None
-                } else if s > 0 {
-                    Some(self.outside_of(output, s - 1))
-                } else {
-                    past(&edges.0)
-                };
-                let down = if !self.boxed(e as isize) {
-                    None
-                } else if e < self.local {
-                    Some(self.outside_of(output, e))
-                } else {
-                    past(&edges.1)
-                };
-                (up, down)
+                [
+                    copy(self.neighbours(s, output, edges)[0]),
+                    copy(self.neighbours(e - 1, output, edges)[1]),
+                ]
             })
             .collect();
         let sums = crate::parallel::map_rows(
@@ -325,34 +309,37 @@ impl<'a> Band<'a> {
             GATHER_ROWS * columns,
             |piece, values| {
                 let start = first + piece * GATHER_ROWS;
-                let (above, below) = &copies[piece];
+                let [above, below] = &copies[piece];
                 let count = values.len() / columns;
                 (0..count)
                     .map(|r| {
                         let i = start + r;
                         let (head, rest) = values.split_at_mut(r * columns);
                         let (current, tail) = rest.split_at_mut(columns);
+                        // The piece's own rows, `head` above and `tail`
+                        // below (indexed from the piece's start).
                         let up = if r > 0 {
-                            Some(Row::Local {
-                                member: self.members(i - 1),
+                            Row {
+                                member: &self.member[(i - 1) * columns..][self.cells.clone()],
                                 values: &head[(r - 1) * columns..][self.cells.clone()],
-                            })
+                            }
                         } else {
-                            above.as_deref().map(Row::Edge)
+                            above.row()
                         };
                         let down = if r + 1 < count {
-                            Some(Row::Local {
-                                member: self.members(i + 1),
+                            Row {
+                                member: &self.member[(i + 1) * columns..][self.cells.clone()],
                                 values: &tail[..columns][self.cells.clone()],
-                            })
+                            }
                         } else {
-                            below.as_deref().map(Row::Edge)
+                            below.row()
                         };
+                        let this = self.row(residual, i);
                         gather(
                             &mut current[self.cells.clone()],
-                            self.members(i),
-                            self.row(residual, i),
-                            (up, down),
+                            this.member,
+                            this.values,
+                            [up, down],
                             shift,
                         )
                     })
@@ -367,46 +354,41 @@ impl<'a> Band<'a> {
 
 /// The row just above this rank's band and the one just below it, from the
 /// ranks before and after: each rank sends `first` (its band's first row)
-/// to the rank before and `last` to the rank after. Every rank must call
-/// it, with rows of the same length.
-fn edge_rows(slab: &Slab, first: &[f64], last: &[f64]) -> (Vec<f64>, Vec<f64>) {
+/// to the rank before and `last` to the rank after, its members as ones
+/// and zeros beside the values. Every rank must call it, with rows of the
+/// same length.
+fn edge_rows(slab: &Slab, first: Row<'_>, last: Row<'_>) -> Edges {
     let (rank, ranks) = (slab.exchange.rank(), slab.exchange.ranks());
-    let n = first.len();
-    let packed = n.div_ceil(2);
-    let pack = |row: &[f64]| -> Vec<Complex<f64>> {
-        row.chunks(2)
-            .map(|p| Complex::new(p[0], p.get(1).copied().unwrap_or(0.0)))
+    let n = first.values.len();
+    let pack = |row: Row<'_>| -> Vec<Complex<f64>> {
+        row.values
+            .iter()
+            .zip(row.member)
+            .map(|(&v, &m)| Complex::new(v, f64::from(u8::from(m))))
             .collect()
     };
-    let mut send = Vec::with_capacity(2 * packed);
+    let mut send = Vec::with_capacity(2 * n);
     let mut send_counts = vec![0; ranks];
     let mut receive_counts = vec![0; ranks];
     if rank > 0 {
         send.extend(pack(first));
-        send_counts[rank - 1] = packed;
-        receive_counts[rank - 1] = packed;
+        send_counts[rank - 1] = n;
+        receive_counts[rank - 1] = n;
     }
     if rank + 1 < ranks {
         send.extend(pack(last));
-        send_counts[rank + 1] = packed;
-        receive_counts[rank + 1] = packed;
+        send_counts[rank + 1] = n;
+        receive_counts[rank + 1] = n;
     }
     let mut receive = vec![Complex::new(0.0, 0.0); receive_counts.iter().sum()];
     slab.exchange
         .all_to_all(&send, &send_counts, &mut receive, &receive_counts);
-    let unpack = |values: &[Complex<f64>]| -> Vec<f64> {
-        values.iter().flat_map(|c| [c.re, c.im]).take(n).collect()
+    let unpack = |values: &[Complex<f64>]| OwnedRow {
+        member: values.iter().map(|c| c.im != 0.0).collect(),
+        values: values.iter().map(|c| c.re).collect(),
     };
-    let above = if rank > 0 {
-        unpack(&receive[..packed])
-    } else {
-        Vec::new()
-    };
-    let below = if rank + 1 < ranks {
-        unpack(&receive[receive.len() - packed..])
-    } else {
-        Vec::new()
-    };
+    let above = (rank > 0).then(|| unpack(&receive[..n]));
+    let below = (rank + 1 < ranks).then(|| unpack(&receive[receive.len() - n..]));
     (above, below)
 }
 
