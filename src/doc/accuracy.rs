@@ -255,10 +255,12 @@
 //! the edges (the four-neighbour mean) and gathering the result back by
 //! the transpose (`P E^T M^-1 E P`, still symmetric and positive) brought
 //! the count to 17 / 20 / 25 / 34 / 41 from 512^2 to 8192^2 (the periodic
-//! film's 17 / 20 / 26 / - / 42), at the same cost an iteration on an
-//! isolated grid: the 4096^2 film in 15.3 to 18.1 s, against 17.7 to 20.8
-//! s without, in runs alternating through the machine's drift
-//! (`BENCHMARKS.md`, "The box inverse past the contact's edges").
+//! film's 17 / 20 / 26 / 34 / 42), at the same cost an iteration on an
+//! isolated grid: the 4096^2 film in 15.3 to 19.0 s, against 17.7 to 25.9
+//! s without, in runs alternating through the machine's drift. On
+//! periodic grids, whose transforms are cheaper, the extension's two
+//! passes cost up to a fifth of an iteration and take back part of the
+//! gain (`BENCHMARKS.md`, "The box inverse past the contact's edges").
 //! With the roughness's cut-off fixed as the grid is refined the count
 //! stays nearly flat (18 to 28 from 512^2 to 8192^2, before the
 //! extension): the growth is the surface's, which gains a scale with every
