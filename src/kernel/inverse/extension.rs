@@ -7,13 +7,13 @@
 //! extends a displacement given on `C` by the one that costs the least
 //! elastic energy (the surface's displacement where no pressure acts
 //! outside `C`). Vollebregt's box inverse (2014, J. Comput. Phys. 257,
-//! 333) extends by zero, which leaves a jump at every edge of the set; a
-//! rough contact is mostly edges, and the jump's cost grows with the
-//! number of scales the surface resolves. Here `E` also sets each cell
+//! 333) extends by zero, which leaves a jump at every edge of the set,
+//! and a rough contact is mostly edges. Here `E` also sets each cell
 //! outside the set to a quarter of the sum of its set neighbours' values
 //! (one sweep of the four-neighbour mean, the set's cells held): for any
-//! such `E`, `E^T K^-1 E` is symmetric and positive definite, and closer to
-//! the exact inverse than the zero extension. On the rough film of
+//! such `E`, `E^T K^-1 E` is symmetric and positive definite. The sweep
+//! stays within the grid and the box's data; on a periodic grid it does
+//! not wrap round (any linear `E` will do). On the rough film of
 //! `BENCHMARKS.md` it took 22, 26 and 34 fine iterations at 512^2, 1024^2
 //! and 2048^2 to 17, 20 and 25 ("The box inverse past the contact's
 //! edges"; `benches/rough/edge_extension.py` measures wider extensions).
