@@ -214,10 +214,6 @@ impl<T: Precision> BoxInverse<T> {
         let local = residual.len() / columns.max(1);
         let placed = self.place(origin.0, local);
         let (grid, boxed) = agree(self.slab.as_ref(), placed)?;
-        let grid_rows = self
-            .slab
-            .as_ref()
-            .map_or(local, |s| s.starts[s.starts.len() - 1]);
         // The box columns on the grid, `first..last`, and the grid column
         // of the first.
         let first = usize::try_from(-origin.1).unwrap_or(0).min(m1);
@@ -235,28 +231,30 @@ impl<T: Precision> BoxInverse<T> {
         };
         // Extended, the box's rows on this rank's band, and distributed the
         // members' residual on the rows past it.
-        let box_rows = usize::try_from(origin.0).unwrap_or(0)
-            ..usize::try_from(origin.0 + m0 as isize)
-                .unwrap_or(0)
-                .min(grid_rows);
-        let band = Band::new(
-            member,
-            columns,
-            cells.clone(),
-            (grid.start, local),
-            box_rows,
-        );
         let slab = self.slab.as_ref();
-        let edges = if extend {
-            band.edges(slab, residual)
-        } else {
-            (None, None)
+        let band = extend.then(|| {
+            let grid_rows = slab.map_or(local, |s| s.starts[s.starts.len() - 1]);
+            let box_rows = usize::try_from(origin.0).unwrap_or(0)
+                ..usize::try_from(origin.0 + m0 as isize)
+                    .unwrap_or(0)
+                    .min(grid_rows);
+            Band::new(
+                member,
+                columns,
+                cells.clone(),
+                (grid.start, local),
+                box_rows,
+            )
+        });
+        let edges = match &band {
+            Some(band) => band.edges(slab, residual),
+            None => (None, None),
         };
         // The box rows are gathered as the convolution reads them.
         let load = |b: usize, line: &mut [T]| {
             line.fill(T::zero());
             if let Some(i) = grid_row(b) {
-                if extend {
+                if let Some(band) = &band {
                     band.spread(&mut line[first..last], i, residual, &edges, (shift, scale));
                     return;
                 }
@@ -309,11 +307,11 @@ impl<T: Precision> BoxInverse<T> {
             self.convolution
                 .apply_into(load, Scaled::exact(&self.multiplier), targets, sink)?;
         drop(rows);
-        if !extend {
+        let Some(band) = band else {
             return Ok(sums
                 .into_iter()
                 .fold((0.0, 0.0), |(s, d), (a, b)| (s + a, d + b)));
-        }
+        };
         // The transpose of the extension, with the box inverse's output off
         // the members on the rows past the band.
         let edges = band.edges(slab, result);

@@ -202,9 +202,14 @@ impl<'a> Band<'a> {
         'a: 'b,
     {
         Row {
-            member: &self.member[i * self.columns..][self.cells.clone()],
+            member: self.members(i),
             values: &values[i * self.columns..][self.cells.clone()],
         }
+    }
+
+    /// Local row `i`'s members.
+    fn members(&self, i: usize) -> &'a [bool] {
+        &self.member[i * self.columns..][self.cells.clone()]
     }
 
     /// Whether local row `i` (or the one past either end of the band) is
@@ -271,7 +276,7 @@ impl<'a> Band<'a> {
     /// `E^T` on the band's rows of the box, in place in `output` (the box
     /// inverse's output on every box cell), `edges` its rows past the
     /// band. Runs in pieces of [`GATHER_ROWS`] rows on all threads: a
-    /// piece writes only its members and reads only non-members of the
+    /// piece changes only its members and reads only non-members of the
     /// rows next to it, copied first. Returns `(sum z, sum z (r - shift))`
     /// over the members, added row by row in order.
     pub(super) fn gather(
@@ -281,10 +286,9 @@ impl<'a> Band<'a> {
         edges: &Edges,
         shift: f64,
     ) -> (f64, f64) {
-        let boxed: Vec<usize> = (0..self.local)
-            .filter(|&i| self.boxed(i as isize))
-            .collect();
-        let (Some(&first), Some(&last)) = (boxed.first(), boxed.last()) else {
+        let boxed = |&i: &usize| self.boxed(i as isize);
+        let (Some(first), Some(last)) = ((0..self.local).find(boxed), (0..self.local).rfind(boxed))
+        else {
             return (0.0, 0.0);
         };
         let end = last + 1;
@@ -320,7 +324,7 @@ impl<'a> Band<'a> {
                         // below (indexed from the piece's start).
                         let up = if r > 0 {
                             Row {
-                                member: &self.member[(i - 1) * columns..][self.cells.clone()],
+                                member: self.members(i - 1),
                                 values: &head[(r - 1) * columns..][self.cells.clone()],
                             }
                         } else {
@@ -328,7 +332,7 @@ impl<'a> Band<'a> {
                         };
                         let down = if r + 1 < count {
                             Row {
-                                member: &self.member[(i + 1) * columns..][self.cells.clone()],
+                                member: self.members(i + 1),
                                 values: &tail[..columns][self.cells.clone()],
                             }
                         } else {
