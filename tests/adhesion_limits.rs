@@ -161,17 +161,28 @@ fn wavy_surfaces_that_used_to_fail_now_match_johnson() {
         let exact = JkrSinusoid::new(&rubber(), period, h0, WORK).unwrap();
         let result = solver.adhesive_branches(&map, Reach::Depth(0.5 * h0), WORK, WORK, &mut ());
         match (n, h0, result) {
-            // Contacts of 4.4 and 8.8 cells across at the pull-off: measured
-            // -5.1 % and -0.48 % (Johnson's sinusoid on finer grids:
-            // `tests/adhesion_shapes.rs`).
-            (64 | 128, 2e-5, Ok(branches)) => {
+            // A contact 8.8 cells across at the pull-off: measured -0.48 %
+            // (Johnson's sinusoid on finer grids: `tests/adhesion_shapes.rs`).
+            (128, 2e-5, Ok(branches)) => {
                 let peak = branches.at_depth(0.5 * h0, 0.0).unwrap();
                 let force = branches.pull_off(peak.contact_area).unwrap().force;
                 let (pressure, _) = exact.pull_off().unwrap();
                 let error = force / (period * period) / pressure - 1.0;
-                let bound = if n == 64 { 0.06 } else { 0.01 };
-                assert!(error.abs() < bound, "{n}: {error}");
+                assert!(error.abs() < 0.01, "{n}: {error}");
                 assert!(!branches.edge_averaged());
+                accepted += 1;
+            }
+            // 4.4 cells across: the family's narrowest strip (two lines)
+            // holds a lower force than the branch's first minimum (the
+            // staircase's), so the pull-off is refused; it was accepted at
+            // -5.1 % before the least force below the peak was taken.
+            (64, 2e-5, Ok(branches)) => {
+                let peak = branches.at_depth(0.5 * h0, 0.0).unwrap();
+                let pull_off = branches.pull_off(peak.contact_area);
+                assert!(
+                    matches!(pull_off, Err(Error::Unsupported { .. })),
+                    "{pull_off:?}"
+                );
                 accepted += 1;
             }
             // The loading to half the amplitude needs contacts wider than
@@ -311,6 +322,72 @@ fn a_pull_off_contact_the_grid_does_not_resolve_is_refused() {
         assert!(
             matches!(pull_off, Err(Error::Unsupported { .. })),
             "{alpha}: {pull_off:?}"
+        );
+    }
+}
+
+/// Johnson's sinusoid on a periodic square of side `L` on 64 x 64 cells,
+/// `h0 (1 - cos 2 pi (x + y) / L)` if `diagonal` (wavelength `L / sqrt 2`,
+/// crests along the grid's diagonal), else `h0 (1 - cos 2 pi x / L)`;
+/// `alpha` its adhesion parameter, heights sampled at the cell centres plus
+/// `noise` times a fixed pseudo-random rounding in `[-h0 / 2, h0 / 2]`.
+/// Returns the pull-off's relative error, or the error.
+fn sinusoid_pull_off(alpha: f64, diagonal: bool, noise: f64) -> Result<f64, Error> {
+    let (n, side) = (64, 64e-5);
+    let estar = rubber().contact_modulus();
+    let wavelength = if diagonal { side / 2f64.sqrt() } else { side };
+    let amplitude = (2.0 * wavelength * WORK / (PI * PI * estar)).sqrt() / alpha;
+    let exact = JkrSinusoid::new(&rubber(), wavelength, amplitude, WORK).unwrap();
+    let grid = Grid::square_of_side(n, side).unwrap();
+    let (map, mut solver) = sampled(grid, Boundary::Periodic, |x, y| {
+        // A fixed hash of the position as the rounding.
+        let hash =
+            ((x * 1e7) as u64 ^ ((y * 1e7) as u64) << 20).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        let unit = (hash >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+        let phase = if diagonal { x + y } else { x };
+        amplitude * (1.0 - (2.0 * PI * phase / side).cos() + noise * unit)
+    });
+    let target = exact.mean_pressure(0.6 * wavelength / PI) * side * side;
+    let branches = solver.adhesive_branches(&map, Reach::Force(target), WORK, WORK, &mut ())?;
+    let peak = branches.at_force(target, 0.0)?;
+    let force = branches.pull_off(peak.contact_area)?.force;
+    Ok(force / (side * side) / exact.pull_off().unwrap().0 - 1.0)
+}
+
+#[test]
+fn a_wave_along_the_diagonal_is_refused_where_the_grid_does_not_resolve_it() {
+    // Pull-off contacts 1.2 and 3.5 lines of cells wide: refused, as along
+    // the grid (`a_pull_off_contact_the_grid_does_not_resolve_is_refused`).
+    // The first came out as a compressive "pull-off" 2.3 times the exact
+    // force from a ripple of the staircase four lines wide, the second -6.5
+    // %. At 5.6 lines: measured -0.76 %.
+    for alpha in [0.02, 0.1] {
+        let result = sinusoid_pull_off(alpha, true, 0.0);
+        assert!(
+            matches!(result, Err(Error::Unsupported { .. })),
+            "{alpha}: {result:?}"
+        );
+    }
+    let error = sinusoid_pull_off(0.2, true, 0.0).unwrap();
+    assert!(error.abs() < 0.01, "{error}");
+}
+
+#[test]
+fn rounding_in_a_strips_heights_does_not_move_its_pull_off() {
+    // Heights carrying rounding (1e-16 of the amplitude) used to split a
+    // strip's lines into cells of different heights, and the family read
+    // that rounding as heights: along the grid at alpha = 0.2 the pull-off
+    // came out +0.78 % instead of -1.60 %, at alpha = 0.1 (3.5 lines) -10 %
+    // where it is refused, along the diagonal at 0.1 -7.0 %. The lines are
+    // now snapped to one height: the same answers to rounding.
+    for diagonal in [false, true] {
+        let clean = sinusoid_pull_off(0.2, diagonal, 0.0).unwrap();
+        let rounded = sinusoid_pull_off(0.2, diagonal, 1e-16).unwrap();
+        assert!((rounded - clean).abs() < 1e-9, "{clean} vs {rounded}");
+        let result = sinusoid_pull_off(0.1, diagonal, 1e-16);
+        assert!(
+            matches!(result, Err(Error::Unsupported { .. })),
+            "{result:?}"
         );
     }
 }

@@ -494,42 +494,87 @@ impl AdhesiveBranches {
     }
 
     /// The load-controlled pull-off reached from a contact of area `history`
-    /// (m^2, typically the loading peak's): the first minimum of the force
-    /// on the receding branch below that area. A pull beyond its force
-    /// finds no equilibrium.
+    /// (m^2, typically the loading peak's): the least force on the
+    /// receding branch below that area (its first minimum, unless the
+    /// branch falls lower further down, where the contact snaps to). A
+    /// pull beyond its force finds no equilibrium.
     ///
     /// # Errors
     /// [`Error::NonFinite`] if the branch holds no finite force there;
     /// [`Error::Unsupported`] if the force is least at the family's smallest
-    /// set, or on strips fewer than four lines of cells wide (the pull-off
-    /// contact is narrower than the grid resolves).
+    /// set, on strips fewer than four lines of cells wide, or where a set
+    /// the grid does not resolve, just below the least of those it does,
+    /// holds a lower force (the pull-off contact is narrower than the grid
+    /// resolves).
     pub fn pull_off(&self, history: f64) -> Result<BranchPoint> {
-        self.first_minimum(history, Load::Force(0.0))
+        self.least_below(history, Load::Force(0.0))
     }
 
     /// The displacement-controlled jump-off reached from a contact of area
-    /// `history` (m^2): the first minimum of the depth on the receding
-    /// branch below that area, where the contact comes off under fixed
-    /// grips.
+    /// `history` (m^2): the least depth on the receding branch below that
+    /// area (as [`pull_off`](Self::pull_off)), where the contact comes off
+    /// under fixed grips.
     ///
     /// # Errors
     /// As [`pull_off`](Self::pull_off).
     pub fn jump_off(&self, history: f64) -> Result<BranchPoint> {
-        self.first_minimum(history, Load::Depth(0.0))
+        self.least_below(history, Load::Depth(0.0))
     }
 
-    /// The first local minimum of the receding balance (depth or force)
-    /// walking down from `history`, located on the sets and refined by
-    /// golden-section search between the sets around it.
-    fn first_minimum(&self, history: f64, load: Load) -> Result<BranchPoint> {
+    /// The least value of the receding balance (depth or force) below
+    /// `history`, located on the sets and refined by golden-section search
+    /// between the sets around it. Where the balance has one minimum below
+    /// `history` (the JKR sphere, punch and sinusoid) it is that minimum;
+    /// past a first minimum with a lower one below it on a set a receding
+    /// contact can snap onto (as `evolve`'s), the contact snaps to the
+    /// branch below under either control and comes off at the lower
+    /// (Maugis 2000, Contact, Adhesion and Rupture of Elastic Solids,
+    /// ch. 5).
+    fn least_below(&self, history: f64, load: Load) -> Result<BranchPoint> {
         let nodes = &self.nodes;
         let key = |a: f64| self.balance(a, Edge::Receding, load);
         let top = history.clamp(nodes[0].area, self.max_contact_area());
+        // The sets below `top` (and `top`), each with whether it has as
+        // many cells as `evolve` lets a receding contact snap onto.
         let mut areas: Vec<f64> = nodes.iter().map(|n| n.area).filter(|&a| a < top).collect();
+        let mut resolved: Vec<bool> = nodes
+            .iter()
+            .filter(|n| n.area < top)
+            .map(|n| n.cells >= RESOLVED_CELLS)
+            .collect();
         areas.push(top);
+        resolved.push(true);
+        // The first minimum walking down.
         let mut i = areas.len() - 1;
         while i > 0 && key(areas[i - 1]) <= key(areas[i]) {
             i -= 1;
+        }
+        // Past it the edge snaps to the branch below, where the balance
+        // holds again at the same load, and recedes on from there: the
+        // contact comes off at the least value of the sets it can snap
+        // onto (onto a smaller one the snap is the staircase's and the
+        // contact comes off, as in `evolve`). A strip's sets are all such:
+        // on a strip along the grid's diagonal 1.2 lines of cells wide at
+        // the pull-off, the first minimum, a ripple of the staircase five
+        // lines wide, had been returned as a compressive "pull-off" 2.3
+        // times the exact force; the least is on the narrowest strip, and
+        // refused below.
+        for j in (0..i).rev() {
+            if resolved[j] && key(areas[j]) < key(areas[i]) {
+                i = j;
+            }
+        }
+        // A least value with a lower one just below it on a set too small
+        // to snap onto: the minimum may lie among the sets the grid does
+        // not resolve.
+        let unresolved_below = i == 0 || !resolved[i - 1];
+        if unresolved_below && (0..i).any(|j| key(areas[j]) < key(areas[i])) {
+            return Err(unresolved_minimum());
+        }
+        // An adhesive contact comes off under tension: a least force above
+        // zero is a staircase's (the unloaded, vanishing contact lies below).
+        if matches!(load, Load::Force(_)) && key(areas[i]) > 0.0 {
+            return Err(unresolved_minimum());
         }
         let (mut lo, mut hi) = (
             areas[i.saturating_sub(1)],
@@ -550,11 +595,7 @@ impl AdhesiveBranches {
         // grid resolves (a wavy surface's pull-off contact 2.2 lines of
         // cells wide came out 32 % off before this check).
         if i == 0 && area - areas[0] <= 1e-6 * areas[0] || area < self.least_area {
-            return Err(Error::Unsupported {
-                feature: "a pull-off or jump-off at the family's smallest contact sets",
-                reason: "the force (or depth) is least where the grid hardly resolves the \
-                         contact; refine the grid",
-            });
+            return Err(unresolved_minimum());
         }
         let depth = self.lowest + self.balance(area, Edge::Receding, Load::Depth(0.0));
         self.checked(self.point(area, Load::Depth(depth)))
@@ -567,6 +608,15 @@ impl AdhesiveBranches {
             &[point.depth, point.force, point.contact_area],
         )?;
         Ok(point)
+    }
+}
+
+/// The refusal of a pull-off or jump-off the family's sets do not resolve.
+fn unresolved_minimum() -> Error {
+    Error::Unsupported {
+        feature: "a pull-off or jump-off at the family's smallest contact sets",
+        reason: "the force (or depth) is least where the grid hardly resolves the contact; \
+                 refine the grid",
     }
 }
 

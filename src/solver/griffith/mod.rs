@@ -146,7 +146,7 @@ impl ContactSolver {
             Reach::Force(f) => check_finite("force", f)?,
         };
         let (advancing, receding) = crate::error::works_of_adhesion(advancing, receding)?;
-        let lowest = self.sample_profile(indenter)?;
+        let (lowest, strip) = self.sample_family_profile(indenter)?;
         let order = self.family_order(lowest);
         let smallest_level = order
             .get(4 * MIN_CELLS.min(order.len().saturating_sub(1)))
@@ -164,7 +164,10 @@ impl ContactSolver {
             }
             Reach::Force(f) => {
                 let depth = if f > 0.0 {
-                    self.solve_force(indenter, f, None, &mut ())?.0.depth
+                    let depth = self.solve_force(indenter, f, None, &mut ())?.0.depth;
+                    // The solve sampled the profile afresh.
+                    self.sample_family_profile(indenter)?;
+                    depth
                 } else {
                     lowest
                 };
@@ -174,7 +177,6 @@ impl ContactSolver {
         .max(smallest_level);
         let delta = self.grid().spacing();
         let periodic = self.operator.boundary() == crate::grid::Boundary::Periodic;
-        let strip = self.strip_tolerance();
         // The sets' relative spacing and the fits' relative window, for
         // every widening (the profile does not change).
         let (relative_spacing, window) = if strip.is_none() {
@@ -320,6 +322,21 @@ impl ContactSolver {
             }
         }
         self.clamped_solution(indenter, point.depth, &attached)
+    }
+
+    /// Samples `indenter`'s profile (returning its lowest point) and, on a
+    /// strip ([`strip_tolerance`](Self::strip_tolerance), also returned),
+    /// makes the heights of each line equal.
+    fn sample_family_profile<I: Indenter + ?Sized>(
+        &mut self,
+        indenter: &I,
+    ) -> Result<(f64, Option<f64>)> {
+        let lowest = self.sample_profile(indenter)?;
+        let strip = self.strip_tolerance();
+        if let Some(tolerance) = strip {
+            self.snap_strip_lines(tolerance);
+        }
+        Ok((lowest, strip))
     }
 
     /// The reachable cells in the order the family adds them: by height
