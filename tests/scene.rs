@@ -398,6 +398,9 @@ fn a_rough_adhesive_cycle_runs_on_a_film() {
     let direct = solver
         .cohesive_pull_off(&*map, &zone, max_depth, increment, warm.as_ref(), &mut ())
         .unwrap();
+    // Patches at the pull-off at least as wide as the zone, as the scene
+    // found (no caveat that the zone spans them).
+    assert!(!direct.zone_spans_contact(), "{}", direct.cells_across);
     // The same search for the least force; the scene re-solves no peak,
     // searches where the force turns below all it has seen, and its solves
     // read the edge's curvature again at other steps (1.2e-3 apart,

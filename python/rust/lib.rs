@@ -54,6 +54,16 @@ create_exception!(
      an error with `warnings.simplefilter(\"error\", EdgeContactWarning)`."
 );
 
+create_exception!(
+    layered_contact,
+    CohesiveZoneWarning,
+    pyo3::exceptions::PyUserWarning,
+    "A cohesive zone wider than the contact at the pull-off: the zones of \
+     the contact's two sides meet, and the force is a cohesive law's, not \
+     the JKR limit's (a finer grid resolves it). Make it an error with \
+     `warnings.simplefilter(\"error\", CohesiveZoneWarning)`."
+);
+
 /// The library's error as the matching Python exception, same message.
 fn to_py(error: lc::Error) -> PyErr {
     let message = error.to_string();
@@ -122,6 +132,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("InvalidInputError", py.get_type::<InvalidInputError>())?;
     m.add("ConvergenceError", py.get_type::<ConvergenceError>())?;
     m.add("EdgeContactWarning", py.get_type::<EdgeContactWarning>())?;
+    m.add("CohesiveZoneWarning", py.get_type::<CohesiveZoneWarning>())?;
     m.add_class::<Material>()?;
     m.add_class::<Substrate>()?;
     m.add_class::<Indenter>()?;

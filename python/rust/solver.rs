@@ -324,7 +324,9 @@ impl ContactSolver {
     /// the force has stayed above its least value for three steps, the
     /// least force then searched to a sixteenth of a step (the crate's
     /// `ContactSolver::cohesive_pull_off`; a step out of the fixed point's
-    /// reach is taken in substeps). Returns `(force, depth)` (N, m).
+    /// reach is taken in substeps). Returns `(force, depth)` (N, m); a
+    /// `CohesiveZoneWarning` where the zone is wider than the contact at
+    /// the pull-off (`CohesivePullOff::zone_spans_contact`).
     #[pyo3(signature = (indenter, depth, step, advancing, receding=None, zone_cells=None, cells_across=None))]
     #[allow(clippy::too_many_arguments)]
     fn cohesive_pull_off(
@@ -344,6 +346,15 @@ impl ContactSolver {
         let pull_off = py
             .detach(|| inner.cohesive_pull_off(&shape, &zone, depth, step, None, &mut ()))
             .py_err()?;
+        if pull_off.zone_spans_contact() {
+            let message = std::ffi::CString::new(format!(
+                "the cohesive zone ({} cells) is wider than the contact at the pull-off \
+                 (its widest patch {} cells across): the force is a cohesive law's, not \
+                 the JKR limit's; refine the grid",
+                pull_off.zone_cells, pull_off.cells_across
+            ))?;
+            PyErr::warn(py, &py.get_type::<CohesiveZoneWarning>(), &message, 1)?;
+        }
         Ok((pull_off.force, pull_off.depth))
     }
 

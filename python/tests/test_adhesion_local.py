@@ -2,6 +2,7 @@
 against the exact values the Rust tests use."""
 
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -99,6 +100,30 @@ def test_cohesive_zone_sinusoid_along_the_grid_and_at_45_degrees():
         errors.append(force / side**2 / exact - 1)
     assert errors[0] == pytest.approx(-0.0178, abs=1e-3)
     assert abs(errors[0] - errors[1]) < 5e-3
+
+
+def test_cohesive_zone_wider_than_the_pull_off_contact_warns():
+    # Johnson's sinusoid along the grid, 64 cells a wavelength: at alpha =
+    # 0.05 the contact at the least force is one line wide, under the zone's
+    # four cells, and the pull-off 5.1 % weak (the Rust test
+    # tests/cohesive_limits.rs); at alpha = 0.3 it is resolved.
+    work, spacing, n = 0.05, 1e-5, 64
+    side = n * spacing
+    solver = lc.ContactSolver(lc.Substrate.half_space(RUBBER), n, n, spacing, periodic=True)
+
+    def pull_off(alpha):
+        amplitude = math.sqrt(2 * side * work / (math.pi**2 * ESTAR)) / alpha
+        surface = lc.Indenter.wavy(n, n, spacing, (1, 0), amplitude)
+        force, _ = solver.cohesive_pull_off(surface, 0.6 * amplitude, amplitude / 40, work)
+        exact, _ = lc.analytic.jkr_sinusoid_pull_off(RUBBER, side, amplitude, work)
+        return force / side**2 / exact - 1
+
+    with pytest.warns(lc.CohesiveZoneWarning, match="refine the grid"):
+        error = pull_off(0.05)
+    assert error < -0.03
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", lc.CohesiveZoneWarning)
+        assert abs(pull_off(0.3)) < 0.02
 
 
 def test_cohesive_zone_refuses_bad_laws():

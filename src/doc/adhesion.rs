@@ -538,6 +538,19 @@
 //! 11.6 zone lengths on this cycle at 64^2 and 128^2: large where the
 //! pull-off still moved by 25 %, so not kept.
 //!
+//! Where the zone is wider than the contact at the pull-off (its widest
+//! patch fewer cells across than the zone: twice the most steps from a
+//! cell in contact to an open one, less one), the zones of the contact's
+//! two sides meet and no part of the edge is in the JKR limit. Johnson's
+//! sinusoid so resolved came out 0.9 to 25 % weak (coarser than about 15
+//! lines of cells across its exact pull-off contact; `BENCHMARKS.md`, "The
+//! cohesive zone on contacts it spans"). The pull-off says so
+//! ([`CohesivePullOff::zone_spans_contact`](crate::solver::CohesivePullOff::zone_spans_contact),
+//! a `CohesiveZoneWarning` in Python) and a scene's curve carries
+//! [`Caveat::CohesiveZoneSpansContact`](crate::scene::Caveat::CohesiveZoneSpansContact):
+//! the rough film above on 32^2 cells (a zone of 40 um) is flagged, on
+//! 64^2 it is not.
+//!
 //! So the cohesive zone is the method that converges to the JKR limit for
 //! any shape and orientation, with patches, on any body; at 64 cells
 //! across a compact contact it is within about 1 %, and Richardson

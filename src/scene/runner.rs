@@ -37,6 +37,9 @@ pub(super) struct Runner<'a> {
     watch_edge: bool,
     /// The cohesive zone's law, when the scene's adhesion takes it.
     cohesive: Option<CohesiveZone>,
+    /// The least force of the cohesive solves and the widest patch of its
+    /// contact in cells across.
+    least_cohesive: Option<(f64, f64)>,
 }
 
 impl<'a> Runner<'a> {
@@ -59,6 +62,7 @@ impl<'a> Runner<'a> {
                 && !scene.indenter.is_map()
                 && scene.boundary == Boundary::Isolated,
             cohesive,
+            least_cohesive: None,
         })
     }
 
@@ -69,8 +73,18 @@ impl<'a> Runner<'a> {
         let warm = self.warm.as_ref();
         let (solution, warm) = match (control, self.scene.adhesion.works(), self.cohesive) {
             (Control::Depth(d), Some(_), Some(zone)) => {
-                self.solver
-                    .solve_depth_cohesive(self.indenter, d, &zone, warm, self.observer)?
+                let (solution, warm) = self.solver.solve_depth_cohesive(
+                    self.indenter,
+                    d,
+                    &zone,
+                    warm,
+                    self.observer,
+                )?;
+                if solution.force < self.least_cohesive.map_or(0.0, |(force, _)| force) {
+                    let across = self.solver.widest_contact_patch(&warm);
+                    self.least_cohesive = Some((solution.force, across));
+                }
+                (solution, warm)
             }
             (Control::Depth(d), None, _) => {
                 self.solver
@@ -265,14 +279,19 @@ impl<'a> Runner<'a> {
             caveats: match (self.scene.adhesion.works(), self.cohesive) {
                 (Some(_), None) => vec![super::Caveat::MeshDependentAdhesion],
                 (Some(_), Some(zone)) => {
-                    let thin = !zone.resolves_layer(
+                    let (spacing, top) = (
                         self.solver.grid().spacing(),
                         self.solver.substrate().top_thickness(),
                     );
+                    let thin = !zone.resolves_layer(spacing, top);
                     let rough = matches!(self.scene.indenter, IndenterSpec::RoughSurface { .. });
+                    let spans = self
+                        .least_cohesive
+                        .is_some_and(|(_, across)| across < zone.cells_on(spacing, top));
                     [
                         (thin, super::Caveat::CohesiveZoneLongAgainstLayer),
                         (rough, super::Caveat::CohesiveZoneOnRoughSurface),
+                        (spans, super::Caveat::CohesiveZoneSpansContact),
                     ]
                     .into_iter()
                     .filter_map(|(applies, caveat)| applies.then_some(caveat))

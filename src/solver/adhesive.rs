@@ -190,7 +190,14 @@ impl ContactSolver {
                     Some(&attached),
                 );
                 super::check_solution(&solution)?;
-                return Ok((solution, WarmStart { pressure, attached }));
+                return Ok((
+                    solution,
+                    WarmStart {
+                        pressure,
+                        attached,
+                        contact: None,
+                    },
+                ));
             }
         }
         Err(Error::NoConvergence {

@@ -49,7 +49,14 @@ impl ContactSolver {
             return Err(self.singular_uniform_mode());
         }
         let attached = pressure.iter().map(|p| *p > 0.0).collect();
-        Ok((solution, WarmStart { pressure, attached }))
+        Ok((
+            solution,
+            WarmStart {
+                pressure,
+                attached,
+                contact: None,
+            },
+        ))
     }
 
     /// The error of a periodic grid in full contact on a body without a

@@ -257,6 +257,7 @@ impl ContactSolver {
             let start = WarmStart {
                 pressure: std::mem::take(&mut compressive),
                 attached: Vec::new(),
+                contact: None,
             };
             // Inner solves only as tight as the fixed point has come: a
             // hundredth of the last change of the tensions.
@@ -375,6 +376,7 @@ impl ContactSolver {
                     WarmStart {
                         pressure: total,
                         attached: bonded,
+                        contact: Some(contact),
                     },
                 ));
             }

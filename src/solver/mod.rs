@@ -69,6 +69,7 @@ pub(crate) mod least_force;
 mod multiresolution;
 mod params;
 mod passes;
+mod patch_width;
 mod polonsky_keer;
 mod preconditioning;
 mod split;
@@ -470,6 +471,7 @@ impl ContactSolver {
             WarmStart {
                 pressure,
                 attached: vec![false; n],
+                contact: None,
             },
         )
     }

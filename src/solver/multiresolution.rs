@@ -164,7 +164,11 @@ impl ContactSolver {
                 pressure[block(c)] += 0.25 * p;
             }
             let attached = pressure.iter().map(|p| *p > 0.0).collect();
-            WarmStart { pressure, attached }
+            WarmStart {
+                pressure,
+                attached,
+                contact: None,
+            }
         });
         let start = restricted.as_ref();
         // A coarse cell centre lies (rounded-up half count - half count)
@@ -217,7 +221,11 @@ impl ContactSolver {
         });
         let attached = pressure.iter().map(|p| *p > 0.0).collect();
         Some((
-            WarmStart { pressure, attached },
+            WarmStart {
+                pressure,
+                attached,
+                contact: None,
+            },
             solution.iterations + solution.coarse_iterations,
             scale,
         ))

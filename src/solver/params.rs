@@ -168,6 +168,9 @@ impl Solution {
 pub struct WarmStart {
     pub(crate) pressure: Vec<f64>,
     pub(crate) attached: Vec<bool>,
+    /// The cells whose gap is closed, where they differ from `attached`:
+    /// the cohesive zone's bonded cells include its open zone.
+    pub(crate) contact: Option<Vec<bool>>,
 }
 
 impl WarmStart {
