@@ -115,3 +115,28 @@ fn scenes_report_a_zone_wider_than_the_pull_off_contact() {
     );
     assert!((f32 / f64 - 1.075).abs() < 0.01, "{f32} {f64}");
 }
+
+#[test]
+fn a_force_cycle_whose_pull_off_dwarfs_its_peak_comes_off() {
+    // The rough film on 16 cells a side loaded to 10 uN and 100 uN, about
+    // a hundredth and a tenth of its pull-off force: at 10 uN (and 1 uN)
+    // the first
+    // unloading trial from the peak lost the contact, and the cycle stopped
+    // with an internal error. Now the trial is halved towards the peak and
+    // the least force searched between.
+    let pull_off = |max_force: f64| {
+        let mut scene = rough_film(16);
+        scene.protocol = Protocol::ForceCycle {
+            max_force,
+            steps: 2,
+        };
+        let curve = scene.run(&mut |_| {}).unwrap();
+        curve.pull_off().unwrap().force
+    };
+    let (small, large) = (pull_off(1e-5), pull_off(1e-4));
+    // The peaks' contacts differ a little (measured 0.09 % apart; at 1 uN
+    // -1.35156 mN against -1.35149 mN at 100 uN).
+    assert!((small / large - 1.0).abs() < 5e-3, "{small} {large}");
+    let tiny = pull_off(1e-6);
+    assert!((tiny / large - 1.0).abs() < 5e-3, "{tiny} {large}");
+}

@@ -80,10 +80,7 @@ impl<'a> Runner<'a> {
                     warm,
                     self.observer,
                 )?;
-                if solution.force < self.least_cohesive.map_or(0.0, |(force, _)| force) {
-                    let across = self.solver.widest_contact_patch(&warm);
-                    self.least_cohesive = Some((solution.force, across));
-                }
+                self.note_cohesive(&solution, &warm);
                 (solution, warm)
             }
             (Control::Depth(d), None, _) => {
@@ -120,6 +117,16 @@ impl<'a> Runner<'a> {
         };
         self.warm = Some(warm);
         Ok(solution)
+    }
+
+    /// Keeps the widest patch of a cohesive equilibrium's contact if its
+    /// force is the least so far (and tensile): the caveat that the zone
+    /// spans the contact at the pull-off reads it.
+    fn note_cohesive(&mut self, solution: &Solution, state: &WarmStart) {
+        if solution.force < self.least_cohesive.map_or(0.0, |(force, _)| force) {
+            let across = self.solver.widest_contact_patch(state);
+            self.least_cohesive = Some((solution.force, across));
+        }
     }
 
     /// Records a step; false if the contact reached the grid's edge.

@@ -42,6 +42,7 @@ impl Runner<'_> {
         match reached {
             Ok((mut solution, state)) => {
                 solution.iterations = iterations;
+                self.note_cohesive(&solution, &state);
                 self.warm = Some(state);
                 Ok(solution)
             }

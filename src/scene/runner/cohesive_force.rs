@@ -40,6 +40,10 @@ const MAX_TRIALS: usize = 100;
 /// unless the force lies inside a snap of the path (module docs).
 const FORCE_TOLERANCE: f64 = 1e-6;
 
+/// Halvings of the first unloading trial towards the peak where it lost
+/// the contact ([`Runner::kept_between`]).
+const HALVINGS: usize = 8;
+
 /// Fixed-point rounds of one force step taken under force control before
 /// the depth search takes it instead: a step takes 20 to 40 at 64 cells
 /// across on the tilted paraboloid (30 let one of its unloading steps fall
@@ -297,6 +301,7 @@ impl Runner<'_> {
         if !(onward && held && solution.contact_cells > 0) {
             return Ok(None);
         }
+        self.note_cohesive(&solution, &end);
         self.warm = Some(end.clone());
         Ok(Some(Probe {
             depth: solution.depth,
@@ -367,11 +372,19 @@ impl Runner<'_> {
                 // Lost before the force came down to the one asked: the
                 // least force walked, between its neighbours.
                 let [above, lowest, below] = least;
-                let (Some(above), Some(lowest)) = (above, lowest) else {
+                let Some(lowest) = lowest else {
                     return Err(Error::Internal {
                         what: "force control through the cohesive zone",
-                        detail: "the contact was lost at the first unloading trial".into(),
+                        detail: "no equilibrium walked along the unloading".into(),
                     });
+                };
+                let Some(above) = above else {
+                    // Lost at the trials from the top of the path (the
+                    // unloading's first step from the peak, where forces
+                    // of adhesion dwarf the protocol's): an equilibrium
+                    // between, by halving towards the top.
+                    let mid = self.kept_between(path, &lowest, &probe)?;
+                    return Ok(Reached::Beyond([lowest, mid, probe]));
                 };
                 return Ok(Reached::Beyond([above, lowest, below.unwrap_or(probe)]));
             }
@@ -406,6 +419,41 @@ impl Runner<'_> {
             method: "force control through the cohesive zone (depth of one force step)",
             iterations: MAX_TRIALS,
             residual: near.force - force,
+        })
+    }
+
+    /// An equilibrium in contact between `top` and `lost` (which lost the
+    /// contact), at `1/2, 1/4, ... 1/256` of the way from `top`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] if every one lost the contact (the
+    /// peak force is where the contact comes off).
+    fn kept_between(
+        &mut self,
+        path: &mut Path,
+        top: &Probe<Kept>,
+        lost: &Probe<Kept>,
+    ) -> Result<Probe<Kept>> {
+        let mut fraction = 1.0;
+        for _ in 0..HALVINGS {
+            fraction *= 0.5;
+            let depth = top.depth + (lost.depth - top.depth) * fraction;
+            self.warm = top.kept.0.clone();
+            let solution = self.solve_after(Some(top.depth), Control::Depth(depth))?;
+            path.iterations += solution.iterations;
+            if solution.contact_cells > 0 {
+                return Ok(Probe {
+                    depth,
+                    force: solution.force,
+                    kept: (self.warm.clone(), solution),
+                });
+            }
+        }
+        Err(Error::InvalidParameter {
+            name: "protocol.max_force (N)",
+            value: top.force,
+            expected: "a peak from which the unloading holds the contact: it came off \
+                       within 1/256 of the first unloading step (raise max_force)",
         })
     }
 
