@@ -35,6 +35,15 @@ use super::{Control, Runner};
 /// Trial equilibria of one force step at most.
 const MAX_TRIALS: usize = 100;
 
+/// The fraction of the cohesive law's range below which a bracket of the
+/// depth search that still straddles the force asked is a jump of the force
+/// (a patch of a rough contact snapping in or off), not a slope: its end
+/// nearer in force is taken. Regula falsi closes on a jump by halvings, and
+/// 100 trials left brackets 1e-17 m wide across jumps of 1 to 10 % of a
+/// step's force on the rough film of `examples/scenes/rough_adhesive_film.toml`
+/// (a range of 3.8 um), where the search stopped with `NoConvergence`.
+const SNAP_RANGE_FRACTION: f64 = 1e-9;
+
 /// How close a step's force comes to the prescribed one, relative to the
 /// protocol's largest force (or, at zero force, the pull at first touch),
 /// unless the force lies inside a snap of the path (module docs).
@@ -73,6 +82,10 @@ struct Aim {
     force: f64,
     down: bool,
     tolerance: f64,
+    /// The bracket's width in depth (m) at which the force counts as
+    /// snapping across the one asked ([`SNAP_RANGE_FRACTION`] of the law's
+    /// range).
+    snap: f64,
 }
 
 /// The last two equilibria of the path, and the iterations spent since the
@@ -134,6 +147,7 @@ impl Runner<'_> {
             path.current.force.abs()
         };
         let tolerance = FORCE_TOLERANCE * scale;
+        let snap = SNAP_RANGE_FRACTION * range;
         let loading: Vec<f64> = if cycle {
             (0..=steps).map(|k| k as f64 * increment).collect()
         } else {
@@ -147,6 +161,7 @@ impl Runner<'_> {
                 force,
                 down: false,
                 tolerance,
+                snap,
             };
             let reached = self.seek_kept(&mut path, aim, step, peak)?;
             let Reached::At(at) = reached else {
@@ -174,6 +189,7 @@ impl Runner<'_> {
                 force,
                 down: true,
                 tolerance,
+                snap,
             };
             match self.seek_kept(&mut path, aim, step, false)? {
                 Reached::At(at) => {
@@ -326,6 +342,7 @@ impl Runner<'_> {
             force,
             down,
             tolerance,
+            snap,
         } = aim;
         let sign = if down { -1.0 } else { 1.0 };
         let mut step = step;
@@ -349,9 +366,13 @@ impl Runner<'_> {
                     }
                 }
             };
-            if depth == near.depth || far.as_ref().is_some_and(|f| depth == f.depth) {
-                // The bracket is at the resolution of f64 (the force snaps
-                // across the one asked): its end nearer in force.
+            let jump = far
+                .as_ref()
+                .is_some_and(|f| depth == f.depth || (f.depth - near.depth).abs() <= snap);
+            if depth == near.depth || jump {
+                // The bracket is at the resolution of f64 or a fraction of
+                // the law's range (the force snaps across the one asked):
+                // its end nearer in force.
                 return Ok(Reached::At(nearer(near, far, force)));
             }
             self.warm = near.kept.0.clone();
