@@ -100,6 +100,14 @@ fn rough_film_seeded(cells: usize, seed: u64) -> Scene {
     }
 }
 
+/// The pull-off force (N) of `scene` run as a force cycle to `max_force`
+/// (N) in `steps`.
+fn force_cycle_pull_off(mut scene: Scene, max_force: f64, steps: usize) -> f64 {
+    scene.protocol = Protocol::ForceCycle { max_force, steps };
+    let curve = scene.run(&mut |_| {}).unwrap();
+    curve.pull_off().unwrap().force
+}
+
 #[test]
 fn scenes_report_a_zone_wider_than_the_pull_off_contact() {
     // On 32 cells a side the zone (four cells, 40 um) is wider than every
@@ -129,15 +137,7 @@ fn a_force_cycle_whose_pull_off_dwarfs_its_peak_comes_off() {
     // unloading trial from the peak lost the contact, and the cycle stopped
     // with an internal error. Now the trial is halved towards the peak and
     // the least force searched between.
-    let pull_off = |max_force: f64| {
-        let mut scene = rough_film(16);
-        scene.protocol = Protocol::ForceCycle {
-            max_force,
-            steps: 2,
-        };
-        let curve = scene.run(&mut |_| {}).unwrap();
-        curve.pull_off().unwrap().force
-    };
+    let pull_off = |max_force| force_cycle_pull_off(rough_film(16), max_force, 2);
     let (small, large) = (pull_off(1e-5), pull_off(1e-4));
     // The peaks' contacts differ a little (measured 0.09 % apart; at 1 uN
     // -1.35156 mN against -1.35149 mN at 100 uN).
@@ -154,18 +154,11 @@ fn a_force_step_across_a_jump_of_the_force_takes_the_nearer_side() {
     // closed on the jump to brackets 1e-17 m wide without reaching the
     // resolution of f64 in its 100 trials (`NoConvergence`). Its pull-off
     // now: -2.0636 mN, against -2.0615 mN loaded to 1 mN.
-    let pull_off = |max_force: f64| {
-        let mut scene = rough_film_seeded(16, 4);
-        scene.adhesion = Adhesion::Constant {
-            work_of_adhesion: 0.05,
-        };
-        scene.protocol = Protocol::ForceCycle {
-            max_force,
-            steps: 3,
-        };
-        let curve = scene.run(&mut |_| {}).unwrap();
-        curve.pull_off().unwrap().force
+    let mut scene = rough_film_seeded(16, 4);
+    scene.adhesion = Adhesion::Constant {
+        work_of_adhesion: 0.05,
     };
+    let pull_off = |max_force| force_cycle_pull_off(scene.clone(), max_force, 3);
     let (jumping, reference) = (pull_off(1e-4), pull_off(1e-3));
     assert!(
         (jumping / reference - 1.0).abs() < 0.01,
