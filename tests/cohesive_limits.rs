@@ -165,3 +165,32 @@ fn a_force_step_across_a_jump_of_the_force_takes_the_nearer_side() {
         "{jumping} {reference}"
     );
 }
+
+#[test]
+fn a_shallow_adhesive_cycle_comes_off_far_above_the_surface() {
+    // The rough film of seed 1 on 16 cells a side (work of adhesion 0.05
+    // J/m^2) pressed 1 and 10 nm: the contact jumps in, its force is least
+    // a few nanometres above the surface (-1.64680 and -1.64633 mN
+    // measured), and it holds, its pull falling off, to 0.82 and 1.03 um
+    // above (820 and 103 loading depths); the run stopped with
+    // `NoConvergence` at 20.
+    let pull_off = |max_depth: f64| {
+        let mut scene = rough_film_seeded(16, 1);
+        scene.adhesion = Adhesion::Constant {
+            work_of_adhesion: 0.05,
+        };
+        scene.protocol = Protocol::Cycle {
+            max_depth,
+            steps: 10,
+        };
+        let curve = scene.run(&mut |_| {}).unwrap();
+        assert_eq!(curve.steps.last().unwrap().contact_area, 0.0);
+        // Held far beyond the old bound of 20 loading depths.
+        let held = curve.steps.iter().filter(|s| s.contact_area > 0.0);
+        let highest = held.map(|s| s.depth).fold(0.0, f64::min);
+        assert!(highest < -20.0 * max_depth, "{highest}");
+        curve.pull_off().unwrap().force
+    };
+    let (one, ten) = (pull_off(1e-9), pull_off(1e-8));
+    assert!((one / ten - 1.0).abs() < 5e-3, "{one} {ten}");
+}

@@ -34,7 +34,7 @@
 //!   past the surface (the increment doubles beyond `-max_depth`; with the
 //!   energy balance the run goes on past the exact jump-off, which a
 //!   cycle a few nanometres deep finds thousands of loading depths above
-//!   the surface; with the mesh criterion it stops at `-20 max_depth` with
+//!   the surface; with the cohesive zone and the mesh criterion it stops at `-4096 max_depth` with
 //!   `NoConvergence`), solver iterations,
 //!   the adhesive active-set rounds, the energy balance's family widenings,
 //!   the exact solver's Nystrom order and bracket searches, the FFT-size

@@ -216,8 +216,8 @@ fn cycle(
         what: "the energy-balance unloading",
         detail: format!(
             "still attached at depth {depth:e} m, where the contact must be lost by \
-             {last_depth:e} m (twice the exact jump-off depth, or 20 loading depths above \
-             the surface)"
+             {last_depth:e} m (twice the exact jump-off depth, or {MAX_PULL_DEPTHS} loading \
+             depths above the surface)"
         ),
     })
 }

@@ -315,7 +315,7 @@ impl<'a> Runner<'a> {
     /// is lost are each refined by bisection, so that the pull-off force is
     /// found even when the curve turns within one increment. Beyond
     /// `-max_depth` the increment doubles at each step, so that a contact
-    /// that holds to `-20 max_depth` costs a few dozen solves, not `20 steps`.
+    /// that holds to `-4096 max_depth` costs a few dozen solves, not `4096 steps`.
     fn unload(
         &mut self,
         max_depth: f64,
@@ -428,7 +428,8 @@ fn next_increment(depth: f64, increment: f64, max_depth: f64) -> Option<f64> {
 /// depths.
 fn still_attached(steps: usize, depth: f64) -> Error {
     Error::NoConvergence {
-        method: "unloading to contact loss (still attached 20 loading depths above the surface)",
+        method: "unloading to contact loss (still attached 4096 loading depths above the \
+                 surface)",
         iterations: steps,
         residual: depth,
     }
