@@ -359,7 +359,7 @@ fn a_wave_along_the_diagonal_is_refused_where_the_grid_does_not_resolve_it() {
     // Pull-off contacts 1.2 and 3.5 lines of cells wide: refused, as along
     // the grid (`a_pull_off_contact_the_grid_does_not_resolve_is_refused`).
     // The first came out as a compressive "pull-off" 2.3 times the exact
-    // force from a ripple of the staircase four lines wide, the second -6.5
+    // force from a ripple of the staircase five lines wide, the second -6.5
     // %. At 5.6 lines: measured -0.76 %.
     for alpha in [0.02, 0.1] {
         let result = sinusoid_pull_off(alpha, true, 0.0);

@@ -502,10 +502,10 @@ impl AdhesiveBranches {
     /// # Errors
     /// [`Error::NonFinite`] if the branch holds no finite force there;
     /// [`Error::Unsupported`] if the force is least at the family's smallest
-    /// set, on strips fewer than four lines of cells wide, or where a set
-    /// the grid does not resolve, just below the least of those it does,
-    /// holds a lower force (the pull-off contact is narrower than the grid
-    /// resolves).
+    /// set, on strips fewer than four lines of cells wide, where a set the
+    /// grid does not resolve, just below the least of those it does, holds
+    /// a lower force, or where the least force is compressive (the pull-off
+    /// contact is narrower than the grid resolves).
     pub fn pull_off(&self, history: f64) -> Result<BranchPoint> {
         self.least_below(history, Load::Force(0.0))
     }
