@@ -387,8 +387,8 @@ pub(super) const MAX_PROTOCOL_STEPS: usize = 100_000;
 /// (a contact so sticky that it holds beyond is reported, not followed
 /// forever). The increments double beyond one loading depth, so the bound
 /// costs about a dozen steps; at 20 loading depths, as before, a rough
-/// film pressed 10 nm into contact (a jump-in under adhesion, its pull-off
-/// some 0.5 um above the surface) was refused.
+/// film pressed 1 or 10 nm into contact (a jump-in under adhesion, the
+/// contact held to 0.8 to 1 um above the surface) was refused.
 pub(super) const MAX_PULL_DEPTHS: f64 = 4096.0;
 const MAX_GRID_GROWTH: usize = 4;
 const MIN_CELLS_ACROSS: usize = 8;

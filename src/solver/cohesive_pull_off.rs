@@ -223,9 +223,7 @@ impl ContactSolver {
                     .any(|m| m.is_some_and(|m| !profile[m].is_finite()))
         })
     }
-}
 
-impl ContactSolver {
     /// The widest patch of the cells in contact in `state` (closed gaps),
     /// in cells across ([`CohesivePullOff::cells_across`]).
     pub(crate) fn widest_contact_patch(&self, state: &WarmStart) -> f64 {

@@ -535,18 +535,19 @@ impl AdhesiveBranches {
         let key = |a: f64| self.balance(a, Edge::Receding, load);
         let top = history.clamp(nodes[0].area, self.max_contact_area());
         // The sets below `top` (and `top`), each with whether it has as
-        // many cells as `evolve` lets a receding contact snap onto.
-        let mut areas: Vec<f64> = nodes.iter().map(|n| n.area).filter(|&a| a < top).collect();
-        let mut resolved: Vec<bool> = nodes
+        // many cells as `evolve` lets a receding contact snap onto, and the
+        // balance on each.
+        let (mut areas, mut resolved): (Vec<f64>, Vec<bool>) = nodes
             .iter()
             .filter(|n| n.area < top)
-            .map(|n| n.cells >= RESOLVED_CELLS)
-            .collect();
+            .map(|n| (n.area, n.cells >= RESOLVED_CELLS))
+            .unzip();
         areas.push(top);
         resolved.push(true);
+        let values: Vec<f64> = areas.iter().map(|&a| key(a)).collect();
         // The first minimum walking down.
         let mut i = areas.len() - 1;
-        while i > 0 && key(areas[i - 1]) <= key(areas[i]) {
+        while i > 0 && values[i - 1] <= values[i] {
             i -= 1;
         }
         // Past it the edge snaps to the branch below, where the balance
@@ -560,7 +561,7 @@ impl AdhesiveBranches {
         // times the exact force; the least is on the narrowest strip, and
         // refused below.
         for j in (0..i).rev() {
-            if resolved[j] && key(areas[j]) < key(areas[i]) {
+            if resolved[j] && values[j] < values[i] {
                 i = j;
             }
         }
@@ -568,12 +569,12 @@ impl AdhesiveBranches {
         // to snap onto: the minimum may lie among the sets the grid does
         // not resolve.
         let unresolved_below = i == 0 || !resolved[i - 1];
-        if unresolved_below && (0..i).any(|j| key(areas[j]) < key(areas[i])) {
+        if unresolved_below && values[..i].iter().any(|&v| v < values[i]) {
             return Err(unresolved_minimum());
         }
         // An adhesive contact comes off under tension: a least force above
         // zero is a staircase's (the unloaded, vanishing contact lies below).
-        if matches!(load, Load::Force(_)) && key(areas[i]) > 0.0 {
+        if matches!(load, Load::Force(_)) && values[i] > 0.0 {
             return Err(unresolved_minimum());
         }
         let (mut lo, mut hi) = (
