@@ -120,18 +120,34 @@ fn punch_references_are_closed_forms_and_bound_the_bem() {
     assert!(tilted.reference().unwrap().is_empty());
 }
 
-/// No reference where there is no exact solution: a cone, a tilt, a
-/// periodic grid.
+/// No reference where there is no exact solution: a tilt, a periodic
+/// grid. A cone has one (the exact axisymmetric cone; on a half-space
+/// Sneddon's force `2 E* d^2 tan(theta) / pi`, to the Nystrom solution's
+/// `1e-12`), but not once its contact would pass its base.
 #[test]
 fn no_reference_without_an_exact_solution() {
     let cone = Scene {
+        substrate: SubstrateSpec::HalfSpace {
+            youngs_modulus: 1e6,
+            poisson_ratio: 0.5,
+        },
         indenter: IndenterSpec::Cone {
             half_angle: 1.2,
             base_radius: 1e-3,
         },
+        protocol: Protocol::Depth { depth: 1e-5 },
         ..Scene::default()
     };
-    assert!(cone.reference().unwrap().is_empty());
+    let peak = cone.reference().unwrap()[0];
+    assert_eq!(peak.quantity, Quantity::PeakForce);
+    let sneddon = 2.0 * (1e6 / 0.75) * 1e-10 * 1.2f64.tan() / PI;
+    assert!((peak.value / sneddon - 1.0).abs() < 1e-12, "{}", peak.value);
+    // Pressed 1 mm in, its contact (2.6 mm) would pass its 1 mm base.
+    let past_base = Scene {
+        protocol: Protocol::Depth { depth: 1e-3 },
+        ..cone.clone()
+    };
+    assert!(past_base.reference().unwrap().is_empty());
     let periodic = Scene {
         boundary: layered_contact::Boundary::Periodic,
         ..Scene::default()

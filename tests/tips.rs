@@ -346,3 +346,57 @@ fn tips_at_a_depth_on_coated_bodies_invert_their_contact_radius() {
         }
     }
 }
+
+/// The closed-form JKR cone (`analytic::JkrCone`, Maugis & Barquins 1981)
+/// against the exact cone on a half-space, whose pull-offs come from a
+/// numerical minimisation of the Fredholm solution's force and depth (an
+/// independent path: no closed form of the pull-off is used there). The
+/// minimisation locates the least force to about `1e-8` of the radius
+/// (its force to the square of that), so radii are compared to `1e-6` and
+/// forces and depths to `1e-10`; the inversions by force and depth are
+/// bisections to full precision (`1e-12`).
+#[test]
+fn jkr_cone_closed_form_matches_the_exact_cone() {
+    use layered_contact::analytic::JkrCone;
+    let half = Axisymmetric::new(&Substrate::half_space(rubber()), 1.0).unwrap();
+    for (theta, w) in [(1.2f64, 0.02), (1.3, 0.05), (0.6, 0.1)] {
+        let closed = JkrCone::new(&rubber(), theta, w).unwrap();
+        let exact = half.tip(Tip::Cone { half_angle: theta }, w).unwrap();
+        let pull = exact.pull_off().unwrap();
+        let load = pull.load_control;
+        assert!((load.force / closed.pull_off_force() - 1.0).abs() < 1e-10);
+        assert!((load.contact_radius / closed.pull_off_contact_radius() - 1.0).abs() < 1e-6);
+        let fixed = pull.displacement_control;
+        assert!((fixed.depth / closed.critical_depth() - 1.0).abs() < 1e-10);
+        assert!((fixed.contact_radius / closed.critical_contact_radius() - 1.0).abs() < 1e-6);
+        // The stable branches, by force and by depth, against the exact
+        // solution's own searches.
+        for scale in [0.5, 1.0, 10.0] {
+            let force = scale * closed.pull_off_force().abs();
+            let a = closed.contact_radius_at_force(force).unwrap();
+            let at = exact.at_force(force).unwrap().unwrap();
+            assert!(
+                (a / at.contact_radius - 1.0).abs() < 1e-12,
+                "{theta} {scale}"
+            );
+            let depth = closed.depth(a);
+            let b = closed.contact_radius_at_depth(depth).unwrap();
+            assert!((b / a - 1.0).abs() < 1e-12, "{theta} {scale}");
+        }
+        // No adhesive equilibrium below the pull-offs; none for NaN.
+        assert!(closed
+            .contact_radius_at_force(1.001 * closed.pull_off_force())
+            .is_none());
+        assert!(closed
+            .contact_radius_at_depth(1.001 * closed.critical_depth())
+            .is_none());
+        assert!(closed.contact_radius_at_force(f64::NAN).is_none());
+    }
+    // Without adhesion, Sneddon's cone.
+    let dry = JkrCone::new(&rubber(), 1.2, 0.0).unwrap();
+    let sneddon = SneddonCone::new(&rubber(), 1.2).unwrap();
+    let a = dry.contact_radius_at_depth(1e-6).unwrap();
+    assert!((a / sneddon.contact_radius(1e-6) - 1.0).abs() < 1e-13);
+    assert!(JkrCone::new(&rubber(), 1.6, 0.05).is_err());
+    assert!(JkrCone::new(&rubber(), 1.2, -0.05).is_err());
+}

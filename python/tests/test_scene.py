@@ -1,5 +1,7 @@
 """Scenes from dicts and files, progress callbacks, references, errors."""
 
+import math
+
 import pytest
 
 import layered_contact as lc
@@ -28,6 +30,25 @@ def test_punch_cycle_against_the_exact_stiffness():
     rows, columns, _ = curve.grid
     assert curve.peak.pressure.shape == (rows, columns)
 
+
+
+def test_adhesive_cone_against_the_jkr_cone():
+    # The JKR cone on a half-space (Maugis & Barquins 1981): pull-off
+    # -54 dgamma^2 tan^3(theta) / (pi E*); the reference is the exact
+    # axisymmetric cone's, found by minimisation to 1e-10.
+    cone = {
+        "substrate": {"kind": "half_space", "youngs_modulus": 1e6, "poisson_ratio": 0.48},
+        "indenter": {"kind": "cone", "half_angle": 1.3, "base_radius": 1e-3},
+        "adhesion": {"kind": "constant", "work_of_adhesion": 0.05},
+        "protocol": {"kind": "force_cycle", "max_force": 1e-7, "steps": 3},
+        "resolution": {"cells_across": 16},
+    }
+    modulus = 1e6 / (1 - 0.48**2)
+    jkr = -54 * 0.05**2 * math.tan(1.3) ** 3 / (math.pi * modulus)
+    exact = lc.scene_reference(cone)["pull_off_force"]
+    assert exact == pytest.approx(jkr, rel=1e-9)
+    # At 16 cells across the pull-off contact: -0.12 % (measured).
+    assert lc.run_scene(cone).pull_off["force"] == pytest.approx(exact, rel=1e-2)
 
 def test_scene_file_and_check(tmp_path):
     path = tmp_path / "punch.toml"

@@ -9,6 +9,7 @@
 //! | [`Hertz`] | sphere (paraboloid) on a half-space | Hertz (1882); Johnson (1985) |
 //! | [`JkrSphere`] | adhesive sphere on a half-space | Johnson, Kendall & Roberts (1971) |
 //! | [`SneddonCone`] | conical punch on a half-space | Sneddon (1965) |
+//! | [`JkrCone`] | adhesive cone on a half-space | Maugis & Barquins (1981) |
 //! | [`JkrSinusoid`] | adhesive wavy surface on a half-space, plane strain | Westergaard (1939); Johnson (1995) |
 //! | [`Axisymmetric`] | exact flat punch, paraboloid, sphere, cone and rounded cone ([`Tip`]), with JKR adhesion, on a coated half-space, by contact radius, depth or force | Fredholm equation, [`doc::axisymmetric`](crate::doc::axisymmetric) |
 //! | [`LayeredJkrCycle`] | exact loading and unloading of a paraboloid with adhesion hysteresis | Johnson, Kendall & Roberts (1971); Maugis (2000) |
@@ -41,7 +42,7 @@ pub use axisymmetric::{
     before_jump_off, Axisymmetric, ContactState, ForceCurve, LayeredFlatPunch, LayeredParaboloid,
     LayeredTip, ModulusFamily, PullOff, Tip, MODULUS_NODES,
 };
-pub use cone::SneddonCone;
+pub use cone::{JkrCone, SneddonCone};
 pub use hertz::Hertz;
 pub use jkr::JkrSphere;
 pub use lambda::{a_m, a_m_of, lambda, lambda_g};

@@ -101,7 +101,7 @@
 //!   time-bounded. 96 cases in `cargo test`; the same
 //!   `LAYERED_CONTACT_FUZZ_CASES` sets a large run.
 //! * `tests/reference_sweep.rs`: random axisymmetric scenes (an untilted
-//!   punch, paraboloid or sphere, with or without adhesion, on every kind
+//!   punch, paraboloid, sphere or cone, with or without adhesion, on every kind
 //!   of body, moduli and thicknesses over decades, Poisson's ratios up to
 //!   0.5) driven through a depth cycle at 16 cells across and compared with
 //!   their exact values ([`Scene::reference`](crate::scene::Scene::reference)):

@@ -132,8 +132,8 @@ pub struct Resolution {
     /// Cells across the smallest contact diameter the protocol must
     /// resolve, 8 to 8192: the punch's diameter; for curved indenters the
     /// largest contact the protocol reaches (Hertz or exact layered
-    /// estimate) or, in an adhesive scene with a sphere or paraboloid, the
-    /// pull-off contact (exact layered JKR) if that is smaller.
+    /// estimate) or, in an adhesive scene with a sphere, paraboloid or
+    /// cone, the pull-off contact (exact layered JKR) if that is smaller.
     pub cells_across: usize,
     /// Extra width around the largest contact, as a fraction of its
     /// diameter on each side, at most 10: for curved indenters (the grid

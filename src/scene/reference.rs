@@ -1,8 +1,8 @@
 //! The exact values a scene can be checked against, where they exist: the
 //! axisymmetric solutions of [`analytic::Axisymmetric`](crate::analytic::Axisymmetric) for an untilted flat
-//! punch, paraboloid or sphere on an isolated half-space or coated body.
+//! punch, paraboloid, sphere or cone on an isolated half-space or coated body.
 
-use crate::analytic::{Axisymmetric, ContactState, JkrFlatPunch, JkrSphere, Tip};
+use crate::analytic::{Axisymmetric, ContactState, JkrCone, JkrFlatPunch, JkrSphere, Tip};
 use crate::error::{Error, Result};
 use crate::grid::Boundary;
 use crate::material::Material;
@@ -36,9 +36,10 @@ const MAX_WIDENINGS: usize = 8;
 
 impl Scene {
     /// The exact values this scene's curve can be compared with: for an
-    /// untilted flat punch, paraboloid or sphere on an isolated grid, from
-    /// the exact axisymmetric solution on the scene's substrate (the
-    /// sphere's own, not its paraboloid's: [`Tip::Sphere`]).
+    /// untilted flat punch, paraboloid, sphere or cone on an isolated grid,
+    /// from the exact axisymmetric solution on the scene's substrate (the
+    /// sphere's own, not its paraboloid's: [`Tip::Sphere`]; the cone's,
+    /// [`Tip::Cone`], JKR's cone of Maugis & Barquins 1981 on a half-space).
     ///
     /// * Flat punch: the stiffness; the force at the deepest step of a
     ///   depth-driven protocol; with adhesion the pull-off force at the
@@ -46,7 +47,7 @@ impl Scene {
     ///   adhesion none where the bonded solution pulls somewhere on the
     ///   face ([`LayeredFlatPunch::holds_without_adhesion`]): the face then
     ///   lifts off there and the contact is not the face.
-    /// * Paraboloid and sphere: the force and contact radius at the deepest
+    /// * Paraboloid, sphere and cone: the force and contact radius at the deepest
     ///   step of a depth-driven protocol, or the contact radius at the peak
     ///   force of a force-driven one (at the advancing work of adhesion);
     ///   with adhesion the load-controlled pull-off force at the receding work
@@ -126,26 +127,28 @@ impl Scene {
                     });
                 }
             }
-            (_, Some((tip, radius))) => {
-                let source = if matches!(tip, Tip::Sphere { .. }) {
-                    "exact axisymmetric sphere"
-                } else {
-                    "exact axisymmetric paraboloid"
+            (_, Some(curved)) => {
+                let tip = curved.tip;
+                let source = match tip {
+                    Tip::Sphere { .. } => "exact axisymmetric sphere",
+                    Tip::Cone { .. } => "exact axisymmetric cone",
+                    _ => "exact axisymmetric paraboloid",
                 };
-                // The widest contact wanted: twice the Hertz radius at the
-                // peak (a force-driven peak by the surface material's
-                // modulus), or a few JKR radii at pull-off.
-                let modulus = substrate.surface_material().contact_modulus();
-                let hertz = match self.protocol.peak() {
-                    Reach::Depth(depth) => (radius * depth.max(0.0)).sqrt(),
-                    Reach::Force(force) => (0.75 * force * radius / modulus).cbrt(),
-                };
-                let jkr = JkrSphere::new(substrate.surface_material(), radius, receding)?
+                // The widest contact wanted: twice the non-adhesive radius
+                // at the peak (a force-driven peak by the surface
+                // material's modulus), or a few JKR radii at pull-off.
+                let surface = substrate.surface_material();
+                let dry = curved
+                    .on_half_space(surface, 0.0)?
+                    .contact_radius_at(self.protocol.peak())
+                    .unwrap_or(0.0);
+                let jkr = curved
+                    .on_half_space(surface, receding)?
                     .pull_off_contact_radius();
-                let widest = (2.0 * hertz).max(3.0 * jkr);
+                let widest = (2.0 * dry).max(3.0 * jkr);
                 let Some((exact, peak)) = tip_peak(
                     &substrate,
-                    (tip, advancing),
+                    (curved, advancing),
                     self.protocol,
                     widest,
                     REFERENCE_MAX_EPS,
@@ -169,20 +172,35 @@ impl Scene {
                 }
                 if adhesive && receding > 0.0 {
                     let unloading = exact.tip(tip, receding)?;
-                    let pull_off = unloading.load_controlled_pull_off()?;
-                    // A contact pinned at a peak narrower than the receding
+                    // The least force of the unloading from the peak: a
+                    // contact pinned at a peak narrower than the free
                     // pull-off's (a receding work well above the advancing
                     // one) comes off as its edge lets go, at the receding
                     // state of the peak's radius (`LayeredJkrCycle::
-                    // unloading_pull_off`): a sphere with works 0.0088 and
+                    // unloading_pull_off`: a sphere with works 0.0088 and
                     // 0.074 J/m^2 let go at a force 17 % under the free
-                    // pull-off's.
-                    let force = match peak.filter(|s| s.contact_radius > 0.0) {
-                        Some(p) if p.contact_radius < pull_off.contact_radius => {
-                            unloading.at_contact_radius(p.contact_radius)?.force
-                        }
-                        _ => pull_off.force,
+                    // pull-off's); a film on a far softer base has a
+                    // second, deeper least force far beyond the peak,
+                    // which the unloading never reaches (a cone on a film
+                    // over a base 300 times softer came off at -1.5 mN,
+                    // its reference the peak's +2.5 mN before).
+                    let least = match peak.filter(|s| s.contact_radius > 0.0) {
+                        Some(p) => unloading.least_below(p.contact_radius, false),
+                        None => unloading.load_controlled_pull_off(),
                     };
+                    // Beyond the table: no pull-off reference.
+                    let pull_off = match least {
+                        Err(Error::InvalidParameter {
+                            name: "contact_radius",
+                            ..
+                        }) => return Ok(out),
+                        other => other?,
+                    };
+                    // A cone pulled off beyond its base: not a cone's.
+                    if pull_off.contact_radius > curved.cap {
+                        return Ok(out);
+                    }
+                    let force = pull_off.force;
                     out.push(Reference {
                         quantity: Quantity::PullOffForce,
                         value: force,
@@ -257,38 +275,113 @@ impl Scene {
     }
 }
 
-/// The exact solution's tip for a sphere or paraboloid indenter, and its
-/// radius (m); `None` for other indenters.
-pub(super) fn curved_tip(indenter: &IndenterSpec) -> Option<(Tip, f64)> {
-    match *indenter {
-        IndenterSpec::Sphere { radius } => Some((Tip::Sphere { radius }, radius)),
-        IndenterSpec::Paraboloid { radius } => Some((Tip::Paraboloid { radius }, radius)),
-        _ => None,
+/// A curved indenter of the exact solution: its [`Tip`] and the widest
+/// contact radius (m) it has (a sphere's 0.95 of its radius, where its
+/// exact solution ends; a cone's base radius, beyond which it cannot
+/// touch; unbounded for a paraboloid).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct CurvedTip {
+    pub(super) tip: Tip,
+    pub(super) cap: f64,
+}
+
+/// The exact solution's tip for a sphere, paraboloid or cone indenter;
+/// `None` for other indenters.
+pub(super) fn curved_tip(indenter: &IndenterSpec) -> Option<CurvedTip> {
+    let (tip, cap) = match *indenter {
+        IndenterSpec::Sphere { radius } => (Tip::Sphere { radius }, 0.95 * radius),
+        IndenterSpec::Paraboloid { radius } => (Tip::Paraboloid { radius }, f64::INFINITY),
+        IndenterSpec::Cone {
+            half_angle,
+            base_radius,
+        } => (Tip::Cone { half_angle }, base_radius),
+        _ => return None,
+    };
+    Some(CurvedTip { tip, cap })
+}
+
+/// A curved tip's JKR contact on a half-space, in closed form: the sphere's
+/// paraboloid (Johnson, Kendall & Roberts 1971) or the cone (Maugis &
+/// Barquins 1981). Sizes grids and tables; never a reference itself.
+pub(super) enum HalfSpaceJkr {
+    Paraboloid(JkrSphere),
+    Cone(JkrCone),
+}
+
+impl CurvedTip {
+    /// The tip's JKR contact on a half-space of `material` with `work`
+    /// (J/m^2; 0 for the non-adhesive contact).
+    pub(super) fn on_half_space(&self, material: &Material, work: f64) -> Result<HalfSpaceJkr> {
+        Ok(match self.tip {
+            Tip::Cone { half_angle } => {
+                HalfSpaceJkr::Cone(JkrCone::new(material, half_angle, work)?)
+            }
+            Tip::Sphere { radius } | Tip::Paraboloid { radius } => {
+                HalfSpaceJkr::Paraboloid(JkrSphere::new(material, radius, work)?)
+            }
+            _ => {
+                return Err(Error::Internal {
+                    what: "curved tip",
+                    detail: "a scene's curved tip is a sphere, paraboloid or cone".into(),
+                })
+            }
+        })
+    }
+}
+
+impl HalfSpaceJkr {
+    /// The contact radius at load-controlled pull-off, m.
+    pub(super) fn pull_off_contact_radius(&self) -> f64 {
+        match self {
+            HalfSpaceJkr::Paraboloid(jkr) => jkr.pull_off_contact_radius(),
+            HalfSpaceJkr::Cone(jkr) => jkr.pull_off_contact_radius(),
+        }
+    }
+
+    /// The contact radius at which a displacement-controlled unloading
+    /// jumps off, m.
+    pub(super) fn jump_off_contact_radius(&self) -> f64 {
+        match self {
+            HalfSpaceJkr::Paraboloid(jkr) => jkr.critical_contact_radius(),
+            HalfSpaceJkr::Cone(jkr) => jkr.critical_contact_radius(),
+        }
+    }
+
+    /// The contact radius (m) at a protocol's peak, `None` where the
+    /// contact has come off (or none is made).
+    pub(super) fn contact_radius_at(&self, peak: Reach) -> Option<f64> {
+        match (self, peak) {
+            (HalfSpaceJkr::Paraboloid(jkr), Reach::Depth(depth)) => {
+                jkr.contact_radius_at_depth(depth)
+            }
+            (HalfSpaceJkr::Paraboloid(jkr), Reach::Force(force)) => {
+                jkr.contact_radius_at_force(force)
+            }
+            (HalfSpaceJkr::Cone(jkr), Reach::Depth(depth)) => jkr.contact_radius_at_depth(depth),
+            (HalfSpaceJkr::Cone(jkr), Reach::Force(force)) => jkr.contact_radius_at_force(force),
+        }
     }
 }
 
 /// The exact solutions on `substrate` tabulated from contact radius
 /// `reach` (m) on, and the peak of `protocol` for `(tip, work)` (a
-/// paraboloid or sphere, the work of adhesion J/m^2): where the peak lies
-/// beyond the table (a stiff layer on a far softer base, or adhesion,
+/// paraboloid, sphere or cone, the work of adhesion J/m^2): where the peak
+/// lies beyond the table (a stiff layer on a far softer base, or adhesion,
 /// spreads the contact beyond twice Hertz's radius) the table widens
 /// fourfold, at most [`MAX_WIDENINGS`] times. `None` where it would reach
-/// past `max_eps` layer thicknesses, or past 0.95 of a sphere's radius
-/// (where its exact solution ends).
+/// past `max_eps` layer thicknesses, or past the tip's cap (0.95 of a
+/// sphere's radius, where its exact solution ends; a cone's base).
 ///
 /// # Errors
 /// Failures of the exact solution other than a peak beyond the table.
 pub(super) fn tip_peak(
     substrate: &Substrate,
-    (tip, work): (Tip, f64),
+    (curved, work): (CurvedTip, f64),
     protocol: Protocol,
     reach: f64,
     max_eps: f64,
 ) -> Result<Option<(Axisymmetric, Option<ContactState>)>> {
-    let cap = match tip {
-        Tip::Sphere { radius } => 0.95 * radius,
-        _ => f64::INFINITY,
-    };
+    let CurvedTip { tip, cap } = curved;
     let mut reach = reach;
     for widening in 0..=MAX_WIDENINGS {
         let Some(exact) = exact_to(substrate, reach, max_eps)? else {
@@ -309,6 +402,8 @@ pub(super) fn tip_peak(
                 name: "depth" | "force",
                 ..
             }) if widening < MAX_WIDENINGS => reach *= 4.0,
+            // A cone's contact beyond its base is not a cone's.
+            Ok(Some(state)) if state.contact_radius > cap => return Ok(None),
             other => return Ok(Some((exact, other?))),
         }
     }

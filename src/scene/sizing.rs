@@ -17,6 +17,15 @@ use super::{Adhesion, AdhesionMethod, IndenterSpec, Protocol, Scene};
 /// that scene.
 const SIZING_MAX_EPS: f64 = 50.0;
 
+/// The least share of `cells_across` a displacement-controlled cycle's
+/// jump-off contact is given: 0.45 of 16 cells is 7.2 cells across, a disc
+/// of 41 cells, above the 36 the energy balance needs to place a least
+/// force or depth there (`RESOLVED_CELLS`). A paraboloid's jump-off contact
+/// on a half-space is 0.48 of its pull-off's (JKR 1971), so its grid is
+/// sized by the pull-off as before; a cone's is a ninth (Maugis & Barquins
+/// 1981), which 16 cells across the pull-off left at 1.8 cells, refused.
+const JUMP_OFF_SHARE: f64 = 0.45;
+
 /// The widest grid a scene builds, in cells.
 const MAX_GRID_CELLS: usize = 8192;
 
@@ -79,21 +88,24 @@ impl Scene {
         })
     }
 
-    /// For an adhesive scene with a paraboloid or sphere: the radii (m) of the
-    /// loading peak's contact and of the pull-off contact, from the exact
-    /// (layered) JKR solution, given the non-adhesive `estimate` of the
-    /// peak's. `None` where there is none, or it fails.
+    /// For an adhesive scene with a paraboloid, sphere or cone: the radii
+    /// (m) of the loading peak's contact and of the smallest contact to
+    /// resolve, the pull-off contact (and where [`Scene::resolves_jump_off`]
+    /// the jump-off contact over [`JUMP_OFF_SHARE`]), from the exact (layered)
+    /// JKR solution, given the non-adhesive `estimate` of the peak's. `None` where there is none, or it fails. (A tilted
+    /// tip is sized as its untilted one: the tilts are small.)
     fn adhesive_radii(&self, estimate: f64) -> Option<(f64, f64)> {
         let (advancing, receding) = self.adhesion.works()?;
         // A sphere by its own solution: its paraboloid's contact is wider
         // (at 0.8 of the radius the paraboloid's pull-off contact came to
         // 1.6 radii, and the grid resolved half the cells asked for).
-        let (tip, radius) = super::reference::curved_tip(&self.indenter)?;
+        let curved = super::reference::curved_tip(&self.indenter)?;
         if receding == 0.0 {
             return None;
         }
         let substrate = self.substrate.build().ok()?;
-        let scale = crate::analytic::JkrSphere::new(substrate.surface_material(), radius, receding)
+        let scale = curved
+            .on_half_space(substrate.surface_material(), receding)
             .ok()?
             .pull_off_contact_radius();
         // The exact solution is tabulated over the contact radii it may need:
@@ -107,49 +119,78 @@ impl Scene {
         // softer), past what growing the grid reaches.
         let Some((exact, peak)) = super::reference::tip_peak(
             &substrate,
-            (tip, advancing),
+            (curved, advancing),
             self.protocol,
             reach,
             SIZING_MAX_EPS,
         )
         .ok()?
         else {
-            return self.base_jkr_radii(&substrate, radius, estimate);
+            return self.base_jkr_radii(&substrate, curved, estimate);
         };
         let peak = peak?;
-        let pull_off = exact
-            .tip(tip, receding)
-            .ok()?
-            .load_controlled_pull_off()
-            .ok()?;
-        Some((peak.contact_radius, pull_off.contact_radius))
+        // The least force (and depth) of the unloading from the peak, not
+        // a deeper one beyond it (a film on a much softer base).
+        let unloading = exact.tip(curved.tip, receding).ok()?;
+        let least = |depth| {
+            let state = if peak.contact_radius > 0.0 {
+                unloading.least_below(peak.contact_radius, depth)
+            } else if depth {
+                unloading.pull_off().map(|p| p.displacement_control)
+            } else {
+                unloading.load_controlled_pull_off()
+            };
+            state.ok().map(|s| s.contact_radius)
+        };
+        let mut smallest = least(false)?;
+        if self.resolves_jump_off() {
+            smallest = smallest.min(least(true)? / JUMP_OFF_SHARE);
+        }
+        Some((peak.contact_radius, smallest))
+    }
+
+    /// Whether the grid must resolve the jump-off contact of a
+    /// displacement-controlled unloading as well as the pull-off's: a
+    /// depth cycle through the energy balance, which places its jump-off
+    /// only on contact sets it resolves (the cohesive zone follows the
+    /// contact down to whatever it covers, and says where its zone spans
+    /// it).
+    fn resolves_jump_off(&self) -> bool {
+        matches!(self.protocol, Protocol::Cycle { .. })
+            && self.resolved_adhesion_method() == AdhesionMethod::EnergyBalance
     }
 
     /// Where the exact table stops short of the contact (beyond
     /// [`SIZING_MAX_EPS`] layer thicknesses: layers on an elastic base
     /// thousands of times softer, whose contact is so wide that the base
-    /// sets it): JKR on a half-space of the base (the long-wave limit of the
-    /// body; the layers only stiffen it), or the non-adhesive `estimate`
-    /// where that is wider. `None` on a rigid base. Three random scenes of
-    /// this kind, whose grids the non-adhesive estimate had made 10 to 30
-    /// times too narrow, now run (`tests/scene_reference.rs`).
+    /// sets it; or a cone's contact beyond its base): JKR on a half-space
+    /// of the base (the long-wave limit of the body; the layers only
+    /// stiffen it), or the non-adhesive `estimate` where that is wider.
+    /// `None` on a rigid base. Three random scenes of this kind, whose
+    /// grids the non-adhesive estimate had made 10 to 30 times too narrow,
+    /// now run (`tests/scene_reference.rs`).
     fn base_jkr_radii(
         &self,
         substrate: &crate::substrate::Substrate,
-        radius: f64,
+        curved: super::reference::CurvedTip,
         estimate: f64,
     ) -> Option<(f64, f64)> {
         let (advancing, receding) = self.adhesion.works()?;
         let base = crate::material::Material::new(substrate.deep_contact_modulus(), 0.0).ok()?;
-        let loading = crate::analytic::JkrSphere::new(&base, radius, advancing).ok()?;
-        let peak = match self.protocol.peak() {
-            crate::solver::Reach::Depth(depth) => loading.contact_radius_at_depth(depth),
-            crate::solver::Reach::Force(force) => loading.contact_radius_at_force(force),
-        }?;
-        let pull_off = crate::analytic::JkrSphere::new(&base, radius, receding)
+        let peak = curved
+            .on_half_space(&base, advancing)
             .ok()?
-            .pull_off_contact_radius();
-        let peak = peak.max(estimate);
+            .contact_radius_at(self.protocol.peak())?;
+        let unloading = curved.on_half_space(&base, receding).ok()?;
+        let pull_off = if self.resolves_jump_off() {
+            unloading
+                .pull_off_contact_radius()
+                .min(unloading.jump_off_contact_radius() / JUMP_OFF_SHARE)
+        } else {
+            unloading.pull_off_contact_radius()
+        };
+        let peak = peak.max(estimate).min(curved.cap);
+        let pull_off = pull_off.min(curved.cap);
         (peak.is_normal() && pull_off.is_normal()).then_some((peak, pull_off))
     }
 
@@ -205,8 +246,8 @@ impl Scene {
     ///
     /// `cells_across` spans the diameter of the smallest contact the
     /// protocol must resolve: the punch, or for curved indenters the peak
-    /// contact and, in an adhesive scene with a sphere or paraboloid, the
-    /// pull-off contact (from the exact layered JKR solution) if that is
+    /// contact and, in an adhesive scene with a sphere, paraboloid or cone,
+    /// the pull-off contact (from the exact layered JKR solution) if that is
     /// smaller. The grid holds the peak contact with `margin` on each side.
     /// Grid sizes are rounded up to products of 2, 3, 5 and 7 (fast FFTs).
     /// A [custom](IndenterSpec::Custom) indenter is treated like a curved

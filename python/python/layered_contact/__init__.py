@@ -186,7 +186,7 @@ def check_scene(scene: SceneLike) -> dict:
 
 def scene_reference(scene: SceneLike) -> dict:
     """The exact values of the scene's results where they exist (untilted
-    flat punch, paraboloid or sphere on an isolated grid): a dict from
+    flat punch, paraboloid, sphere or cone on an isolated grid): a dict from
     ``stiffness``, ``peak_force``, ``peak_contact_radius``,
     ``pull_off_force`` to values."""
     return _scene_reference(_scene(scene))

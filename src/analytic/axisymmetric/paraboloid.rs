@@ -174,6 +174,15 @@ impl LayeredParaboloid {
 
 /// The state of least `key` over contact radii in `[lo, hi]` (m): a
 /// logarithmic scan of 48 radii refined by golden-section search.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] naming `contact_radius` where the scan's
+/// least value is at `hi`: the force or depth still falls there, and the
+/// minimum lies beyond the radii searched (the table's largest contact, or
+/// a layered body whose softer base spreads the pull-off far beyond the
+/// surface modulus's scale: a cone on a film over a base 300 times softer
+/// returned the table's edge, a "pull-off" at the peak's own force). The
+/// failures of `state`.
 pub(super) fn minimise(
     lo: f64,
     hi: f64,
@@ -188,6 +197,15 @@ pub(super) fn minimise(
     let best = (0..SCAN)
         .min_by(|&i, &j| key(&states[i]).total_cmp(&key(&states[j])))
         .unwrap_or(0);
+    if best == SCAN - 1 {
+        return Err(Error::InvalidParameter {
+            name: "contact_radius",
+            value: hi,
+            expected: "a least force or depth within the contact radii searched (it still \
+                       falls at this, the largest; build the solution up to a wider \
+                       contact: Axisymmetric::up_to_contact_radius)",
+        });
+    }
     let (mut a, mut b) = (
         states[best.saturating_sub(1)].contact_radius,
         states[(best + 1).min(SCAN - 1)].contact_radius,
