@@ -226,3 +226,60 @@ fn a_cone_on_a_film_over_a_far_softer_base_comes_off_below_its_peak() {
         })
     ));
 }
+
+/// A force cycle whose step is far below the cone's pull-off is refused
+/// before any solve, as a paraboloid's is: cycled to 1 pN in 3 steps, the
+/// cone's unloading would need 4.6 million steps to come off (the
+/// protocol's bound is 100000). Before, untilted it ended in a
+/// `NoConvergence` after 100000 energy-balance steps, and tilted (the
+/// cohesive zone) it ran 6322 steps in two minutes, bound for half an hour
+/// before the same error. On a film the bound is the exact layered cone's
+/// pull-off (no closed form bounds a cone's there).
+#[test]
+fn a_cone_cycled_far_below_its_pull_off_is_refused_at_once() {
+    let tiny = Protocol::ForceCycle {
+        max_force: 1e-12,
+        steps: 3,
+    };
+    let tilt = Tilt {
+        angle_y: 1e-3,
+        angle_x: 5e-4,
+    };
+    let film = SubstrateSpec::LayerOnRigidBase {
+        youngs_modulus: E,
+        poisson_ratio: NU,
+        thickness: 4e-6,
+    };
+    for scene in [
+        Scene {
+            protocol: tiny,
+            ..cone_scene(None)
+        },
+        Scene {
+            protocol: tiny,
+            ..cone_scene(Some(tilt))
+        },
+        Scene {
+            protocol: tiny,
+            substrate: film,
+            ..cone_scene(None)
+        },
+    ] {
+        assert!(matches!(
+            scene.validate(),
+            Err(layered_contact::Error::InvalidParameter {
+                name: "protocol.max_force / steps (N)",
+                ..
+            })
+        ));
+    }
+    // A step that reaches a tenth of the pull-off within the bound runs.
+    let enough = Scene {
+        protocol: Protocol::ForceCycle {
+            max_force: 1e-10,
+            steps: 3,
+        },
+        ..cone_scene(None)
+    };
+    assert!(enough.validate().is_ok());
+}

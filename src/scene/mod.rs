@@ -111,8 +111,8 @@ pub enum Protocol {
     /// without contact. A cycle whose unloading would need more than 100000
     /// steps to reach a tenth of the closed form's pull-off (JKR's for a
     /// paraboloid, Kendall's for an untilted flat punch, the smaller of the
-    /// two for a sphere; isolated grids) is refused by `Scene::validate`
-    /// before any solve.
+    /// two for a sphere, the exact solution's for a cone; isolated grids)
+    /// is refused by `Scene::validate` before any solve.
     ForceCycle {
         /// Maximum force, N.
         max_force: f64,
@@ -446,9 +446,9 @@ impl Scene {
                             name: "protocol.max_force / steps (N)",
                             value: increment,
                             expected: "a force step that reaches the pull-off within 100000 \
-                                       unloading steps (a tenth of the closed form's pull-off \
-                                       already lies beyond them: raise max_force or lower \
-                                       steps)",
+                                       unloading steps (a tenth of the pull-off of the closed \
+                                       form or exact solution already lies beyond them: raise \
+                                       max_force or lower steps)",
                         });
                     }
                 }

@@ -228,10 +228,10 @@ const PULL_OFF_MARGIN: f64 = 10.0;
 
 impl Scene {
     /// A lower bound (N, positive) on the magnitude of the pull-off force of
-    /// this scene's adhesive unloading, where a closed form gives one; `None`
-    /// elsewhere (periodic grids, cones, height maps, custom and tilted
-    /// flat indenters) and without adhesion. A tenth
-    /// ([`PULL_OFF_MARGIN`]) of:
+    /// this scene's adhesive unloading, where a closed form (or for a cone
+    /// the exact solution) gives one; `None` elsewhere (periodic grids,
+    /// height maps, custom and tilted flat indenters) and without
+    /// adhesion. A tenth ([`PULL_OFF_MARGIN`]) of:
     ///
     /// * a paraboloid: JKR's `3/2 pi R dgamma` (Johnson, Kendall & Roberts
     ///   1971, Proc. R. Soc. A 324, 301), which does not depend on the
@@ -241,6 +241,10 @@ impl Scene {
     ///   radius, `sqrt(8 pi R^3 E* dgamma)` (Kendall 1971, J. Phys. D 4,
     ///   1186), since its contact cannot pass the equator;
     /// * an untilted flat punch: Kendall's of its radius;
+    /// * a cone, tilted or not: the exact pull-off of the untilted cone on
+    ///   the scene's body ([`Scene::exact_cone_pull_off`]; on a half-space
+    ///   Maugis & Barquins' `54 dgamma^2 tan^3(theta) / (pi E*)`), since a
+    ///   cone's depends on the modulus;
     ///
     /// `E*` the softest contact modulus of the body (a softer body lets go
     /// at a smaller force), `dgamma` the receding work of adhesion.
@@ -269,6 +273,7 @@ impl Scene {
             IndenterSpec::Paraboloid { radius } => jkr(radius)?,
             IndenterSpec::Sphere { radius } => jkr(radius)?.min(kendall(radius)?),
             IndenterSpec::FlatPunch { radius } if self.untilted() => kendall(radius)?,
+            IndenterSpec::Cone { .. } => -self.exact_cone_pull_off()?,
             _ => return None,
         };
         Some(closed / PULL_OFF_MARGIN).filter(|b| b.is_finite())

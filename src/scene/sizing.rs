@@ -26,6 +26,25 @@ const SIZING_MAX_EPS: f64 = 50.0;
 /// 1981), which 16 cells across the pull-off left at 1.8 cells, refused.
 const JUMP_OFF_SHARE: f64 = 0.45;
 
+/// The state of least force (`depth` false) or depth of the exact
+/// unloading from `peak`: below its contact radius, not a deeper one
+/// beyond it (a film on a much softer base); where the peak makes no
+/// contact, over every radius.
+fn least_of_unloading(
+    unloading: &crate::analytic::LayeredTip,
+    peak: &crate::analytic::ContactState,
+    depth: bool,
+) -> Option<crate::analytic::ContactState> {
+    let state = if peak.contact_radius > 0.0 {
+        unloading.least_below(peak.contact_radius, depth)
+    } else if depth {
+        unloading.pull_off().map(|p| p.displacement_control)
+    } else {
+        unloading.load_controlled_pull_off()
+    };
+    state.ok()
+}
+
 /// The widest grid a scene builds, in cells.
 const MAX_GRID_CELLS: usize = 8192;
 
@@ -129,24 +148,41 @@ impl Scene {
             return self.base_jkr_radii(&substrate, curved, estimate);
         };
         let peak = peak?;
-        // The least force (and depth) of the unloading from the peak, not
-        // a deeper one beyond it (a film on a much softer base).
         let unloading = exact.tip(curved.tip, receding).ok()?;
-        let least = |depth| {
-            let state = if peak.contact_radius > 0.0 {
-                unloading.least_below(peak.contact_radius, depth)
-            } else if depth {
-                unloading.pull_off().map(|p| p.displacement_control)
-            } else {
-                unloading.load_controlled_pull_off()
-            };
-            state.ok().map(|s| s.contact_radius)
-        };
+        let least = |depth| Some(least_of_unloading(&unloading, &peak, depth)?.contact_radius);
         let mut smallest = least(false)?;
         if self.resolves_jump_off() {
             smallest = smallest.min(least(true)? / JUMP_OFF_SHARE);
         }
         Some((peak.contact_radius, smallest))
+    }
+
+    /// The exact pull-off force (N, negative) of an adhesive cone's
+    /// unloading from its peak (the untilted cone's, on the scene's body),
+    /// `None` where the exact solution has none or does not reach the
+    /// peak. A cone's pull-off depends on the body's modulus (`-54
+    /// dgamma^2 / (pi E* s^3)` on a half-space), so no closed form bounds
+    /// it on a layered body; the exact solution does.
+    pub(super) fn exact_cone_pull_off(&self) -> Option<f64> {
+        let (advancing, receding) = self.adhesion.works()?;
+        let curved = super::reference::curved_tip(&self.indenter)
+            .filter(|c| matches!(c.tip, crate::analytic::Tip::Cone { .. }))?;
+        let substrate = self.substrate.build().ok()?;
+        let scale = curved
+            .on_half_space(substrate.surface_material(), receding)
+            .ok()?
+            .pull_off_contact_radius();
+        let reach = (3.0 * scale).max(2.0 * self.contact_radius_estimate().ok()?);
+        let (exact, peak) = super::reference::tip_peak(
+            &substrate,
+            (curved, advancing),
+            self.protocol,
+            reach,
+            SIZING_MAX_EPS,
+        )
+        .ok()??;
+        let unloading = exact.tip(curved.tip, receding).ok()?;
+        Some(least_of_unloading(&unloading, &peak?, false)?.force)
     }
 
     /// Whether the grid must resolve the jump-off contact of a
