@@ -250,9 +250,5 @@ fn force_cycle(
             Err(e) => return Err(e),
         }
     }
-    Err(Error::NoConvergence {
-        method: "load-controlled unloading to the pull-off",
-        iterations: MAX_PROTOCOL_STEPS,
-        residual: area,
-    })
+    Err(super::pull_off_beyond_steps(increment))
 }

@@ -383,6 +383,22 @@ impl Default for Scene {
 
 /// Bounds on a scene's work, so that no input can run forever.
 pub(super) const MAX_PROTOCOL_STEPS: usize = 100_000;
+
+/// The error of a force cycle whose unloading is still attached after
+/// [`MAX_PROTOCOL_STEPS`] decrements of `decrement` (N): the protocol's
+/// step is too small for the pull-off, a limit of the input rather than a
+/// failed iteration (a punch tilted by 1 mrad, cycled to 1 pN in 3 steps,
+/// walked its peeling path for 70 s before it said so, as `NoConvergence`
+/// until 2026-12-02). [`Scene::validate`] refuses such cycles at once
+/// where a closed form or exact solution bounds the pull-off.
+pub(super) fn pull_off_beyond_steps(decrement: f64) -> Error {
+    Error::InvalidParameter {
+        name: "protocol.max_force / steps (N)",
+        value: decrement,
+        expected: "a force step that reaches the pull-off within 100000 unloading steps (the \
+                   unloading was still attached after them: raise max_force or lower steps)",
+    }
+}
 /// Unloading past zero depth stops after this many times the loading depth
 /// (a contact so sticky that it holds beyond is reported, not followed
 /// forever). The increments double beyond one loading depth, so the bound

@@ -227,11 +227,7 @@ impl Runner<'_> {
                 });
             }
         }
-        Err(Error::NoConvergence {
-            method: "load-controlled unloading through the cohesive zone to the pull-off",
-            iterations: MAX_PROTOCOL_STEPS,
-            residual: path.current.force,
-        })
+        Err(super::super::pull_off_beyond_steps(increment))
     }
 
     /// The equilibrium where the indenter touches (the start of the path).

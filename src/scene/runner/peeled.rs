@@ -124,11 +124,7 @@ impl Runner<'_> {
                 return Ok(false);
             }
         }
-        Err(Error::NoConvergence {
-            method: "load-controlled unloading of a punch along its peeling path",
-            iterations: MAX_PROTOCOL_STEPS,
-            residual: max_force,
-        })
+        Err(super::super::pull_off_beyond_steps(decrement))
     }
 
     /// The peeling path of the scene's punch from the cells bonded in the
