@@ -112,7 +112,7 @@ fn adhesive_cones_come_off_at_the_jkr_force() {
 /// a displacement cycle's pull-off, peak force and peak contact radius come
 /// within 1 % of it at 16 cells across (measured +0.043, +0.038 and
 /// -0.004 %). Its grid resolves the jump-off contact, a ninth of the
-/// pull-off's on a half-space, by 0.45 of the 16 cells (225 cells across
+/// pull-off's on a half-space, by 7.2 cells (225 cells across
 /// the grid); sized by the pull-off contact alone (54 cells) the jump-off
 /// fell on 1.8 cells and the energy balance refused the cycle.
 #[test]

@@ -17,14 +17,17 @@ use super::{Adhesion, AdhesionMethod, IndenterSpec, Protocol, Scene};
 /// that scene.
 const SIZING_MAX_EPS: f64 = 50.0;
 
-/// The least share of `cells_across` a displacement-controlled cycle's
-/// jump-off contact is given: 0.45 of 16 cells is 7.2 cells across, a disc
-/// of 41 cells, above the 36 the energy balance needs to place a least
-/// force or depth there (`RESOLVED_CELLS`). A paraboloid's jump-off contact
-/// on a half-space is 0.48 of its pull-off's (JKR 1971), so its grid is
-/// sized by the pull-off as before; a cone's is a ninth (Maugis & Barquins
-/// 1981), which 16 cells across the pull-off left at 1.8 cells, refused.
-const JUMP_OFF_SHARE: f64 = 0.45;
+/// The fewest cells across a displacement-controlled cycle's jump-off
+/// contact is given, whatever `cells_across` asks of the pull-off's: 7.2
+/// cells across is a disc of 41 cells, above the 36 the energy balance
+/// needs to place a least force or depth there (`RESOLVED_CELLS`). A
+/// paraboloid's jump-off contact on a half-space is 0.48 of its pull-off's
+/// (JKR 1971), so from 16 cells across its grid is sized by the pull-off as
+/// before; a cone's is a ninth (Maugis & Barquins 1981), which 16 cells
+/// across the pull-off left at 1.8 cells, refused. (A share of
+/// `cells_across` instead, 0.45, refined the grid of a sphere on a film
+/// over a stiffer base at 64 cells, whose jump-off had 26 cells already.)
+const JUMP_OFF_CELLS: f64 = 7.2;
 
 /// The state of least force (`depth` false) or depth of the exact
 /// unloading from `peak`: below its contact radius, not a deeper one
@@ -109,10 +112,12 @@ impl Scene {
 
     /// For an adhesive scene with a paraboloid, sphere or cone: the radii
     /// (m) of the loading peak's contact and of the smallest contact to
-    /// resolve, the pull-off contact (and where [`Scene::resolves_jump_off`]
-    /// the jump-off contact over [`JUMP_OFF_SHARE`]), from the exact (layered)
-    /// JKR solution, given the non-adhesive `estimate` of the peak's. `None` where there is none, or it fails. (A tilted
-    /// tip is sized as its untilted one: the tilts are small.)
+    /// resolve, the pull-off contact (and where
+    /// [`Scene::resolves_jump_off`] the radius that gives the jump-off
+    /// contact [`JUMP_OFF_CELLS`] across, [`Scene::jump_off_resolved`]),
+    /// from the exact (layered) JKR solution, given the non-adhesive
+    /// `estimate` of the peak's. `None` where there is none, or it fails.
+    /// (A tilted tip is sized as its untilted one: the tilts are small.)
     fn adhesive_radii(&self, estimate: f64) -> Option<(f64, f64)> {
         let (advancing, receding) = self.adhesion.works()?;
         // A sphere by its own solution: its paraboloid's contact is wider
@@ -152,7 +157,7 @@ impl Scene {
         let least = |depth| Some(least_of_unloading(&unloading, &peak, depth)?.contact_radius);
         let mut smallest = least(false)?;
         if self.resolves_jump_off() {
-            smallest = smallest.min(least(true)? / JUMP_OFF_SHARE);
+            smallest = smallest.min(self.jump_off_resolved(least(true)?));
         }
         Some((peak.contact_radius, smallest))
     }
@@ -183,6 +188,13 @@ impl Scene {
         .ok()??;
         let unloading = exact.tip(curved.tip, receding).ok()?;
         Some(least_of_unloading(&unloading, &peak?, false)?.force)
+    }
+
+    /// The contact radius (m) whose diameter `cells_across` must span for
+    /// a jump-off contact of radius `jump_off` (m) to have
+    /// [`JUMP_OFF_CELLS`] across.
+    fn jump_off_resolved(&self, jump_off: f64) -> f64 {
+        jump_off * self.resolution.cells_across as f64 / JUMP_OFF_CELLS
     }
 
     /// Whether the grid must resolve the jump-off contact of a
@@ -221,7 +233,7 @@ impl Scene {
         let pull_off = if self.resolves_jump_off() {
             unloading
                 .pull_off_contact_radius()
-                .min(unloading.jump_off_contact_radius() / JUMP_OFF_SHARE)
+                .min(self.jump_off_resolved(unloading.jump_off_contact_radius()))
         } else {
             unloading.pull_off_contact_radius()
         };
