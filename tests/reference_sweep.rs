@@ -105,7 +105,7 @@ fn scene_text(
     let half_angle = 0.5 + 0.225 * (radius + 5.0);
     let slope = 1.0 / half_angle.tan();
     // The contact radius: the punch's, Sneddon's `2 d / (pi s)` for a cone
-    // (at most 0.45 of its base), or about sqrt(R d) for a curve.
+    // (at most 0.19 of its base), or about sqrt(R d) for a curve.
     let (d, a) = match kind {
         "flat_punch" => (r * decade(depth - 3.0), r),
         "cone" => {
