@@ -1,6 +1,6 @@
 //! Rigid conical punch on a half-space.
 
-use super::non_negative;
+use super::{non_negative, rising_root};
 use std::f64::consts::{FRAC_PI_2, PI};
 
 use crate::error::{Error, Result};
@@ -211,22 +211,4 @@ impl JkrCone {
             (16.0 * lo).max(elastic),
         ))
     }
-}
-
-/// The `a` in `[lo, hi]` where the rising `f` reaches `target` (`f(lo) <=
-/// target <= f(hi)`), by bisection until the bracket stops shrinking (at
-/// most 2100 halvings: f64's exponent range and mantissa).
-fn rising_root(f: impl Fn(f64) -> f64, target: f64, mut lo: f64, mut hi: f64) -> f64 {
-    for _ in 0..2100 {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
-            break;
-        }
-        if f(mid) < target {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    0.5 * (lo + hi)
 }

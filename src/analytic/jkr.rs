@@ -1,6 +1,6 @@
 //! JKR adhesive contact of a rigid sphere (paraboloid) with a half-space.
 
-use super::non_negative;
+use super::{non_negative, rising_root};
 use std::f64::consts::PI;
 
 use crate::error::{non_negative_finite, positive_finite, Result};
@@ -128,16 +128,6 @@ impl JkrSphere {
             lo = hi;
             hi *= 2.0;
         }
-        loop {
-            let mid = 0.5 * (lo + hi);
-            if mid <= lo || mid >= hi {
-                return Some(mid);
-            }
-            if self.depth(mid) < depth {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
+        Some(rising_root(|a| self.depth(a), depth, lo, hi))
     }
 }

@@ -64,3 +64,21 @@ fn non_negative(x: f64) -> f64 {
         x.max(0.0)
     }
 }
+
+/// The `a` in `[lo, hi]` where the rising `f` reaches `target` (`f(lo) <=
+/// target <= f(hi)`), by bisection until the bracket stops shrinking (at
+/// most 2100 halvings: f64's exponent range and mantissa).
+fn rising_root(f: impl Fn(f64) -> f64, target: f64, mut lo: f64, mut hi: f64) -> f64 {
+    for _ in 0..2100 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if f(mid) < target {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}

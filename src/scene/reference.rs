@@ -2,7 +2,9 @@
 //! axisymmetric solutions of [`analytic::Axisymmetric`](crate::analytic::Axisymmetric) for an untilted flat
 //! punch, paraboloid, sphere or cone on an isolated half-space or coated body.
 
-use crate::analytic::{Axisymmetric, ContactState, JkrCone, JkrFlatPunch, JkrSphere, Tip};
+use crate::analytic::{
+    Axisymmetric, ContactState, JkrCone, JkrFlatPunch, JkrSphere, LayeredTip, Tip,
+};
 use crate::error::{Error, Result};
 use crate::grid::Boundary;
 use crate::material::Material;
@@ -184,10 +186,8 @@ impl Scene {
                     // which the unloading never reaches (a cone on a film
                     // over a base 300 times softer came off at -1.5 mN,
                     // its reference the peak's +2.5 mN before).
-                    let least = match peak.filter(|s| s.contact_radius > 0.0) {
-                        Some(p) => unloading.least_below(p.contact_radius, false),
-                        None => unloading.load_controlled_pull_off(),
-                    };
+                    let least =
+                        least_of_unloading(&unloading, peak.map(|p| p.contact_radius), false);
                     // Beyond the table: no pull-off reference.
                     let pull_off = match least {
                         Err(Error::InvalidParameter {
@@ -365,6 +365,26 @@ impl HalfSpaceJkr {
             (HalfSpaceJkr::Cone(jkr), Reach::Depth(depth)) => jkr.contact_radius_at_depth(depth),
             (HalfSpaceJkr::Cone(jkr), Reach::Force(force)) => jkr.contact_radius_at_force(force),
         }
+    }
+}
+
+/// The state of least force (`depth` false) or depth of the exact
+/// `unloading` from a peak contact of `peak_radius` (m): below it, not a
+/// deeper one beyond it (a film on a much softer base,
+/// [`LayeredTip::least_below`]); where the peak makes no contact (`None`
+/// or 0), over every radius.
+///
+/// # Errors
+/// As [`LayeredTip::pull_off`].
+pub(super) fn least_of_unloading(
+    unloading: &LayeredTip,
+    peak_radius: Option<f64>,
+    depth: bool,
+) -> Result<ContactState> {
+    match peak_radius.filter(|&a| a > 0.0) {
+        Some(a) => unloading.least_below(a, depth),
+        None if depth => unloading.pull_off().map(|p| p.displacement_control),
+        None => unloading.load_controlled_pull_off(),
     }
 }
 

@@ -5,7 +5,10 @@ use crate::error::{Error, Result};
 use crate::grid::fft_friendly;
 use crate::grid::Grid;
 
+use crate::analytic::{ContactState, LayeredTip};
 use crate::solver::CohesiveZone;
+
+use super::reference::least_of_unloading;
 
 use super::{Adhesion, AdhesionMethod, IndenterSpec, Protocol, Scene};
 
@@ -28,25 +31,6 @@ const SIZING_MAX_EPS: f64 = 50.0;
 /// `cells_across` instead, 0.45, refined the grid of a sphere on a film
 /// over a stiffer base at 64 cells, whose jump-off had 26 cells already.)
 const JUMP_OFF_CELLS: f64 = 7.2;
-
-/// The state of least force (`depth` false) or depth of the exact
-/// unloading from `peak`: below its contact radius, not a deeper one
-/// beyond it (a film on a much softer base); where the peak makes no
-/// contact, over every radius.
-fn least_of_unloading(
-    unloading: &crate::analytic::LayeredTip,
-    peak: &crate::analytic::ContactState,
-    depth: bool,
-) -> Option<crate::analytic::ContactState> {
-    let state = if peak.contact_radius > 0.0 {
-        unloading.least_below(peak.contact_radius, depth)
-    } else if depth {
-        unloading.pull_off().map(|p| p.displacement_control)
-    } else {
-        unloading.load_controlled_pull_off()
-    };
-    state.ok()
-}
 
 /// The widest grid a scene builds, in cells.
 const MAX_GRID_CELLS: usize = 8192;
@@ -119,7 +103,7 @@ impl Scene {
     /// `estimate` of the peak's. `None` where there is none, or it fails.
     /// (A tilted tip is sized as its untilted one: the tilts are small.)
     fn adhesive_radii(&self, estimate: f64) -> Option<(f64, f64)> {
-        let (advancing, receding) = self.adhesion.works()?;
+        let (_, receding) = self.adhesion.works()?;
         // A sphere by its own solution: its paraboloid's contact is wider
         // (at 0.8 of the radius the paraboloid's pull-off contact came to
         // 1.6 radii, and the grid resolved half the cells asked for).
@@ -128,6 +112,34 @@ impl Scene {
             return None;
         }
         let substrate = self.substrate.build().ok()?;
+        let Some((peak, unloading)) = self.exact_unloading(&substrate, curved, estimate)? else {
+            return self.base_jkr_radii(&substrate, curved, estimate);
+        };
+        let least = |depth| {
+            let state = least_of_unloading(&unloading, Some(peak.contact_radius), depth);
+            Some(state.ok()?.contact_radius)
+        };
+        let mut smallest = least(false)?;
+        if self.resolves_jump_off() {
+            smallest = smallest.min(self.jump_off_resolved(least(true)?));
+        }
+        Some((peak.contact_radius, smallest))
+    }
+
+    /// The exact (layered) solution at the peak of the protocol (at the
+    /// advancing work of adhesion) and the unloading from it (at the
+    /// receding work), for the `curved` tip on `substrate`, given the
+    /// non-adhesive `estimate` (m) of the peak's contact radius. `Some(None)`
+    /// where the table stops short of the peak (beyond [`SIZING_MAX_EPS`]
+    /// layer thicknesses or the tip's cap); `None` without adhesion, where
+    /// the peak makes no contact, or where the solution fails.
+    fn exact_unloading(
+        &self,
+        substrate: &crate::substrate::Substrate,
+        curved: super::reference::CurvedTip,
+        estimate: f64,
+    ) -> Option<Option<(ContactState, LayeredTip)>> {
+        let (advancing, receding) = self.adhesion.works()?;
         let scale = curved
             .on_half_space(substrate.surface_material(), receding)
             .ok()?
@@ -142,7 +154,7 @@ impl Scene {
         // adhesive paraboloid on a thin layer over a base a thousand times
         // softer), past what growing the grid reaches.
         let Some((exact, peak)) = super::reference::tip_peak(
-            &substrate,
+            substrate,
             (curved, advancing),
             self.protocol,
             reach,
@@ -150,16 +162,10 @@ impl Scene {
         )
         .ok()?
         else {
-            return self.base_jkr_radii(&substrate, curved, estimate);
+            return Some(None);
         };
-        let peak = peak?;
         let unloading = exact.tip(curved.tip, receding).ok()?;
-        let least = |depth| Some(least_of_unloading(&unloading, &peak, depth)?.contact_radius);
-        let mut smallest = least(false)?;
-        if self.resolves_jump_off() {
-            smallest = smallest.min(self.jump_off_resolved(least(true)?));
-        }
-        Some((peak.contact_radius, smallest))
+        Some(Some((peak?, unloading)))
     }
 
     /// The exact pull-off force (N, negative) of an adhesive cone's
@@ -169,25 +175,13 @@ impl Scene {
     /// dgamma^2 / (pi E* s^3)` on a half-space), so no closed form bounds
     /// it on a layered body; the exact solution does.
     pub(super) fn exact_cone_pull_off(&self) -> Option<f64> {
-        let (advancing, receding) = self.adhesion.works()?;
         let curved = super::reference::curved_tip(&self.indenter)
             .filter(|c| matches!(c.tip, crate::analytic::Tip::Cone { .. }))?;
         let substrate = self.substrate.build().ok()?;
-        let scale = curved
-            .on_half_space(substrate.surface_material(), receding)
-            .ok()?
-            .pull_off_contact_radius();
-        let reach = (3.0 * scale).max(2.0 * self.contact_radius_estimate().ok()?);
-        let (exact, peak) = super::reference::tip_peak(
-            &substrate,
-            (curved, advancing),
-            self.protocol,
-            reach,
-            SIZING_MAX_EPS,
-        )
-        .ok()??;
-        let unloading = exact.tip(curved.tip, receding).ok()?;
-        Some(least_of_unloading(&unloading, &peak?, false)?.force)
+        let estimate = self.contact_radius_estimate().ok()?;
+        let (peak, unloading) = self.exact_unloading(&substrate, curved, estimate)??;
+        let least = least_of_unloading(&unloading, Some(peak.contact_radius), false);
+        Some(least.ok()?.force)
     }
 
     /// The contact radius (m) whose diameter `cells_across` must span for
