@@ -255,9 +255,12 @@ fn a_straight_edge_along_the_grid_converges_with_a_wider_zone() {
     // 4096 cells per wavelength, the zone of four cells: the walk that
     // stopped at the first rise of the force took a ripple for the
     // pull-off, 32.8 % short of it; walking on until the force has risen
-    // three steps in a row, -0.674 % (the ripple's bias at this zone).
+    // three steps in a row, +0.371 % (the ripple's bias at this zone; it
+    // was -0.674 % until each solve's first round held the contact it
+    // starts from, 2026-12-02: which trapped edge the path keeps is the
+    // lattice's).
     let narrow = sinusoid_pull_off_on((4096, 8), (1, 0), 4.0);
-    assert!((narrow + 0.00674).abs() < 1e-3, "{narrow}");
+    assert!((narrow - 0.00371).abs() < 1e-3, "{narrow}");
 }
 
 #[test]
@@ -461,44 +464,4 @@ fn the_displacement_is_the_response_to_the_total_pressure() {
         }
         warm = Some(next);
     }
-}
-
-/// An unloading step the fixed point cannot reach (its inner solves held
-/// to seven iterations, the step half the critical depth) is taken again
-/// in substeps: the pull-off is the unrestricted run's (measured the same
-/// to 1e-13: -1.13596 % against JKR at 24 cells across, 42 solves against
-/// 14).
-#[test]
-fn a_step_out_of_reach_is_taken_in_substeps() {
-    let jkr = JkrSphere::new(&rubber(), RADIUS, WORK).unwrap();
-    let a = jkr.pull_off_contact_radius();
-    let (_, grid) = sphere_grid(a, 24);
-    let sphere = Sphere::new(RADIUS).unwrap();
-    let zone = CohesiveZone::new(WORK, WORK).unwrap();
-    let start = jkr.depth(1.6 * a);
-    let step = 0.5 * jkr.critical_depth().abs();
-    let pull_off = |max_iterations: usize| {
-        let body = Substrate::half_space(rubber());
-        let params = SolverParams::default();
-        let mut solver = ContactSolver::new(&body, &grid, Boundary::Isolated, params).unwrap();
-        let (_, warm) = solver
-            .solve_depth_cohesive(&sphere, start, &zone, None, &mut ())
-            .unwrap();
-        solver.set_params(SolverParams {
-            max_iterations,
-            ..params
-        });
-        solver
-            .cohesive_pull_off(&sphere, &zone, start, step, Some(&warm), &mut ())
-            .unwrap()
-    };
-    let free = pull_off(1000);
-    let held = pull_off(7);
-    assert!(held.solves > free.solves + 10, "{held:?} {free:?}");
-    assert!(
-        (held.force / free.force - 1.0).abs() < 1e-9,
-        "{held:?} {free:?}"
-    );
-    // Both the JKR sphere's pull-off within the zone's error at 24 cells.
-    assert!((free.force / jkr.pull_off_force() - 1.0).abs() < 0.02);
 }

@@ -436,9 +436,21 @@
 //! resolved) and damped rounds whose change grows eight times in a row (an
 //! unstable equilibrium being left) count as progress and double the
 //! damping back towards full steps: damped to 1/64, a rough film's cycle
-//! at 256^2 crept at a few cells a round and gave up. A cell that touches bonds and holds with the
-//! receding work of adhesion until its gap passes the receding range; an
-//! unbonded cell pulls with the advancing one (adhesion hysteresis).
+//! at 256^2 crept at a few cells a round and gave up. A cell in contact at
+//! an equilibrium bonds and holds with the receding work of adhesion until
+//! its gap passes the receding range; an unbonded cell pulls with the
+//! advancing one (adhesion hysteresis). Within one solve a cell is bonded
+//! if the round's contact holds it or it was bonded at the equilibrium the
+//! solve started from: a cell that one round closed and the next opened
+//! was never bonded on the path (until 2026-12-02 it stayed bonded, and a
+//! fixed point whose contact overshot kept the overshoot: a cone on a
+//! stiff coating over a far softer base loaded 14 % short of the exact
+//! force, its contact 53 % too wide). Each solve's first round holds the
+//! contact of the state it starts from at the law's peak, as every later
+//! round holds its own, rather than reading its cells' tensions at gaps
+//! opened by the step of depth (a step wider than the law's range zeroed
+//! them, and on a body whose contact moves as a whole the surface fell
+//! away: that cone came off 36 % weak).
 //! Tension inside a bonded area opens it only past the law's peak,
 //! `sqrt(dgamma E* / (k Delta))`, which grows without bound as the grid is
 //! refined: there is no Griffith limit for nucleation, and the JKR limit

@@ -34,8 +34,11 @@
 //!   past the surface (the increment doubles beyond `-max_depth`; with the
 //!   energy balance the run goes on past the exact jump-off, which a
 //!   cycle a few nanometres deep finds thousands of loading depths above
-//!   the surface; with the cohesive zone and the mesh criterion it stops at `-4096 max_depth` with
-//!   `NoConvergence`), solver iterations,
+//!   the surface; with the cohesive zone and the mesh criterion it stops
+//!   with `NoConvergence` past the larger of `-4096 max_depth` and four
+//!   times Kendall's pull-off depth of a punch as wide as the grid on the
+//!   body's softest material, which no contact the grid holds passes in
+//!   the JKR limit), solver iterations,
 //!   the adhesive active-set rounds, the energy balance's family widenings,
 //!   the exact solver's Nystrom order and bracket searches, the FFT-size
 //!   search (a power of two lies within `[n, 2n]`).

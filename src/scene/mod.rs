@@ -93,9 +93,11 @@ pub enum Protocol {
     /// (least force) and the jump-off (least depth) are added as exact
     /// steps of the unloading branch; with the mesh-dependent criterion the
     /// depths where the contact first shrinks and where it is lost are
-    /// located by bisection. A contact still attached at `-4096 max_depth`
-    /// (the increments double beyond `-max_depth`) ends the run with
-    /// [`Error::NoConvergence`].
+    /// located by bisection. The increments double beyond `-max_depth`; a
+    /// contact still attached past the larger of `-4096 max_depth` and four
+    /// times Kendall's pull-off depth of a punch as wide as the grid on
+    /// the body's softest material (`sqrt(2 pi dgamma a / E*)`, Kendall
+    /// 1971) ends the run with [`Error::NoConvergence`].
     Cycle {
         /// Maximum depth, m.
         max_depth: f64,

@@ -315,7 +315,8 @@ impl<'a> Runner<'a> {
     /// is lost are each refined by bisection, so that the pull-off force is
     /// found even when the curve turns within one increment. Beyond
     /// `-max_depth` the increment doubles at each step, so that a contact
-    /// that holds to `-4096 max_depth` costs a few dozen solves, not `4096 steps`.
+    /// that holds far above the surface costs a few dozen solves, not thousands
+    /// (to [`Runner::pull_reach`]).
     fn unload(
         &mut self,
         max_depth: f64,
@@ -326,9 +327,10 @@ impl<'a> Runner<'a> {
         let mut cells = self.last_contact_cells();
         let mut shrinking_refined = false;
         let mut increment = increment;
-        let limit = unloading_steps(max_depth, increment);
+        let reach = self.pull_reach(max_depth);
+        let limit = unloading_steps(max_depth, increment, reach);
         for _ in 0..limit {
-            let Some(next) = next_increment(depth, increment, max_depth) else {
+            let Some(next) = next_increment(depth, increment, max_depth, reach) else {
                 break;
             };
             increment = next;
@@ -358,6 +360,40 @@ impl<'a> Runner<'a> {
             }
         }
         Err(still_attached(limit, depth))
+    }
+
+    /// How far above the surface (m, positive) an unloading from
+    /// `max_depth` follows a contact that still holds: `MAX_PULL_DEPTHS`
+    /// loading depths, or four times the pull-off depth of Kendall's flat
+    /// punch (1971, J. Phys. D 4, 1186: `sqrt(2 pi dgamma a / E*)`) as wide
+    /// as the grid's diagonal on a half-space of the body's softest
+    /// material, with the receding work and the cohesive law's range,
+    /// whichever is farther. The punch bounds the others in the JKR limit:
+    /// a bonded cell's surface is pulled up by at least the depth (its
+    /// gap is closed over an indenter whose lowest point is at the depth),
+    /// the punch pulls its whole face by exactly that, and no bonded patch
+    /// on the grid is wider; the factor four covers the rest (layers no
+    /// softer than their softest material, the mesh criterion's stronger
+    /// pull on coarse grids). A sticky flat punch pressed a few nanometres
+    /// comes off tens of thousands of loading depths above the surface (in
+    /// the reference sweep's cohesive cases: a 0.2 m punch on a 1 kPa
+    /// half-space, 5 um deep, at -0.25 m); it had ended in `NoConvergence`
+    /// at 4096.
+    fn pull_reach(&self, max_depth: f64) -> f64 {
+        let grid = self.solver.grid();
+        let half_diagonal =
+            0.5 * grid.spacing() * (grid.rows() as f64).hypot(grid.columns() as f64);
+        let modulus = self.solver.substrate().softest_contact_modulus();
+        let work = self
+            .scene
+            .adhesion
+            .works()
+            .map_or(0.0, |(_, receding)| receding);
+        let range = self
+            .cohesive
+            .map_or(0.0, |zone| zone.range(work, grid.spacing(), modulus));
+        let kendall = (2.0 * std::f64::consts::PI * work * half_diagonal / modulus).sqrt();
+        (MAX_PULL_DEPTHS * max_depth).max(4.0 * (kendall + range))
     }
 
     fn last_contact_cells(&self) -> usize {
@@ -402,20 +438,17 @@ impl<'a> Runner<'a> {
 }
 
 /// The most unloading steps from `max_depth` by `increment`: to `-max_depth`
-/// in steps of `increment`, then doubling them to `-MAX_PULL_DEPTHS max_depth`.
-fn unloading_steps(max_depth: f64, increment: f64) -> usize {
+/// in steps of `increment`, then doubling them to `-reach`.
+fn unloading_steps(max_depth: f64, increment: f64, reach: f64) -> usize {
     (2.0 * max_depth / increment).ceil() as usize
-        + (MAX_PULL_DEPTHS * max_depth / increment)
-            .log2()
-            .ceil()
-            .max(0.0) as usize
+        + (reach / increment).log2().ceil().max(0.0) as usize
         + 2
 }
 
 /// The increment of the next unloading step from `depth`: doubled beyond
-/// `-max_depth`, none beyond `-MAX_PULL_DEPTHS max_depth`.
-fn next_increment(depth: f64, increment: f64, max_depth: f64) -> Option<f64> {
-    if depth < -MAX_PULL_DEPTHS * max_depth {
+/// `-max_depth`, none beyond `-reach`.
+fn next_increment(depth: f64, increment: f64, max_depth: f64, reach: f64) -> Option<f64> {
+    if depth < -reach {
         None
     } else if depth < -max_depth {
         Some(2.0 * increment)
@@ -424,12 +457,13 @@ fn next_increment(depth: f64, increment: f64, max_depth: f64) -> Option<f64> {
     }
 }
 
-/// The error of an unloading that still holds at `-MAX_PULL_DEPTHS` loading
-/// depths.
+/// The error of an unloading that still holds past its reach
+/// ([`Runner::pull_reach`]).
 fn still_attached(steps: usize, depth: f64) -> Error {
     Error::NoConvergence {
-        method: "unloading to contact loss (still attached 4096 loading depths above the \
-                 surface)",
+        method: "unloading to contact loss (still attached past the larger of 4096 loading \
+                 depths and four times Kendall's pull-off depth of a punch as wide as the grid \
+                 on the body's softest material)",
         iterations: steps,
         residual: depth,
     }

@@ -174,6 +174,7 @@ impl ContactSolver {
             Some(w) => w.attached.clone(),
             None => vec![false; n],
         };
+        let prior = bonded.clone();
         // The tensions from the gaps of the last pressures at this depth.
         let mut total = match warm {
             Some(w) => w.pressure.clone(),
@@ -182,8 +183,19 @@ impl ContactSolver {
         let mut kt = super::cell_vector(n)?;
         self.operator.apply(&total, &mut kt)?;
         let mut tension = vec![0.0; n];
+        let held = warm.and_then(|w| w.contact.as_deref());
         for c in 0..n {
-            let g = (base[c] - depth + kt[c]).max(0.0);
+            // The warm start's contact is held at first (its cells at the
+            // law's peak, as every round holds the round's contact), not
+            // opened by the step of depth: on a body whose contact moves
+            // as a whole (a stiff coating on a far softer base) the drop of
+            // their tensions moved the whole surface away and the first
+            // round lost the contact.
+            let g = if held.is_some_and(|h| h.get(c) == Some(&true)) {
+                0.0
+            } else {
+                (base[c] - depth + kt[c]).max(0.0)
+            };
             let law = if bonded[c] { &receding } else { &advancing };
             tension[c] = law.tension(g);
         }
@@ -312,11 +324,13 @@ impl ContactSolver {
                     (ws.profile[c] - depth + ws.displacement[c]).max(0.0)
                 };
                 let root = roots.get(c).copied().unwrap_or(1.0);
-                if touching {
-                    bonded[c] = true;
-                } else if g >= receding.range * root {
-                    bonded[c] = false;
-                }
+                // Bonded: in contact now, or bonded at the equilibrium the
+                // solve started from and not opened past the range since.
+                // A round's contact is not the path's: a cell that one
+                // round closed and the next opened again was never bonded
+                // at an equilibrium (with hysteresis, a fixed point whose
+                // contact overshot kept the overshoot at the receding work).
+                bonded[c] = touching || (prior[c] && g < receding.range * root);
                 let law = if bonded[c] { &receding } else { &advancing };
                 let law = law.scaled(root);
                 mapped[c] = law.tension(g);

@@ -77,9 +77,9 @@ impl CohesiveZone {
     /// The law for the advancing (loading, `dgamma0`) and receding
     /// (unloading, `dgamma1 >= dgamma0`) works of adhesion, J/m^2, with a
     /// zone of [`COHESIVE_ZONE_CELLS`] cells and the curvature correction
-    /// [`CURVATURE_CORRECTION`]. A cell bonds when it touches
-    /// and then holds with `dgamma1` until its gap exceeds the receding
-    /// range; a cell that has not touched pulls with `dgamma0`.
+    /// [`CURVATURE_CORRECTION`]. A cell bonds when it is in contact at an
+    /// equilibrium and then holds with `dgamma1` until its gap exceeds the
+    /// receding range; a cell that has not touched pulls with `dgamma0`.
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for a negative or non-finite work of

@@ -286,3 +286,61 @@ where
     }
     Err(last)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A solve that reaches depth `d` from the last depth it reached only
+    /// within `reach` (m), as a fixed point that creeps from a whole step
+    /// away: `substeps` divides the step until it converges (four parts
+    /// of a step of 1 within 0.3), and gives up with the last division's
+    /// `NoConvergence` after sixteen (within 0.01 none does).
+    #[test]
+    fn a_step_out_of_reach_is_taken_in_the_first_division_that_converges() {
+        let (_, mut solver, _, _, warm) =
+            super::super::cohesive::tests::jkr_sphere_at_one_and_a_half_radii();
+        for (reach, parts) in [(0.3, Some(4)), (0.6, Some(2)), (0.01, None)] {
+            let mut last = 1.0;
+            let mut reached = Vec::new();
+            let mut solve = |_: &mut ContactSolver, d: f64, from: Option<&WarmStart>| {
+                let from = from.ok_or(Error::Internal {
+                    what: "test",
+                    detail: "no state".into(),
+                })?;
+                // A division starts again from the state at 1.
+                if reached.is_empty() {
+                    last = 1.0;
+                }
+                if last - d > reach {
+                    reached.clear();
+                    return Err(Error::NoConvergence {
+                        method: "test",
+                        iterations: 1,
+                        residual: last - d,
+                    });
+                }
+                last = d;
+                reached.push(d);
+                Ok((d, from.clone()))
+            };
+            let failed = Error::NoConvergence {
+                method: "whole step",
+                iterations: 0,
+                residual: 1.0,
+            };
+            let outcome = substeps(&mut solver, &mut solve, (1.0, 0.0), &warm, failed);
+            match parts {
+                Some(parts) => {
+                    let (depth, _) = outcome.unwrap();
+                    assert_eq!(depth, 0.0);
+                    assert_eq!(reached.len(), parts, "{reached:?}");
+                }
+                None => assert!(
+                    matches!(outcome, Err(Error::NoConvergence { method: "test", .. })),
+                    "{outcome:?}"
+                ),
+            }
+        }
+    }
+}

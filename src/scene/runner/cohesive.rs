@@ -83,9 +83,10 @@ impl Runner<'_> {
         };
         let mut lowest = recorded.force;
         let mut pending: Option<Probe<Kept>> = None;
-        let limit = unloading_steps(max_depth, increment);
+        let reach = self.pull_reach(max_depth);
+        let limit = unloading_steps(max_depth, increment, reach);
         for _ in 0..limit {
-            let Some(next) = next_increment(depth, increment, max_depth) else {
+            let Some(next) = next_increment(depth, increment, max_depth, reach) else {
                 break;
             };
             increment = next;

@@ -41,9 +41,10 @@ impl Runner<'_> {
         let mut least_recorded = false;
         let mut held = 0usize;
         let (mut depth, mut increment) = (max_depth, increment);
-        let limit = unloading_steps(max_depth, increment);
+        let reach = self.pull_reach(max_depth);
+        let limit = unloading_steps(max_depth, increment, reach);
         for _ in 0..limit {
-            let Some(next) = next_increment(depth, increment, max_depth) else {
+            let Some(next) = next_increment(depth, increment, max_depth, reach) else {
                 break;
             };
             increment = next;
