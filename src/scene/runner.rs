@@ -368,13 +368,14 @@ impl<'a> Runner<'a> {
     /// punch (1971, J. Phys. D 4, 1186: `sqrt(2 pi dgamma a / E*)`) as wide
     /// as the grid's diagonal on a half-space of the body's softest
     /// material, with the receding work and the cohesive law's range,
-    /// whichever is farther. The punch bounds the others in the JKR limit:
-    /// a bonded cell's surface is pulled up by at least the depth (its
-    /// gap is closed over an indenter whose lowest point is at the depth),
-    /// the punch pulls its whole face by exactly that, and no bonded patch
-    /// on the grid is wider; the factor four covers the rest (layers no
-    /// softer than their softest material, the mesh criterion's stronger
-    /// pull on coarse grids). A sticky flat punch pressed a few nanometres
+    /// whichever is farther. Why the punch bounds the others in the JKR
+    /// limit (an argument, not a proof): a bonded cell's surface is pulled
+    /// up by at least the depth (its gap is closed over an indenter whose
+    /// lowest point is at the depth), the punch pulls its whole face by
+    /// exactly that, and no bonded patch on the grid is wider; the factor
+    /// four covers the rest (layers no softer than their softest material,
+    /// the mesh criterion's stronger pull on coarse grids). A sticky flat
+    /// punch pressed a few micrometres
     /// comes off tens of thousands of loading depths above the surface (in
     /// the reference sweep's cohesive cases: a 0.2 m punch on a 1 kPa
     /// half-space, 5 um deep, at -0.25 m); it had ended in `NoConvergence`
