@@ -43,10 +43,12 @@
 //! surface (its pull-off at 50000), and a cone on a stiff coating over a
 //! base 1350 times softer 36 % weak at the pull-off and, with hysteresis,
 //! 14 % short at the peak, silently (`tests/scene_tilted_punch.rs`,
-//! `tests/scene_cone.rs`). Still open: on a stiff film over a base
-//! thousands of times softer, the zone's first cold solve does not
-//! converge (`NoConvergence` after minutes; BENCHMARKS.md, "The cohesive
-//! zone against exact references on every body").
+//! `tests/scene_cone.rs`). Still open: on a stiff layer over a base a
+//! hundred to thousands of times softer (seeds 7 and 11), the zone's
+//! first cold solve does not converge (`NoConvergence` after minutes;
+//! BENCHMARKS.md, "The cohesive zone against exact references on every
+//! body"). `LAYERED_CONTACT_REFERENCE_PRINT` prints every case's scene,
+//! not only the failing ones'.
 //!
 //! `cargo test --release --test reference_sweep` runs a small seeded budget;
 //! `LAYERED_CONTACT_REFERENCE_CASES=2000` a large one, and
