@@ -78,6 +78,45 @@ const MAX_REREADS: usize = 8;
 /// the drift of the increments.
 const FRESH_ROUNDS: usize = 8;
 
+/// How many of the law's ranges the compressive pressures' displacement
+/// may reach before the inner solves are tightened below a hundredth of
+/// the last change ([`gap_amplification`]). The hundredth leaves that
+/// margin: on the tilted paraboloid's cycle (a half-space, where the
+/// displacement is a few ranges: about half the cells across the contact
+/// over the zone's cells) tightening by the whole displacement cost 13 /
+/// 23 / 39 % more CG iterations at 16 / 32 / 64 cells across and changed
+/// the pull-offs by under 5e-4 of themselves. On a stiff film over a far
+/// softer base (1.6e4 ranges) tightening by a sixteenth of it instead of
+/// the whole took 4 to 5 times the iterations a loading step
+/// (`BENCHMARKS.md`, "A stiff film over a far softer base"): the factor is
+/// the displacement less this margin.
+const GAP_MARGIN: f64 = 16.0;
+
+/// The tightest relative change an inner solve is asked for (as the fixed
+/// point's own tolerance is at least this).
+const INNER_FLOOR: f64 = 1e-13;
+
+/// The factor by which an inner solve's relative change must fall below
+/// the one its gaps need on a body where the contact's held tensions move
+/// the surface by many of the law's ranges: `max |K t| / rho` less
+/// [`GAP_MARGIN`] - 1, at least 1.
+///
+/// Inside the contact every cell carries the law's peak tension, which the
+/// compressive part `p'` cancels. An inner solve to a relative change `r`
+/// leaves its gaps wrong by about `r` times the displacement of `p'`, which
+/// is about the tensions' own, `max |K t|`; a round's tensions need them
+/// right to a part of the law's range `rho`. On a half-space `max |K t|` is
+/// a few ranges. On a stiff film over a far softer base it is thousands (a
+/// 4.3 GPa film 3.2 um thick over a 0.92 MPa base, a sphere at depth 0:
+/// `max |K t|` 1.6e4 ranges): inner solves to a hundredth of the change
+/// left the gaps wrong by many ranges, so the rounds never settled, and
+/// the fixed point ran to its round limit with the change at the law's
+/// peak (`BENCHMARKS.md`, "A stiff film over a far softer base").
+fn gap_amplification(kt: &[f64], range: f64) -> f64 {
+    let reach = kt.iter().fold(0.0f64, |m, k| m.max(k.abs()));
+    (reach / range - (GAP_MARGIN - 1.0)).max(1.0)
+}
+
 /// Fixed-point rounds of one cohesive solve before it gives up.
 pub(super) const MAX_ROUNDS: usize = 2000;
 
@@ -272,8 +311,11 @@ impl ContactSolver {
                 contact: None,
             };
             // Inner solves only as tight as the fixed point has come: a
-            // hundredth of the last change of the tensions.
-            let inner = tolerance.max(1e-2 * change.min(scale) / scale);
+            // hundredth of the last change of the tensions, tighter where
+            // the compressive pressures' displacement dwarfs the law's
+            // range (`gap_amplification`).
+            let loose = tolerance.max(1e-2 * change.min(scale) / scale);
+            let inner = (loose / gap_amplification(&kt, receding.range)).max(INNER_FLOOR);
             self.params.tolerance = inner;
             // The fixed point follows the inner solves' last digits: a
             // double-precision preconditioner (`Preconditioner`) and
@@ -337,7 +379,7 @@ impl ContactSolver {
                 caps[c] = law.peak;
                 change = f64::max(change, (mapped[c] - tension[c]).abs());
             }
-            let converged = change <= tolerance * scale && inner <= tolerance;
+            let converged = change <= tolerance * scale && loose <= tolerance;
             let settled = change <= SETTLED_CHANGE.max(tolerance) * scale;
             if (converged || (settled && !checked))
                 && zone.curvature_correction > 0.0
