@@ -481,3 +481,55 @@ fn a_cold_solve_on_a_stiff_film_over_a_far_softer_base_settles() {
     assert!(error.abs() < 0.025, "force at depth 0 {error:e}");
     assert!(!curve.caveats.is_empty());
 }
+
+/// A sphere with hysteresis (2.2e-5 / 3.4e-5 J/m^2) on a 3 kPa layer
+/// (`nu` 0.49, 0.16 mm, under two cells thick at 16 cells across the
+/// pull-off contact) resting on a base 124 times softer, cycled through
+/// the cohesive zone: before 2026-12-02 the first solve's rounds fell into
+/// a cycle of eight (the contact had grown for six rounds and then stayed,
+/// which the stepping kept reading as an edge zipping in, at full steps),
+/// and the scene ended in `NoConvergence` after 2000 rounds (a case of the
+/// reference sweep, seed 11). Now the peak force is +3.7 % and the
+/// pull-off +4.1 % off the exact axisymmetric values; the 5 % bound is the
+/// bias of a zone longer than a quarter of the layer, which the scene
+/// reports (-4.6 % with the zone the whole thickness, on a rigid base).
+#[test]
+fn a_layer_under_two_cells_thick_on_a_far_softer_base_is_cycled() {
+    let scene = Scene {
+        substrate: SubstrateSpec::LayerRestingOnElasticBase {
+            youngs_modulus: 2.9833060309763073e3,
+            poisson_ratio: 0.49,
+            thickness: 1.638695504925234e-4,
+            base_youngs_modulus: 2.4079031600936393e1,
+            base_poisson_ratio: 0.2,
+        },
+        indenter: IndenterSpec::Sphere {
+            radius: 2.1597276153468518e-2,
+        },
+        adhesion: Adhesion::Hysteresis {
+            loading: 2.1611897749672226e-5,
+            unloading: 3.353249567759468e-5,
+        },
+        protocol: Protocol::Cycle {
+            max_depth: 4.658156645694662e-6,
+            steps: 4,
+        },
+        resolution: Resolution {
+            cells_across: 16,
+            ..Default::default()
+        },
+        solver: SolverSettings {
+            adhesion_method: AdhesionMethod::CohesiveZone,
+            ..Default::default()
+        },
+        ..Scene::default()
+    };
+    let curve = scene.run(&mut |_| {}).unwrap();
+    assert!(!curve.caveats.is_empty());
+    for reference in scene.reference().unwrap() {
+        if let Some(value) = reference.quantity.of(&curve) {
+            let error = value / reference.value - 1.0;
+            assert!(error.abs() < 0.05, "{:?} {error:e}", reference.quantity);
+        }
+    }
+}

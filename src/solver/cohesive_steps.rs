@@ -97,15 +97,19 @@ impl Stepper {
         // an edge zipping in (or peeling off) cell by cell, the quasi-static
         // jump resolved: progress, though the largest change of the
         // tensions stays that of the cells at the front.
+        // A round whose contact did not move ends the row: before
+        // 2026-12-02 it left the count as it was, so a contact that had
+        // grown for six rounds and then stayed counted every later round as
+        // progress, at full steps, and a cycle of the rounds never damped (a
+        // film on a far softer base ran its 2000 rounds in an eight-round
+        // cycle with the change at 1 to 5 % of the law's peak).
         let trend = contact_cells.cmp(&self.last_contact);
-        if trend != Ordering::Equal {
-            self.zip = if trend == self.last_trend {
-                self.zip + 1
-            } else {
-                0
-            };
-            self.last_trend = trend;
-        }
+        self.zip = if trend != Ordering::Equal && trend == self.last_trend {
+            self.zip + 1
+        } else {
+            0
+        };
+        self.last_trend = trend;
         let zipping = self.zip >= ZIPPING;
         self.last_contact = contact_cells;
         // Damped steps whose change grows round after round are leaving an
@@ -149,5 +153,38 @@ impl Stepper {
             // the law gives zero: cells out of reach).
             *t = if *m == 0.0 { 0.0 } else { t.clamp(-cap, 0.0) };
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A contact that grew for twice [`ZIPPING`] rounds and then stayed
+    /// while the change cycled between two values: after two rounds that
+    /// set the smallest change and [`STALL`] that do not, the steps are
+    /// damped by half (40 rounds: one halving). Before 2026-12-02 a round
+    /// whose contact did not move kept the row of growing rounds, so every
+    /// later round counted as zipping progress and the damping stayed 1 (a
+    /// film on a far softer base cycled for 2000 rounds).
+    #[test]
+    fn a_contact_that_stopped_growing_is_damped_when_the_rounds_stall() {
+        let mut stepper = Stepper::new();
+        let caps = [1.0];
+        let mut tension = [-0.5];
+        let mut previous = f64::INFINITY;
+        let grown = 100 + 2 * ZIPPING;
+        for round in 0..2 * ZIPPING {
+            let change = 0.5 / (round + 1) as f64;
+            stepper.next(change, previous, 100 + round, &mut tension, &[-0.6], &caps);
+            previous = change;
+        }
+        assert_eq!(stepper.damping, 1.0);
+        for round in 0..40 {
+            let change = if round % 2 == 0 { 0.2 } else { 0.1 };
+            stepper.next(change, previous, grown, &mut tension, &[-0.6], &caps);
+            previous = change;
+        }
+        assert_eq!(stepper.damping, 0.5);
     }
 }
