@@ -436,7 +436,10 @@
 //! resolved) and damped rounds whose change grows eight times in a row (an
 //! unstable equilibrium being left) count as progress and double the
 //! damping back towards full steps: damped to 1/64, a rough film's cycle
-//! at 256^2 crept at a few cells a round and gave up. A cell in contact at
+//! at 256^2 crept at a few cells a round and gave up. A round whose contact
+//! does not move ends such a row (until 2026-12-02 it did not, and a
+//! contact that had grown and then stayed cycled at full steps to the
+//! round limit on a layer over a base 124 times softer). A cell in contact at
 //! an equilibrium bonds and holds with the receding work of adhesion until
 //! its gap passes the receding range; an unbonded cell pulls with the
 //! advancing one (adhesion hysteresis). Within one solve a cell is bonded
@@ -464,6 +467,14 @@
 //! tolerance buys a cheaper cycle at a known price (`BENCHMARKS.md`, "What
 //! the tolerance buys": the pull-off's change and the cycle's iterations
 //! from `1e-8` to `1e-3`, and what the same depths cost without adhesion).
+//! Each round's inner solve goes to a hundredth of the last change, and
+//! tighter by the displacement of the contact's held tensions in the law's
+//! ranges, less 15, where that displacement is larger: the law's peak
+//! inside the contact and the compressive part that cancels it move a
+//! stiff film over a far softer base by thousands of ranges (1.6e4 for a
+//! 4.3 GPa film over a 0.92 MPa base), and a looser inner solve left the
+//! gaps wrong by tens of ranges, so the rounds never settled
+//! (`BENCHMARKS.md`, "A stiff film over a far softer base").
 //!
 //! What it converges to. A zone of finite length `l` biases the pull-off
 //! at first order in `l / a` (`a` the contact's size) where the edge is
