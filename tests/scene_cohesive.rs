@@ -430,6 +430,33 @@ fn a_force_cycle_whose_pull_off_is_out_of_reach_is_refused_before_solving() {
         .unwrap();
 }
 
+/// A sphere of `radius` on `substrate` through the cohesive zone, with
+/// `cells` cells across its pull-off contact (the reference sweep's scenes
+/// of the two tests below).
+fn sphere_through_the_zone(
+    substrate: SubstrateSpec,
+    radius: f64,
+    adhesion: Adhesion,
+    protocol: Protocol,
+    cells: usize,
+) -> Scene {
+    Scene {
+        substrate,
+        indenter: IndenterSpec::Sphere { radius },
+        adhesion,
+        protocol,
+        resolution: Resolution {
+            cells_across: cells,
+            ..Default::default()
+        },
+        solver: SolverSettings {
+            adhesion_method: AdhesionMethod::CohesiveZone,
+            ..Default::default()
+        },
+        ..Scene::default()
+    }
+}
+
 /// A sphere (R 53 um) on a 4.3 GPa film 3.2 um thick over a base 4700
 /// times softer (0.92 MPa), `dgamma` 11.6 J/m^2, solved once at depth 0
 /// from no contact through the cohesive zone (8 cells across the pull-off
@@ -445,31 +472,21 @@ fn a_force_cycle_whose_pull_off_is_out_of_reach_is_refused_before_solving() {
 /// cents.
 #[test]
 fn a_cold_solve_on_a_stiff_film_over_a_far_softer_base_settles() {
-    let scene = Scene {
-        substrate: SubstrateSpec::LayerOnElasticBase {
+    let scene = sphere_through_the_zone(
+        SubstrateSpec::LayerOnElasticBase {
             youngs_modulus: 4.325619078675405e9,
             poisson_ratio: 0.2,
             thickness: 3.157992190517384e-6,
             base_youngs_modulus: 9.194112283532594e5,
             base_poisson_ratio: 0.0,
         },
-        indenter: IndenterSpec::Sphere {
-            radius: 5.3311857979683405e-5,
-        },
-        adhesion: Adhesion::Constant {
+        5.3311857979683405e-5,
+        Adhesion::Constant {
             work_of_adhesion: 1.1608904617690778e1,
         },
-        protocol: Protocol::Depth { depth: 0.0 },
-        resolution: Resolution {
-            cells_across: 8,
-            ..Default::default()
-        },
-        solver: SolverSettings {
-            adhesion_method: AdhesionMethod::CohesiveZone,
-            ..Default::default()
-        },
-        ..Scene::default()
-    };
+        Protocol::Depth { depth: 0.0 },
+        8,
+    );
     let references = scene.reference().unwrap();
     let exact = references
         .iter()
@@ -495,35 +512,25 @@ fn a_cold_solve_on_a_stiff_film_over_a_far_softer_base_settles() {
 /// reports (-4.6 % with the zone the whole thickness, on a rigid base).
 #[test]
 fn a_layer_under_two_cells_thick_on_a_far_softer_base_is_cycled() {
-    let scene = Scene {
-        substrate: SubstrateSpec::LayerRestingOnElasticBase {
+    let scene = sphere_through_the_zone(
+        SubstrateSpec::LayerRestingOnElasticBase {
             youngs_modulus: 2.9833060309763073e3,
             poisson_ratio: 0.49,
             thickness: 1.638695504925234e-4,
             base_youngs_modulus: 2.4079031600936393e1,
             base_poisson_ratio: 0.2,
         },
-        indenter: IndenterSpec::Sphere {
-            radius: 2.1597276153468518e-2,
-        },
-        adhesion: Adhesion::Hysteresis {
+        2.1597276153468518e-2,
+        Adhesion::Hysteresis {
             loading: 2.1611897749672226e-5,
             unloading: 3.353249567759468e-5,
         },
-        protocol: Protocol::Cycle {
+        Protocol::Cycle {
             max_depth: 4.658156645694662e-6,
             steps: 4,
         },
-        resolution: Resolution {
-            cells_across: 16,
-            ..Default::default()
-        },
-        solver: SolverSettings {
-            adhesion_method: AdhesionMethod::CohesiveZone,
-            ..Default::default()
-        },
-        ..Scene::default()
-    };
+        16,
+    );
     let curve = scene.run(&mut |_| {}).unwrap();
     assert!(!curve.caveats.is_empty());
     let mut compared = 0;
