@@ -679,6 +679,24 @@
 //! The energy balance, automatic for these axisymmetric scenes, stays
 //! within 0.06 % from 64 cells.
 //!
+//! The law's range `rho = 2 sqrt(dgamma l / E*)` makes the zone span its
+//! `l` when the body is as stiff as `E*` at the zone's wavelengths: the
+//! law's stiffness `2 dgamma / rho^2` balances the body's `E* q / 2` at `q
+//! = 1 / l`. Under a zone long against a stiff top layer over a softer one
+//! the body is softer there than its surface, and a law built with the
+//! surface's `E*` has a zone shorter in proportion, down to a fraction of
+//! a cell, where the lattice traps the edge. Since 2026-12-02 the law takes
+//! the least of `2 / (q u_z(q))` over the wavelengths `2 pi / q` no longer
+//! than the zone (Perriot & Barthel 2004's `u_z`,
+//! [`FourierCompliance`](crate::kernel::FourierCompliance)), which is the
+//! surface's `E*` on a half-space and wherever the layers stiffen with
+//! depth. Two scenes of the cohesive reference sweep (seed 13), a 4.85 GPa
+//! plate 37.6 um thick over a 13.2 MPa layer and a 1 kPa layer over a 2.7
+//! Pa one, 16 cells across: peak forces -69 % and -56 %, pull-offs +114 %
+//! and +97 % before, within 0.4 % and 1.8 % after
+//! (`tests/scene_cohesive_soft_below.rs`; `BENCHMARKS.md`, "The zone's
+//! modulus").
+//!
 //! Under force control (`force` and `force_cycle` protocols) the cohesive
 //! zone takes each step by one fixed point under force control from the
 //! path's last equilibrium

@@ -46,7 +46,7 @@ use crate::indenter::Indenter;
 
 #[cfg(doc)]
 use super::cohesive_law::ZONE_LAYER_FRACTION;
-use super::cohesive_law::{CohesiveZone, Law};
+use super::cohesive_law::{zone_modulus, CohesiveZone, Law};
 use super::cohesive_smoothing::ZoneSmoothing;
 use super::cohesive_steps::Stepper;
 use super::polonsky_keer::{Control, StartDisplacement};
@@ -198,12 +198,19 @@ impl ContactSolver {
         let mut depth = depth;
         let spacing = self.grid().spacing();
         let area = self.grid().cell_area();
-        let modulus = self.surface_contact_modulus;
         // The zone within a quarter of the top layer.
         let zone = &CohesiveZone {
             zone_cells: zone.cells_on(spacing, self.substrate.top_thickness()),
             ..*zone
         };
+        // The body's modulus at the zone's length, so that the zone spans
+        // its cells on any body.
+        let modulus = zone_modulus(
+            &self.compliance,
+            self.surface_contact_modulus,
+            zone.zone_cells * spacing,
+            self.substrate.top_thickness(),
+        )?;
         let grid_area = self.grid().len() as f64 * area;
         let advancing = Law::new(zone, zone.advancing, spacing, modulus, grid_area)?;
         let receding = Law::new(zone, zone.receding, spacing, modulus, grid_area)?;
