@@ -770,6 +770,17 @@
 //! grid converges, at order 1.03, to a pull-off 37 % too strong; at 45
 //! degrees to within 1 %).
 //!
+//! The criterion's `E1*` is the surface's, a half-space's at the cell's
+//! scale. On a body softer there (a stiff layer a few cells thick over a
+//! far softer one) no modulus stands in: a 4.85 GPa plate 37.6 um thick
+//! over a 13.2 MPa layer on 131 um cells gave a pull-off 12.3 times the
+//! exact one, and with the body's modulus at wavelengths of one, two or
+//! four cells instead +582, +62 and -42 %. Since 2026-12-02 the criterion
+//! refuses, with [`Error::InvalidParameter`](crate::Error::InvalidParameter)
+//! naming the ratio, a body whose `E*` at wavelengths up to four cells is
+//! under 0.95 of its surface's (films on stiffer bases, the reference
+//! experiment's included, are never softer below).
+//!
 //! Its curves carry [`Caveat::MeshDependentAdhesion`](crate::scene::Caveat::MeshDependentAdhesion),
 //! which the tool prints and Python returns in `Curve.caveats`. It is the
 //! method for contacts that split into patches, which the energy balance
