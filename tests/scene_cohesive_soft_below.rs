@@ -56,7 +56,7 @@ const PLATE: &str = "kind = \"stack\"\nlayers = [ { youngs_modulus = 4.851901410
 /// peak force -69.2 %, its contact radius -17.9 %, pull-off +113.8 %. Now
 /// +0.38, -3.0 and +1.57 % (2026-12-02). The bounds: 1 % on the peak
 /// force and 2.5 % on the pull-off (the zone longer than a quarter of the
-/// top layer, the caveat's bias of per cents; +2.4 and +2.7 % at 64 cells,
+/// top layer, the caveat's bias of per cents; -2.4 and +2.9 % at 64 cells,
 /// the zone still 1.75 times the layer), 4 % on the radius (a cell is 11 %
 /// of it).
 #[test]

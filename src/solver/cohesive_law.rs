@@ -287,6 +287,9 @@ impl CohesiveZone {
 /// decade; a modulus softer than the surface's by less than `1e-9` of it
 /// (rounding) is the surface's.
 ///
+/// The mesh-dependent criterion asks the same of wavelengths up to four
+/// cells before it solves (`src/solver/adhesive.rs`).
+///
 /// # Errors
 /// [`Error::Internal`] where the compliance there is not finite and
 /// positive (a body the kernel builds always has one).
@@ -302,20 +305,20 @@ pub(super) fn zone_modulus(
         return Ok(surface);
     };
     let last = (1e3 * first).max(100.0 / h);
-    // At most 16 decades (256 samples): a top layer 1e13 times thinner
-    // than the zone is its surface material's to 1e-3 from 1e3 q0 on.
+    // At most 16 decades (257 samples), which reach a top layer 1e-14 of
+    // the zone's length thin.
     let decades = (last / first).log10().clamp(0.0, 16.0);
     let samples = (decades * PER_DECADE).ceil() as usize;
     let mut modulus = surface;
     for k in 0..=samples {
         let q = first * 10f64.powf(k as f64 / PER_DECADE);
         let seen = 2.0 / (q * compliance.eval(q));
-        // Softer than the surface by rounding only (a layer over stiffer
-        // ones at short wavelengths) leaves the surface's modulus as it is.
         if seen.is_nan() {
             modulus = seen;
             break;
         }
+        // Softer than the surface by rounding only (a layer over stiffer
+        // ones at short wavelengths) leaves the surface's modulus as it is.
         if seen < surface * (1.0 - 1e-9) {
             modulus = modulus.min(seen);
         }
@@ -324,9 +327,9 @@ pub(super) fn zone_modulus(
         Ok(modulus)
     } else {
         Err(Error::Internal {
-            what: "cohesive zone",
+            what: "the body's modulus at the grid's scale",
             detail: format!(
-                "the body's compliance at wavelengths under the zone's length {length:e} m \
+                "the body's compliance at wavelengths under {length:e} m \
                  gives a modulus of {modulus:e} Pa"
             ),
         })
