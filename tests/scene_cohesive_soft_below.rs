@@ -54,8 +54,8 @@ const PLATE: &str = "kind = \"stack\"\nlayers = [ { youngs_modulus = 4.851901410
 /// over a 13.2 MPa layer 14 um thick on a 7.9 GPa base, 131 um cells: at
 /// the zone's 263 um the body is 8.6 times softer than its surface. Before:
 /// peak force -69.2 %, its contact radius -17.9 %, pull-off +113.8 %. Now
-/// +0.38, -3.0 and +1.57 % (2026-12-02). The bounds: 1 % on the peak
-/// force and 2.5 % on the pull-off (the zone longer than a quarter of the
+/// +0.38, -3.0 and +1.57 % (2026-12-02). The bounds: 2.5 % on the peak
+/// force and the pull-off (the zone longer than a quarter of the
 /// top layer, the caveat's bias of per cents; -2.4 and +2.9 % at 64 cells,
 /// the zone still 1.75 times the layer), 4 % on the radius (a cell is 11 %
 /// of it).
@@ -68,7 +68,7 @@ fn a_stiff_plate_over_a_far_softer_layer_cycles_to_its_exact_values() {
         2.1951840646478546e-5,
     );
     let [peak, radius, pull_off] = errors(&scene);
-    assert!(peak.abs() < 0.01, "peak force {peak:e}");
+    assert!(peak.abs() < 0.025, "peak force {peak:e}");
     assert!(radius.abs() < 0.04, "peak contact radius {radius:e}");
     assert!(pull_off.abs() < 0.025, "pull-off {pull_off:e}");
 }
@@ -89,7 +89,7 @@ fn a_layer_over_a_far_softer_one_cycles_to_its_exact_values() {
         5.011872336272722e-3,
     );
     let [peak, radius, pull_off] = errors(&scene);
-    assert!(peak.abs() < 0.01, "peak force {peak:e}");
+    assert!(peak.abs() < 0.025, "peak force {peak:e}");
     assert!(radius.abs() < 0.04, "peak contact radius {radius:e}");
     assert!(pull_off.abs() < 0.025, "pull-off {pull_off:e}");
 }
