@@ -458,6 +458,10 @@ fn next_increment(depth: f64, increment: f64, max_depth: f64, reach: f64) -> Opt
     }
 }
 
+// The message of `still_attached` spells the reach out (its `method` is
+// a `&'static str`): it must follow the constant.
+const _: () = assert!(MAX_PULL_DEPTHS == 4096.0);
+
 /// The error of an unloading that still holds past its reach
 /// ([`Runner::pull_reach`]).
 fn still_attached(steps: usize, depth: f64) -> Error {
