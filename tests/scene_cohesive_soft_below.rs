@@ -96,7 +96,7 @@ fn a_layer_over_a_far_softer_one_cycles_to_its_exact_values() {
 
 /// The plate through the mesh-dependent criterion: at wavelengths of four
 /// 131 um cells the body's `E*` is 0.041 of its surface's, and the
-/// criterion's pull-off came out 12.3 times the exact one (+1234 %, its
+/// criterion's pull-off came out 13.3 times the exact one (+1234 %, its
 /// caveat promising at most about 40 %). Refused, naming the ratio.
 #[test]
 fn the_mesh_criterion_refuses_a_body_far_softer_at_the_cells_scale() {

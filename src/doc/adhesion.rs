@@ -773,7 +773,7 @@
 //! The criterion's `E1*` is the surface's, a half-space's at the cell's
 //! scale. On a body softer there (a stiff layer a few cells thick over a
 //! far softer one) no modulus stands in: a 4.85 GPa plate 37.6 um thick
-//! over a 13.2 MPa layer on 131 um cells gave a pull-off 12.3 times the
+//! over a 13.2 MPa layer on 131 um cells gave a pull-off 13.3 times the
 //! exact one, and with the body's modulus at wavelengths of one, two or
 //! four cells instead +582, +62 and -42 %. Since 2026-12-02 the criterion
 //! refuses, with [`Error::InvalidParameter`](crate::Error::InvalidParameter)

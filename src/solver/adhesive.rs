@@ -27,7 +27,7 @@ impl ContactSolver {
     /// scale than its surface (a stiff layer over a far softer one, under
     /// a few cells thick). On a 4.85 GPa plate 37.6 um thick over a 13.2
     /// MPa layer, 131 um cells (the cohesive reference sweep's seed 13) the
-    /// criterion gave a pull-off 12.3 times the exact one, on a 1 kPa layer
+    /// criterion gave a pull-off 13.3 times the exact one, on a 1 kPa layer
     /// over a 2.7 Pa one 7.3 times; with the modulus of the wavelengths of
     /// one, two or four cells in the critical stress instead, +582, +62 and
     /// -42 % (`BENCHMARKS.md`, "The zone's modulus"): no modulus at the
