@@ -402,31 +402,36 @@ fn a_cold_start_at_first_touch_zips_in_to_the_jkr_contact() {
     // its range in, and the edge zips out over some 38 cells, a few a
     // round, while the largest change of the tensions stays at the front's.
     // Measured at 64 cells across the pull-off contact: the force -0.23 %
-    // off JKR's at this depth, in 345 CG iterations; the closed contact's
-    // radius 1.9 cells inside JKR's (the zone, 4 cells, lies outside it).
+    // off JKR's at this depth. The closed contact's radius lies 1.4, 1.5,
+    // 1.9 and 2.1 cells (14.4, 7.8, 4.9, 2.7 %) inside JKR's at 16, 32, 64
+    // and 128 cells (the zone, 4 cells, outside it); the equivalent
+    // crack's (the closed cells and 0.43 of the zone's, `EQUIVALENT_TIP`)
+    // 0.21, 0.31, 0.18 and 0.13 cells outside (+2.2, +1.6, +0.46,
+    // +0.17 %): within a fraction of a cell, so first order.
     let jkr = JkrSphere::new(&rubber(), RADIUS, WORK).unwrap();
     let a = jkr.pull_off_contact_radius();
-    let (delta, grid) = sphere_grid(a, 64);
-    let mut solver = rubber_solver(&grid, Boundary::Isolated);
-    let zone = CohesiveZone::new(WORK, WORK).unwrap();
-    let sphere = Sphere::new(RADIUS).unwrap();
-    let (solution, _) = solver
-        .solve_depth_cohesive(&sphere, 0.0, &zone, None, &mut ())
-        .unwrap();
-    let radius = jkr.contact_radius_at_depth(0.0).unwrap();
     let estar = rubber().contact_modulus();
+    let radius = jkr.contact_radius_at_depth(0.0).unwrap();
     let expected = (2.0 * PI * WORK * RADIUS * RADIUS / estar).cbrt();
     assert!((radius / expected - 1.0).abs() < 1e-12);
-    let error = solution.force / jkr.force(radius) - 1.0;
-    println!(
-        "{error} {} {} {}",
-        solution.contact_radius / radius - 1.0,
-        solution.iterations,
-        radius / a
-    );
-    assert!(error.abs() < 5e-3, "{error}");
-    let inside = (radius - solution.contact_radius) / delta;
-    assert!((0.0..4.0).contains(&inside), "{inside} cells: {solution:?}");
+    let zone = CohesiveZone::new(WORK, WORK).unwrap();
+    let sphere = Sphere::new(RADIUS).unwrap();
+    for cells in [32, 64] {
+        let (delta, grid) = sphere_grid(a, cells);
+        let mut solver = rubber_solver(&grid, Boundary::Isolated);
+        let (solution, _) = solver
+            .solve_depth_cohesive(&sphere, 0.0, &zone, None, &mut ())
+            .unwrap();
+        if cells == 64 {
+            let error = solution.force / jkr.force(radius) - 1.0;
+            assert!(error.abs() < 5e-3, "{error}");
+        }
+        let outside = (solution.contact_radius - radius) / delta;
+        assert!(
+            outside.abs() < 0.5,
+            "{cells}: {outside} cells: {solution:?}"
+        );
+    }
 }
 
 #[test]

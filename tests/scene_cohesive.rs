@@ -506,10 +506,14 @@ fn a_cold_solve_on_a_stiff_film_over_a_far_softer_base_settles() {
 /// a cycle of eight (the contact had grown for six rounds and then stayed,
 /// which the stepping kept reading as an edge zipping in, at full steps),
 /// and the scene ended in `NoConvergence` after 2000 rounds (a case of the
-/// reference sweep, seed 11). Now the peak force is +3.7 % and the
-/// pull-off +4.1 % off the exact axisymmetric values; the 5 % bound is the
+/// reference sweep, seed 11). Now the peak force is +3.8 % and the
+/// pull-off +3.9 % off the exact axisymmetric values; the 5 % bound is the
 /// bias of a zone longer than a quarter of the layer, which the scene
 /// reports (-4.6 % with the zone the whole thickness, on a rigid base).
+/// The peak's contact radius is +5.8 % (the closed cells and 0.43 of the
+/// zone's open cells, `EQUIVALENT_TIP`; +2.8, +2.4, +1.1 % at 32, 64, 128
+/// cells, with the peak force +4.2, +5.0, +1.9 %), bounded by the
+/// reference sweep's 6 % for a radius at 16 cells.
 #[test]
 fn a_layer_under_two_cells_thick_on_a_far_softer_base_is_cycled() {
     let scene = sphere_through_the_zone(
@@ -537,7 +541,9 @@ fn a_layer_under_two_cells_thick_on_a_far_softer_base_is_cycled() {
     for reference in scene.reference().unwrap() {
         if let Some(value) = reference.quantity.of(&curve) {
             let error = value / reference.value - 1.0;
-            assert!(error.abs() < 0.05, "{:?} {error:e}", reference.quantity);
+            let radius = reference.quantity == layered_contact::scene::Quantity::PeakContactRadius;
+            let bound = if radius { 0.06 } else { 0.05 };
+            assert!(error.abs() < bound, "{:?} {error:e}", reference.quantity);
             compared += 1;
         }
     }

@@ -44,6 +44,7 @@ use std::borrow::Cow;
 use crate::error::{Error, Result};
 use crate::indenter::Indenter;
 
+use super::cohesive_area::{open_zone_cells, EQUIVALENT_TIP};
 #[cfg(doc)]
 use super::cohesive_law::ZONE_LAYER_FRACTION;
 use super::cohesive_law::{zone_modulus, CohesiveZone, Law};
@@ -149,7 +150,9 @@ impl ContactSolver {
     ///
     /// The solution's pressure includes the tension of the open zone
     /// (cells out of contact within the law's range); its contact cells
-    /// are those whose gap is closed. On a layered body the zone is at
+    /// are those whose gap is closed, and its contact area adds
+    /// [`EQUIVALENT_TIP`] of the open zone's cells around them (the
+    /// equivalent crack's). On a layered body the zone is at
     /// most [`ZONE_LAYER_FRACTION`] of the top layer's thickness
     /// ([`CohesiveZone::cells_on`]); where that is under two cells
     /// ([`CohesiveZone::resolves_layer`] false) the pull-off is biased by
@@ -432,7 +435,15 @@ impl ContactSolver {
                     *u += k;
                 }
                 let residual = change / scale;
-                let solution = self.solution(&total, depth, iterations, residual, Some(&contact));
+                let mut solution =
+                    self.solution(&total, depth, iterations, residual, Some(&contact));
+                // The area of the equivalent crack: the closed cells and
+                // the zone's open cells up to its tip.
+                let periodic = self.operator.boundary() == crate::grid::Boundary::Periodic;
+                let open =
+                    open_zone_cells(&contact, &tension, (grid.rows(), grid.columns()), periodic);
+                solution.contact_area += EQUIVALENT_TIP * open as f64 * area;
+                solution.contact_radius = (solution.contact_area / std::f64::consts::PI).sqrt();
                 super::check_solution(&solution)?;
                 return Ok((
                     solution,

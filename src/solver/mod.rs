@@ -58,6 +58,7 @@ mod adhesive;
 mod anderson;
 mod cg_ends;
 mod cohesive;
+mod cohesive_area;
 mod cohesive_force;
 mod cohesive_law;
 mod cohesive_pull_off;
@@ -87,6 +88,7 @@ use preconditioning::Preconditioner;
 
 use workspace::Workspace;
 
+pub use cohesive_area::EQUIVALENT_TIP;
 pub use cohesive_law::{
     CohesiveZone, COHESIVE_ZONE_CELLS, CURVATURE_CORRECTION, ZONE_LAYER_FRACTION,
 };

@@ -108,11 +108,16 @@ pub struct Solution {
     /// First moments of the pressure about the indenter axis,
     /// `(sum p x Delta^2, sum p y Delta^2)`, N m.
     pub moment: (f64, f64),
-    /// Contact area: cells in contact times the cell area, m^2.
+    /// Contact area: cells in contact times the cell area, m^2. Through a
+    /// cohesive zone ([`ContactSolver::solve_depth_cohesive`](super::ContactSolver::solve_depth_cohesive)),
+    /// the area of the equivalent crack: the closed cells and
+    /// [`EQUIVALENT_TIP`](super::EQUIVALENT_TIP) of the zone's open cells
+    /// around them.
     pub contact_area: f64,
     /// Radius of the circle of equal area, `sqrt(A / pi)`, m.
     pub contact_radius: f64,
-    /// Number of cells in contact.
+    /// Number of cells in contact (through a cohesive zone, the closed
+    /// ones).
     pub contact_cells: usize,
     /// Whether the contact touches the outer ring of cells of an isolated
     /// grid: unless the indenter itself ends there (a punch as wide as the
