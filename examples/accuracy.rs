@@ -264,9 +264,9 @@ fn sphere_pull_off_cases() -> Result<Vec<Case>> {
             let error = exact
                 .flat_punch(pull_off.contact_radius)
                 .map_or(0.0, |p| p.convergence());
-            Ok((pull_off.force, depth, error))
+            Ok((pull_off.force, pull_off.contact_radius, depth, error))
         });
-        let (pull_off, depth, error) = exact?;
+        let (pull_off, radius, depth, error) = exact?;
         for method in [
             AdhesionMethod::EnergyBalance,
             AdhesionMethod::CohesiveZone,
@@ -297,6 +297,19 @@ fn sphere_pull_off_cases() -> Result<Vec<Case>> {
                 },
                 ..Scene::default()
             };
+            if method == AdhesionMethod::CohesiveZone && label == "half_space" {
+                // The zone's contact radius at the peak (1.5 pull-off
+                // radii), read as its equivalent crack's: first order.
+                cases.push(Case {
+                    name: "jkr_sphere_peak_radius/half_space/cohesive",
+                    scene: scene.clone(),
+                    quantity: Quantity::PeakContactRadius,
+                    reference: 1.5 * radius,
+                    exact: (seconds, error),
+                    cells: (16, 256),
+                    order: 1.0,
+                });
+            }
             cases.push(Case {
                 name: Box::leak(format!("jkr_sphere_pull_off/{label}/{name}").into_boxed_str()),
                 scene,
