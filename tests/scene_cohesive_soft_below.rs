@@ -74,6 +74,29 @@ fn a_stiff_plate_over_a_far_softer_layer_cycles_to_its_exact_values() {
     assert_within_the_caveat(&plate());
 }
 
+/// The plate at 32 cells across: an unloading step's rounds came to
+/// 4.0e-8 of the law's peak, then a mode of the rounds grew back by about
+/// 1.5 % a round, and the scene ended in `NoConvergence` after 2000 rounds
+/// (2026-12-02). The fixed point now hands back its closest round within
+/// 1e-6 of the peak: peak force -7.30 %, its contact radius -0.77 %,
+/// pull-off +5.08 % (2026-12-03; +0.38 / +1.57 % at 16 cells and -2.38 /
+/// +2.91 % at 64: the zone is two cells, longer than the 37.6 um plate up
+/// to 64 cells, and the caveat, which the scene reports, quotes this
+/// bias). Bounded by 8 %, the caveat's.
+#[test]
+fn the_plate_at_32_cells_comes_back_from_its_closest_round() {
+    let mut scene = plate();
+    scene.resolution.cells_across = 32;
+    let curve = scene.run(&mut |_| {}).unwrap();
+    assert_eq!(curve.caveats, [Caveat::CohesiveZoneLongAgainstLayer]);
+    let references = scene.reference().unwrap();
+    for quantity in [Quantity::PeakForce, Quantity::PullOffForce] {
+        let exact = references.iter().find(|r| r.quantity == quantity).unwrap();
+        let error = quantity.of(&curve).unwrap() / exact.value - 1.0;
+        assert!(error.abs() < 0.08, "{quantity:?} {error:e}");
+    }
+}
+
 /// A sphere (R 0.1 m, 0.87 J/m^2) on a 1 kPa layer 2.3 mm thick over a
 /// layer 370 times softer (2.7 Pa, 0.85 mm) on a 1.6 kPa base. Before:
 /// peak force -56.3 %, contact radius -11.5 %, pull-off +96.9 %. Now

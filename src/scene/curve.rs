@@ -123,8 +123,9 @@ pub enum Caveat {
     /// [`ZONE_LAYER_FRACTION`](crate::solver::ZONE_LAYER_FRACTION)); on a
     /// layer over a far softer one, where the zone's modulus is the
     /// body's at its length, a paraboloid's peak force and pull-off -2.4
-    /// and +2.9 % at 64 cells across (`tests/scene_cohesive_soft_below.rs`),
-    /// a sphere's peak force +5.0 % at 64 and +1.9 % at 128
+    /// and +2.9 % at 64 cells across, -7.3 and +5.1 % at 32
+    /// (`tests/scene_cohesive_soft_below.rs`), a sphere's peak force +5.0 %
+    /// at 64 and +1.9 % at 128
     /// (`BENCHMARKS.md`, "The cohesive contact's area"). A finer grid
     /// resolves it.
     CohesiveZoneLongAgainstLayer,
@@ -173,7 +174,7 @@ impl std::fmt::Display for Caveat {
                  cells, so the two-cell zone is longer than a quarter of its thickness and \
                  the forces may be off by per cents (on a rigid base -0.8 % with the zone \
                  half the thickness, -4.6 % with the whole; over a far softer layer up to \
-                 +5 % measured): refine the grid",
+                 8 % measured): refine the grid",
             ),
             Caveat::CohesiveZoneOnRoughSurface => f.write_str(
                 "cohesive zone on a rough surface: the forces depend on the zone's length and \

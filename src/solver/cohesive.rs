@@ -44,7 +44,10 @@ use std::borrow::Cow;
 use crate::error::{Error, Result};
 use crate::indenter::Indenter;
 
-use super::cohesive_area::{open_zone_cells, EQUIVALENT_TIP};
+use super::cohesive_area::open_zone_cells;
+#[cfg(doc)]
+use super::cohesive_area::EQUIVALENT_TIP;
+use super::cohesive_closest::{Round, CLOSE_ENOUGH};
 #[cfg(doc)]
 use super::cohesive_law::ZONE_LAYER_FRACTION;
 use super::cohesive_law::{zone_modulus, CohesiveZone, Law};
@@ -225,7 +228,7 @@ impl ContactSolver {
         };
         let prior = bonded.clone();
         // The tensions from the gaps of the last pressures at this depth.
-        let mut total = match warm {
+        let total = match warm {
             Some(w) => w.pressure.clone(),
             None => vec![0.0; n],
         };
@@ -276,6 +279,9 @@ impl ContactSolver {
         let mut caps = vec![0.0; n];
         // Curvatures read again and found changed.
         let mut rereads = 0usize;
+        // The round closest to the equilibrium within `CLOSE_ENOUGH` since
+        // the law last changed, handed back if the rounds then leave it.
+        let mut closest: Option<Round> = None;
         // Whether the curvature was read since the tensions settled (or
         // the law last changed).
         let mut checked = false;
@@ -391,6 +397,7 @@ impl ContactSolver {
             }
             let converged = change <= tolerance * scale && loose <= tolerance;
             let settled = change <= SETTLED_CHANGE.max(tolerance) * scale;
+            let mut law_changed = false;
             if (converged || (settled && !checked))
                 && zone.curvature_correction > 0.0
                 && rereads < MAX_REREADS
@@ -412,6 +419,9 @@ impl ContactSolver {
                 if moved > ROOT_TOLERANCE * pull {
                     roots = fresh;
                     rereads += 1;
+                    // Rounds of the old law are not this one's.
+                    closest = None;
+                    law_changed = true;
                     stepper.law_changed();
                     checked = false;
                     if converged {
@@ -423,36 +433,35 @@ impl ContactSolver {
                     }
                 }
             }
-            if converged {
-                // The solution of the tensions just solved for (the law's
-                // tensions at its gaps differ by at most `change`).
-                for c in 0..n {
-                    total[c] = compressive[c] + tension[c];
-                }
-                let ws = &mut self.workspace;
-                ws.profile.copy_from_slice(&base);
-                for (u, k) in ws.displacement.iter_mut().zip(&kt) {
-                    *u += k;
-                }
-                let residual = change / scale;
-                let mut solution =
-                    self.solution(&total, depth, iterations, residual, Some(&contact));
-                // The area of the equivalent crack: the closed cells and
-                // the zone's open cells up to its tip.
+            let closer = closest.as_ref().is_none_or(|r| change < r.residual * scale);
+            if converged || (change <= CLOSE_ENOUGH * scale && closer && !law_changed) {
+                // The round of the tensions just solved for (the law's
+                // tensions at its gaps differ by at most `change`), with
+                // the displacement of its total pressure.
                 let periodic = self.operator.boundary() == crate::grid::Boundary::Periodic;
-                let open =
-                    open_zone_cells(&contact, &tension, (grid.rows(), grid.columns()), periodic);
-                solution.contact_area += EQUIVALENT_TIP * open as f64 * area;
-                solution.contact_radius = (solution.contact_area / std::f64::consts::PI).sqrt();
-                super::check_solution(&solution)?;
-                return Ok((
-                    solution,
-                    WarmStart {
-                        pressure: total,
-                        attached: bonded,
-                        contact: Some(contact),
-                    },
-                ));
+                let round = Round {
+                    total: (0..n).map(|c| compressive[c] + tension[c]).collect(),
+                    displacement: (self.workspace.displacement.iter().zip(&kt))
+                        .map(|(u, k)| u + k)
+                        .collect(),
+                    contact: contact.clone(),
+                    bonded: bonded.clone(),
+                    open: open_zone_cells(
+                        &contact,
+                        &tension,
+                        (grid.rows(), grid.columns()),
+                        periodic,
+                    ),
+                    depth,
+                    residual: change / scale,
+                };
+                if converged {
+                    let ws = &mut self.workspace;
+                    ws.profile.copy_from_slice(&base);
+                    ws.displacement.copy_from_slice(&round.displacement);
+                    return self.cohesive_round_solution(round, iterations);
+                }
+                closest = Some(round);
             }
             for ((d, t), p) in change_of_total.iter_mut().zip(&tension).zip(&compressive) {
                 *d = -(t + p);
@@ -492,6 +501,13 @@ impl ContactSolver {
             pending = true;
         }
         self.workspace.profile.copy_from_slice(&base);
+        if let Some(round) = closest {
+            // The rounds came within `CLOSE_ENOUGH` and left again.
+            self.workspace
+                .displacement
+                .copy_from_slice(&round.displacement);
+            return self.cohesive_round_solution(round, iterations);
+        }
         Err(Error::NoConvergence {
             method: "cohesive zone fixed point",
             iterations: max_rounds,

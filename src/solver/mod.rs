@@ -59,6 +59,7 @@ mod anderson;
 mod cg_ends;
 mod cohesive;
 mod cohesive_area;
+mod cohesive_closest;
 mod cohesive_force;
 mod cohesive_law;
 mod cohesive_pull_off;
