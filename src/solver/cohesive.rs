@@ -164,8 +164,11 @@ impl ContactSolver {
     /// # Errors
     /// [`Error::InvalidParameter`] for a non-finite depth;
     /// [`Error::ShapeMismatch`] for a warm start from another grid;
-    /// [`Error::NoConvergence`] if the fixed point or an inner solve does
-    /// not converge; as [`ContactSolver::solve_depth`] otherwise.
+    /// [`Error::NoConvergence`] if an inner solve does not converge, or the
+    /// fixed point does not and its rounds never came within 1e-6 of the
+    /// law's peak (where they did and left again, the solution is the
+    /// closest round's, its `residual` saying how close); as
+    /// [`ContactSolver::solve_depth`] otherwise.
     pub fn solve_depth_cohesive<I: Indenter + ?Sized>(
         &mut self,
         indenter: &I,
