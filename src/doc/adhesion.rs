@@ -457,7 +457,9 @@
 //! Where the rounds come within 1e-6 of the law's peak and then leave the
 //! equilibrium again (a mode of the plain steps whose factor exceeds one,
 //! which damping does not turn: on a stiff plate over a far softer layer,
-//! down to 4.0e-8 and back up by 1.5 % a round), the solve hands back its
+//! down to 4.0e-8 and back up by 1.5 % a round), a solve under depth
+//! control (under force control that is how a force past the least one
+//! shows) hands back its
 //! closest round since the law last changed, its residual saying how close,
 //! rather than `NoConvergence` after its 2000 rounds; a millionth of the
 //! peak moves the force by at most a millionth of the zone's pull.

@@ -167,7 +167,9 @@ impl ContactSolver {
     /// [`Error::NoConvergence`] if an inner solve does not converge, or the
     /// fixed point does not and its rounds never came within 1e-6 of the
     /// law's peak (where they did and left again, the solution is the
-    /// closest round's, its `residual` saying how close); as
+    /// closest round's, its `residual` saying how close; under force
+    /// control, [`solve_force_cohesive`](Self::solve_force_cohesive),
+    /// never); as
     /// [`ContactSolver::solve_depth`] otherwise.
     pub fn solve_depth_cohesive<I: Indenter + ?Sized>(
         &mut self,
@@ -436,7 +438,11 @@ impl ContactSolver {
                     }
                 }
             }
-            let closer = closest.as_ref().is_none_or(|r| change < r.residual * scale);
+            // Under force control a fixed point that does not converge is
+            // how a force past the least one shows (no equilibrium): only
+            // depth control keeps its closest round.
+            let closer = closest.as_ref().is_none_or(|r| change < r.residual * scale)
+                && matches!(control, Control::Depth(_));
             if converged || (change <= CLOSE_ENOUGH * scale && closer && !law_changed) {
                 // The round of the tensions just solved for (the law's
                 // tensions at its gaps differ by at most `change`), with

@@ -20,7 +20,9 @@ use super::{ContactSolver, Solution, WarmStart};
 /// solve ended in `NoConvergence` after its 2000 rounds. A change of 1e-6
 /// of the peak moves a cell's tension by a millionth of the peak, the
 /// force by at most a millionth of the zone's pull, far below the zone's
-/// discretisation (per cents to tenths of one).
+/// discretisation (per cents to tenths of one). Depth control only: under
+/// force control a fixed point that does not converge is how a force past
+/// the least one shows.
 pub(super) const CLOSE_ENOUGH: f64 = 1e-6;
 
 /// A round of the fixed point: the total pressure (Pa, tensions included),
