@@ -465,9 +465,7 @@ impl ContactSolver {
                     residual: change / scale,
                 };
                 if converged {
-                    let ws = &mut self.workspace;
-                    ws.profile.copy_from_slice(&base);
-                    ws.displacement.copy_from_slice(&round.displacement);
+                    self.workspace.profile.copy_from_slice(&base);
                     return self.cohesive_round_solution(round, iterations);
                 }
                 closest = Some(round);
@@ -512,9 +510,6 @@ impl ContactSolver {
         self.workspace.profile.copy_from_slice(&base);
         if let Some(round) = closest {
             // The rounds came within `CLOSE_ENOUGH` and left again.
-            self.workspace
-                .displacement
-                .copy_from_slice(&round.displacement);
             return self.cohesive_round_solution(round, iterations);
         }
         Err(Error::NoConvergence {

@@ -57,37 +57,22 @@ pub(super) fn open_zone_cells(
         }
     };
     for c in (0..n).filter(|&c| contact[c]) {
-        for m in neighbours(c, rows, columns, periodic).into_iter().flatten() {
+        for m in super::wrapped_neighbours(c, rows, columns, periodic)
+            .into_iter()
+            .flatten()
+        {
             visit(m, &mut seen, &mut stack);
         }
     }
     while let Some(c) = stack.pop() {
-        for m in neighbours(c, rows, columns, periodic).into_iter().flatten() {
+        for m in super::wrapped_neighbours(c, rows, columns, periodic)
+            .into_iter()
+            .flatten()
+        {
             visit(m, &mut seen, &mut stack);
         }
     }
     count
-}
-
-/// The four side neighbours of cell `c` (row-major), wrapped on a periodic
-/// grid, `None` past an isolated grid's edge.
-fn neighbours(c: usize, rows: usize, columns: usize, periodic: bool) -> [Option<usize>; 4] {
-    let (i, j) = (c / columns, c % columns);
-    let step = |k: usize, len: usize, up: bool| -> Option<usize> {
-        match (up, periodic) {
-            (true, _) if k + 1 < len => Some(k + 1),
-            (true, true) => Some(0),
-            (false, _) if k > 0 => Some(k - 1),
-            (false, true) => Some(len - 1),
-            _ => None,
-        }
-    };
-    [
-        step(i, rows, true).map(|i| i * columns + j),
-        step(i, rows, false).map(|i| i * columns + j),
-        step(j, columns, true).map(|j| i * columns + j),
-        step(j, columns, false).map(|j| i * columns + j),
-    ]
 }
 
 #[cfg(test)]

@@ -41,15 +41,18 @@ pub(super) struct Round {
 }
 
 impl ContactSolver {
-    /// The solution and warm start of `round`, whose total pressure's
-    /// displacement is in the workspace (with the profile of the indenter
-    /// alone), after `iterations` CG iterations: the contact area is the
-    /// equivalent crack's ([`EQUIVALENT_TIP`]).
+    /// The solution and warm start of `round` after `iterations` CG
+    /// iterations, with the workspace's profile the indenter's alone: the
+    /// round's displacement goes to the workspace, and the contact area is
+    /// the equivalent crack's ([`EQUIVALENT_TIP`]).
     pub(super) fn cohesive_round_solution(
         &mut self,
         round: Round,
         iterations: usize,
     ) -> Result<(Solution, WarmStart)> {
+        self.workspace
+            .displacement
+            .copy_from_slice(&round.displacement);
         let area = self.grid().cell_area();
         let mut solution = self.solution(
             &round.total,
