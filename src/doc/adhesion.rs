@@ -442,7 +442,18 @@
 //! round limit on a layer over a base 124 times softer). A cell in contact at
 //! an equilibrium bonds and holds with the receding work of adhesion until
 //! its gap passes the receding range; an unbonded cell pulls with the
-//! advancing one (adhesion hysteresis). Within one solve a cell is bonded
+//! advancing one (adhesion hysteresis). At a reversal (the first
+//! withdrawal, by depth or force, from an equilibrium that was not itself
+//! withdrawn) the open cells of the advancing zone around the contact whose
+//! gap is at most 0.6 of the advancing range bond too: in the JKR limit
+//! the edge is pinned at the peak's equivalent crack, which lies inside the
+//! zone, and bonding the closed cells alone let the unloading's zone form
+//! inside them, the edge receding most of a zone at once (a sphere pinned
+//! from the peak to the pull-off: -23.6 / -11.6 / -4.3 % at the pull-off
+//! and up to 28.7 / 19.5 / 11.4 % of it along the branch at 16 / 32 / 64
+//! cells across, now -8.4 / -3.7 / -1.4 % and 9.8 / 5.0 / 3.3 %;
+//! `BENCHMARKS.md`, "A pinned edge under hysteresis", has the fractions
+//! tried). Within one solve a cell is bonded
 //! if the round's contact holds it or it was bonded at the equilibrium the
 //! solve started from: a cell that one round closed and the next opened
 //! was never bonded on the path (until 2026-12-02 it stayed bonded, and a
@@ -571,7 +582,9 @@
 //! 2.4 and 1.5); but it is not yet the JKR limit: grid-converged, it moves
 //! by +8, +25 and -16 % as the zone halves from 20 to 10, 5 and 2.5 um
 //! (hysteresis 0.01 and 0.05 J/m^2; the dissipated energy levels off at
-//! about 4.5 nJ from 5 um). The bonded region at the pull-off is not small, but
+//! about 4.5 nJ from 5 um; measured on 2026-12-02, before a reversal bonded
+//! part of the advancing zone, which holds the pinned patches longer: not
+//! measured again). The bonded region at the pull-off is not small, but
 //! its edge follows the asperities (cut off at 20 um), and zones of 5 to
 //! 20 um are not short against that. On such contacts the zone's length is
 //! the law's range, a Maugis-Dugdale interaction (Maugis 1992, J. Colloid

@@ -240,6 +240,7 @@ impl ContactSolver {
                         pressure,
                         attached,
                         contact: None,
+                        withdrawn: false,
                     },
                 ));
             }

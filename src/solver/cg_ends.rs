@@ -55,6 +55,7 @@ impl ContactSolver {
                 pressure,
                 attached,
                 contact: None,
+                withdrawn: false,
             },
         ))
     }

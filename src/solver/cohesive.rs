@@ -47,6 +47,7 @@ use crate::indenter::Indenter;
 use super::cohesive_area::open_zone_cells;
 #[cfg(doc)]
 use super::cohesive_area::EQUIVALENT_TIP;
+use super::cohesive_bonding::bonded_from;
 use super::cohesive_closest::{Round, CLOSE_ENOUGH};
 #[cfg(doc)]
 use super::cohesive_law::ZONE_LAYER_FRACTION;
@@ -227,11 +228,6 @@ impl ContactSolver {
         let receding = Law::new(zone, zone.receding, spacing, modulus, grid_area)?;
         let n = self.local_cells();
         let base = self.workspace.profile.clone();
-        let mut bonded = match warm {
-            Some(w) => w.attached.clone(),
-            None => vec![false; n],
-        };
-        let prior = bonded.clone();
         // The tensions from the gaps of the last pressures at this depth.
         let total = match warm {
             Some(w) => w.pressure.clone(),
@@ -239,6 +235,23 @@ impl ContactSolver {
         };
         let mut kt = super::cell_vector(n)?;
         self.operator.apply(&total, &mut kt)?;
+        let grid = *self.grid();
+        let periodic = self.operator.boundary() == crate::grid::Boundary::Periodic;
+        let (mut bonded, withdrawn) = match warm {
+            // With hysteresis a reversal bonds the advancing zone too.
+            Some(w) if zone.receding > zone.advancing => bonded_from(
+                w,
+                control,
+                depth,
+                (&base, &kt),
+                area,
+                ((grid.rows(), grid.columns()), periodic),
+                advancing.range,
+            ),
+            Some(w) => (w.attached.clone(), false),
+            None => (vec![false; n], false),
+        };
+        let prior = bonded.clone();
         let mut tension = vec![0.0; n];
         let held = warm.and_then(|w| w.contact.as_deref());
         for c in 0..n {
@@ -267,7 +280,6 @@ impl ContactSolver {
         let mut iterations = 0usize;
         let mut change = f64::INFINITY;
         let mut stepper = Stepper::new();
-        let grid = *self.grid();
         let mut smoothing = ZoneSmoothing::new(
             grid.rows(),
             grid.columns(),
@@ -330,6 +342,7 @@ impl ContactSolver {
                 pressure: std::mem::take(&mut compressive),
                 attached: Vec::new(),
                 contact: None,
+                withdrawn: false,
             };
             // Inner solves only as tight as the fixed point has come: a
             // hundredth of the last change of the tensions, tighter where
@@ -447,7 +460,6 @@ impl ContactSolver {
                 // The round of the tensions just solved for (the law's
                 // tensions at its gaps differ by at most `change`), with
                 // the displacement of its total pressure.
-                let periodic = self.operator.boundary() == crate::grid::Boundary::Periodic;
                 let round = Round {
                     total: (0..n).map(|c| compressive[c] + tension[c]).collect(),
                     displacement: (self.workspace.displacement.iter().zip(&kt))
@@ -463,6 +475,7 @@ impl ContactSolver {
                     ),
                     depth,
                     residual: change / scale,
+                    withdrawn,
                 };
                 if converged {
                     self.workspace.profile.copy_from_slice(&base);

@@ -38,9 +38,22 @@ pub const EQUIVALENT_TIP: f64 = 0.4264;
 pub(super) fn open_zone_cells(
     contact: &[bool],
     tension: &[f64],
-    (rows, columns): (usize, usize),
+    cells: (usize, usize),
     periodic: bool,
 ) -> usize {
+    open_zone(contact, tension, cells, periodic)
+        .iter()
+        .filter(|&&open| open)
+        .count()
+}
+
+/// Which cells [`open_zone_cells`] counts, as a mask.
+pub(super) fn open_zone(
+    contact: &[bool],
+    tension: &[f64],
+    (rows, columns): (usize, usize),
+    periodic: bool,
+) -> Vec<bool> {
     let n = contact.len();
     debug_assert!(n == rows * columns && tension.len() == n);
     let open = |c: usize| !contact[c] && tension[c] != 0.0;
@@ -48,12 +61,10 @@ pub(super) fn open_zone_cells(
     // Start from the open cells beside a closed cell; each cell enters the
     // stack at most once, so the walk ends within `n` steps.
     let mut stack: Vec<usize> = Vec::new();
-    let mut count = 0;
-    let mut visit = |c: usize, seen: &mut Vec<bool>, stack: &mut Vec<usize>| {
+    let visit = |c: usize, seen: &mut Vec<bool>, stack: &mut Vec<usize>| {
         if open(c) && !seen[c] {
             seen[c] = true;
             stack.push(c);
-            count += 1;
         }
     };
     for c in (0..n).filter(|&c| contact[c]) {
@@ -72,7 +83,7 @@ pub(super) fn open_zone_cells(
             visit(m, &mut seen, &mut stack);
         }
     }
-    count
+    seen
 }
 
 #[cfg(test)]

@@ -38,6 +38,8 @@ pub(super) struct Round {
     pub(super) open: usize,
     pub(super) depth: f64,
     pub(super) residual: f64,
+    /// Whether the solve withdraws (`WarmStart::withdrawn`).
+    pub(super) withdrawn: bool,
 }
 
 impl ContactSolver {
@@ -70,6 +72,7 @@ impl ContactSolver {
                 pressure: round.total,
                 attached: round.bonded,
                 contact: Some(round.contact),
+                withdrawn: round.withdrawn,
             },
         ))
     }

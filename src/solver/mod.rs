@@ -59,6 +59,7 @@ mod anderson;
 mod cg_ends;
 mod cohesive;
 mod cohesive_area;
+mod cohesive_bonding;
 mod cohesive_closest;
 mod cohesive_force;
 mod cohesive_law;
@@ -475,6 +476,7 @@ impl ContactSolver {
                 pressure,
                 attached: vec![false; n],
                 contact: None,
+                withdrawn: false,
             },
         )
     }

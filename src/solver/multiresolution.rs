@@ -168,6 +168,7 @@ impl ContactSolver {
                 pressure,
                 attached,
                 contact: None,
+                withdrawn: false,
             }
         });
         let start = restricted.as_ref();
@@ -225,6 +226,7 @@ impl ContactSolver {
                 pressure,
                 attached,
                 contact: None,
+                withdrawn: false,
             },
             solution.iterations + solution.coarse_iterations,
             scale,

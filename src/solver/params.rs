@@ -176,6 +176,11 @@ pub struct WarmStart {
     /// The cells whose gap is closed, where they differ from `attached`:
     /// the cohesive zone's bonded cells include its open zone.
     pub(crate) contact: Option<Vec<bool>>,
+    /// Whether the cohesive solve that made it withdrew the indenter (or
+    /// held it) from a withdrawn equilibrium: its advancing zone was bonded
+    /// at the reversal and is not bonded again
+    /// (`src/solver/cohesive_bonding.rs`).
+    pub(crate) withdrawn: bool,
 }
 
 impl WarmStart {
