@@ -151,6 +151,13 @@ impl ContactSolver {
     /// isolated and periodic grids: edges advance and recede where their
     /// local energy release rate asks, contacts split and merge. `warm`
     /// carries the history (the last pressures and which cells are bonded).
+    /// With hysteresis (receding work above the advancing one) a solve that
+    /// withdraws the indenter from a `warm` that was not itself withdrawn
+    /// (a smaller depth here, a smaller force in
+    /// [`solve_force_cohesive`](Self::solve_force_cohesive)) also bonds the
+    /// advancing zone's cells within 0.6 of its range, so that the edge
+    /// stays pinned where loading left it (`BENCHMARKS.md`, "A pinned edge
+    /// under hysteresis").
     ///
     /// The solution's pressure includes the tension of the open zone
     /// (cells out of contact within the law's range); its contact cells
