@@ -152,9 +152,9 @@ mod tests {
     use super::*;
 
     /// A warm start on a row of five cells: the middle one closed at the
-    /// depth `1e-6` (its `profile + K p`), the others open at gaps 0.2,
-    /// 0.5, 0.7 and 0.1 of a range of `1e-7` m, all in tension but the
-    /// last, which is apart from the contact.
+    /// depth `1e-6` (its `profile + K p`), the others open at gaps 0.5,
+    /// 0.2 (left of it), 0.7 and 0.1 (right) of a range of `1e-7` m, all
+    /// in tension but the last, which carries none.
     fn row() -> (WarmStart, Vec<f64>, Vec<f64>) {
         let depth = 1e-6;
         let gaps = [0.5e-7, 0.2e-7, 0.0, 0.7e-7, 0.1e-7];
