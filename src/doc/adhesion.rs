@@ -442,7 +442,14 @@
 //! round limit on a layer over a base 124 times softer). A cell in contact at
 //! an equilibrium bonds and holds with the receding work of adhesion until
 //! its gap passes the receding range; an unbonded cell pulls with the
-//! advancing one (adhesion hysteresis). At a reversal (the first
+//! advancing one (adhesion hysteresis). A cell that closes during a solve
+//! that is not withdrawn (loading, holding) carries at most the advancing
+//! law's peak until an equilibrium bonds it: with the receding peak on the
+//! cells a loading closes, the contact grew past the advancing work's and
+//! did not converge in the grid (a sphere over a base 2000 times softer:
+//! its peak radius +8.8 / +8.5 / +10.2 % at 16 / 32 / 64 cells, now +2.3 /
+//! +1.6 / +0.6 %; `BENCHMARKS.md`, "The loading branch under
+//! hysteresis"). At a reversal (the first
 //! withdrawal, by depth or force, from an equilibrium that was not itself
 //! withdrawn) the open cells of the advancing zone around the contact whose
 //! gap is at most 0.6 of the advancing range bond too: in the JKR limit

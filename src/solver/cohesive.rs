@@ -47,7 +47,7 @@ use crate::indenter::Indenter;
 use super::cohesive_area::open_zone_cells;
 #[cfg(doc)]
 use super::cohesive_area::EQUIVALENT_TIP;
-use super::cohesive_bonding::bonded_from;
+use super::cohesive_bonding::{bonded_from, recedes};
 use super::cohesive_closest::{Round, CLOSE_ENOUGH};
 #[cfg(doc)]
 use super::cohesive_law::ZONE_LAYER_FRACTION;
@@ -157,7 +157,9 @@ impl ContactSolver {
     /// [`solve_force_cohesive`](Self::solve_force_cohesive)) also bonds the
     /// advancing zone's cells within 0.6 of its range, so that the edge
     /// stays pinned where loading left it (`BENCHMARKS.md`, "A pinned edge
-    /// under hysteresis").
+    /// under hysteresis"); a cell that closes during a solve that is not
+    /// withdrawn carries at most the advancing law's peak until an
+    /// equilibrium bonds it, so that loading follows the advancing work.
     ///
     /// The solution's pressure includes the tension of the open zone
     /// (cells out of contact within the law's range); its contact cells
@@ -268,12 +270,17 @@ impl ContactSolver {
             // as a whole (a stiff coating on a far softer base) the drop of
             // their tensions moved the whole surface away and the first
             // round lost the contact.
-            let g = if held.is_some_and(|h| h.get(c) == Some(&true)) {
+            let touching = held.is_some_and(|h| h.get(c) == Some(&true));
+            let g = if touching {
                 0.0
             } else {
                 (base[c] - depth + kt[c]).max(0.0)
             };
-            let law = if bonded[c] { &receding } else { &advancing };
+            let law = if recedes(bonded[c], prior[c], withdrawn) {
+                &receding
+            } else {
+                &advancing
+            };
             tension[c] = law.tension(g);
         }
         let mut compressive: Vec<f64> = (0..n).map(|c| (total[c] - tension[c]).max(0.0)).collect();
@@ -414,7 +421,11 @@ impl ContactSolver {
                 // at an equilibrium (with hysteresis, a fixed point whose
                 // contact overshot kept the overshoot at the receding work).
                 bonded[c] = touching || (prior[c] && g < receding.range * root);
-                let law = if bonded[c] { &receding } else { &advancing };
+                let law = if recedes(bonded[c], prior[c], withdrawn) {
+                    &receding
+                } else {
+                    &advancing
+                };
                 let law = law.scaled(root);
                 mapped[c] = law.tension(g);
                 caps[c] = law.peak;

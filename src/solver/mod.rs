@@ -76,6 +76,7 @@ mod patch_width;
 mod polonsky_keer;
 mod preconditioning;
 mod split;
+mod stall;
 mod step_response;
 mod workspace;
 

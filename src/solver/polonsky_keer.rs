@@ -6,7 +6,8 @@
 //! Fletcher-Reeves step, Fletcher & Reeves 1964, Comput. J. 7, 149-154),
 //! restarted only where the new direction would not descend: rough
 //! contacts, whose working set grows in most early iterations, otherwise
-//! iterate near steepest descent. A cold solve's early iterations, until the
+//! iterate near steepest descent. A solve whose change has stopped falling
+//! goes back to Polonsky and Keer's restarts ([`stall`](super::stall)). A cold solve's early iterations, until the
 //! change per iteration falls to `1e-5`, apply the operator in single
 //! precision; the displacement is then recomputed in double and the solve
 //! ends in double ([`EARLY_ABOVE`]), its conjugation restarted there and
@@ -22,6 +23,7 @@ use crate::error::{Error, Result};
 use crate::indenter::Indenter;
 
 use super::multiresolution::loosened;
+use super::stall::Stall;
 use super::step_response::Arithmetic;
 use super::{check_finite, passes, ContactSolver, IterationInfo, Observer, Solution, WarmStart};
 
@@ -301,6 +303,7 @@ impl ContactSolver {
         let cold = cold && !self.double_preconditioner;
         let mut early = cold;
         let mut restarted = !cold;
+        let mut stall = Stall::new();
         for iteration in 1..=self.params.max_iterations {
             self.check_interrupt("the constrained conjugate gradients")?;
             let leave = early && residual <= EARLY_ABOVE.max(tolerance);
@@ -433,7 +436,10 @@ impl ContactSolver {
             // in the pass that writes the new direction, which runs again
             // with `beta = 0` in the rare case it would not. Measured in
             // BENCHMARKS.md ("Rough contacts beside tamaas").
-            let beta = if rz_old <= 0.0 { 0.0 } else { rz / rz_old };
+            // A solve that has stalled restarts at new overlap instead
+            // ([`Stall`]).
+            let restart = rz_old <= 0.0 || (set.overlap && stall.restarts_on_overlap());
+            let beta = if restart { 0.0 } else { rz / rz_old };
             rz_old = rz;
             // The direction is zero off the working set: only the rows of
             // the old and the new one are written.
@@ -584,6 +590,7 @@ impl ContactSolver {
             if prolonged && iteration == 1 {
                 tolerance = loosened(tolerance, residual);
             }
+            stall.record(residual);
             observer.observe(&IterationInfo {
                 iteration,
                 residual,
