@@ -1,6 +1,8 @@
 //! A solve whose kept conjugation cycles goes back to Polonsky and Keer's
 //! restarts (`src/solver/stall.rs`) and converges to the exact values.
 
+#![cfg(feature = "serde")]
+
 use layered_contact::scene::{Quantity, Scene};
 
 /// A flat punch on a layer 2800 times stiffer than its base, through the
