@@ -49,7 +49,7 @@ mod spec;
 mod stresses;
 
 pub use accuracy::{richardson, Converged, Quantity};
-pub use curve::{Caveat, Curve, Phase, Step};
+pub use curve::{Caveat, Curve, Phase, Step, PINNED_AREA_FRACTION, SOFT_BELOW_CONTRAST};
 pub use reference::Reference;
 pub use spec::{
     Adhesion, CustomIndenter, IndenterSpec, LayerSpec, MaterialSpec, SubstrateSpec, Tilt,

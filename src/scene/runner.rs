@@ -277,7 +277,20 @@ impl<'a> Runner<'a> {
                 }
             }
         }
-        Ok(Outcome::Done(Box::new(Curve {
+        // A pinned pull-off through the zone (`Caveat::CohesivePinnedPullOff`):
+        // with hysteresis, of an indenter that is neither a flat punch (its
+        // face pins the contact; within 0.9 % at 16 cells) nor a rough
+        // surface (`Caveat::CohesiveZoneOnRoughSurface` says more).
+        let pinned = self.cohesive.is_some()
+            && self.scene.adhesion.works().is_some_and(|(a, r)| r > a)
+            && !matches!(
+                self.scene.indenter,
+                IndenterSpec::FlatPunch { .. } | IndenterSpec::RoughSurface { .. }
+            );
+        let substrate = self.solver.substrate();
+        let soft_below = substrate.surface_material().contact_modulus()
+            >= super::SOFT_BELOW_CONTRAST * substrate.softest_contact_modulus();
+        let mut curve = Curve {
             steps: self.steps,
             grid: *self.solver.grid(),
             peak: self.peak,
@@ -307,7 +320,11 @@ impl<'a> Runner<'a> {
                 _ => Vec::new(),
             },
             stresses: None,
-        })))
+        };
+        if pinned && (soft_below || curve.came_off_pinned()) {
+            curve.caveats.push(super::Caveat::CohesivePinnedPullOff);
+        }
+        Ok(Outcome::Done(Box::new(curve)))
     }
 
     /// Retracts from `max_depth` by `increment` until the contact is lost.
