@@ -126,8 +126,11 @@ pub enum Caveat {
     /// and +2.9 % at 64 cells across, -7.3 and +5.1 % at 32
     /// (`tests/scene_cohesive_soft_below.rs`), a sphere's peak force +5.0 %
     /// at 64 and +1.9 % at 128
-    /// (`BENCHMARKS.md`, "The cohesive contact's area"). A finer grid
-    /// resolves it.
+    /// (`BENCHMARKS.md`, "The cohesive contact's area"); a nearly
+    /// incompressible layer (`nu` 0.49) on a base 290 times stiffer, a
+    /// sphere's pull-off -9.9, -6.9, -2.0 % at 16, 32, 64 cells (the
+    /// cohesive reference sweep's seed 71; `BENCHMARKS.md`, "The loading
+    /// branch under hysteresis"). A finer grid resolves it.
     CohesiveZoneLongAgainstLayer,
     /// A synthesised rough surface went through the cohesive zone: its
     /// forces depend on the zone's length, and their JKR limit is not
@@ -212,7 +215,8 @@ impl std::fmt::Display for Caveat {
                  cells, so the two-cell zone is longer than a quarter of its thickness and \
                  the forces may be off by per cents (on a rigid base -0.8 % with the zone \
                  half the thickness, -4.6 % with the whole; over a far softer layer up to \
-                 8 % measured): refine the grid",
+                 8 % measured; a nearly incompressible layer on a far stiffer base -6.9 % at \
+                 32 cells across): refine the grid",
             ),
             Caveat::CohesiveZoneOnRoughSurface => f.write_str(
                 "cohesive zone on a rough surface: the forces depend on the zone's length and \
