@@ -7,7 +7,8 @@
 //! restarted only where the new direction would not descend: rough
 //! contacts, whose working set grows in most early iterations, otherwise
 //! iterate near steepest descent. A solve whose change has stopped falling
-//! goes back to Polonsky and Keer's restarts ([`stall`](super::stall)). A cold solve's early iterations, until the
+//! goes back to Polonsky and Keer's restarts ([`stall`](super::stall)). A
+//! cold solve's early iterations, until the
 //! change per iteration falls to `1e-5`, apply the operator in single
 //! precision; the displacement is then recomputed in double and the solve
 //! ends in double ([`EARLY_ABOVE`]), its conjugation restarted there and
