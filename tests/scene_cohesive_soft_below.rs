@@ -8,6 +8,8 @@
 //! cohesive reference sweep's seed 13, `tests/reference_sweep.rs`). The
 //! mesh-dependent criterion, whose critical stress takes the surface's
 //! `E*` at the cell's scale, refuses such bodies.
+//! A stiff layer on a half-space thousands of times softer is still off
+//! by tens of per cents at 16 cells, as its caveat says (the last test).
 
 #![cfg(feature = "serde")]
 
@@ -126,4 +128,34 @@ fn the_mesh_criterion_refuses_a_body_far_softer_at_the_cells_scale() {
         }
         other => panic!("{:?}", other.map(|c| c.pull_off().map(|p| p.force))),
     }
+}
+
+/// A paraboloid (R 3.4 mm, 68.6 J/m^2) on a 57 GPa layer 24 um thick
+/// resting on a 14.8 MPa base (3850 times softer; the cohesive reference
+/// sweep's seed 74), 35 um cells: the zone of two cells is 2.9 times the
+/// layer's thickness, and the caveat of a zone long against the layer
+/// quotes what that costs: the pull-off +39.9 % (+22, +14, +5.1, +0.20 %
+/// at 20, 24, 32, 64 cells, measured with the tool on 2026-12-03; the
+/// energy balance's peak force +0.04 % at 16). Asserted within 35 to 45 %
+/// and flagged, so that the caveat's quote follows the method: a change
+/// that moves it must move the caveat's numbers too.
+#[test]
+fn a_stiff_layer_on_a_far_softer_half_space_is_as_far_off_as_its_caveat_says() {
+    let scene = cycle(
+        "kind = \"layer_resting_on_elastic_base\"\nyoungs_modulus = 5.699309133317363e10\n\
+         poisson_ratio = 0.3\nthickness = 2.412818170441917e-5\n\
+         base_youngs_modulus = 1.47934312668344e7\nbase_poisson_ratio = 0.5",
+        "kind = \"paraboloid\"\nradius = 3.408462164269162e-3",
+        6.857232844176532e1,
+        5.385678181901121e-6,
+    );
+    let curve = scene.run(&mut |_| {}).unwrap();
+    assert_eq!(curve.caveats, [Caveat::CohesiveZoneLongAgainstLayer]);
+    let exact = scene.reference().unwrap();
+    let pull_off = exact
+        .iter()
+        .find(|r| r.quantity == Quantity::PullOffForce)
+        .unwrap();
+    let error = Quantity::PullOffForce.of(&curve).unwrap() / pull_off.value - 1.0;
+    assert!((0.35..0.45).contains(&error), "{error:e}");
 }

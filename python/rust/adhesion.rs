@@ -149,3 +149,92 @@ pub(crate) fn jkr_sinusoid_pull_off(
         .and_then(|s| s.pull_off())
         .py_err()
 }
+
+/// The pull-off of an unloading through the cohesive zone
+/// (`ContactSolver.cohesive_pull_off`; the crate's
+/// `solver::CohesivePullOff`).
+#[pyclass(module = "layered_contact._native", frozen, get_all)]
+pub(crate) struct CohesivePullOff {
+    /// The most tensile force along the unloading, N (negative).
+    force: f64,
+    /// The depth where it is reached, m.
+    depth: f64,
+    /// Cohesive solves taken.
+    solves: usize,
+    /// Conjugate-gradient iterations over all of them.
+    iterations: usize,
+    /// The widest patch of the contact at the pull-off, cells across.
+    cells_across: f64,
+    /// The zone's width on this grid, cells.
+    zone_cells: f64,
+}
+
+/// The fields of a [`CohesivePullOff`] in the order of its declaration:
+/// the pickled state.
+type PullOffState = (f64, f64, usize, usize, f64, f64);
+
+impl From<&lc::solver::CohesivePullOff> for CohesivePullOff {
+    fn from(p: &lc::solver::CohesivePullOff) -> Self {
+        Self::_rebuild((
+            p.force,
+            p.depth,
+            p.solves,
+            p.iterations,
+            p.cells_across,
+            p.zone_cells,
+        ))
+    }
+}
+
+#[pymethods]
+impl CohesivePullOff {
+    /// Whether the zone is wider than the contact at the pull-off: the
+    /// zones of its two sides then meet and the force is a cohesive law's,
+    /// not the JKR limit's (`CohesivePullOff::zone_spans_contact`).
+    #[getter]
+    fn zone_spans_contact(&self) -> bool {
+        self.cells_across < self.zone_cells
+    }
+
+    /// Pickling (multiprocessing, Dask): the fields, read back by
+    /// `_rebuild`.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (PullOffState,))> {
+        let p = slf.get();
+        let state = (
+            p.force,
+            p.depth,
+            p.solves,
+            p.iterations,
+            p.cells_across,
+            p.zone_cells,
+        );
+        Ok((slf.get_type().getattr("_rebuild")?, (state,)))
+    }
+
+    /// The pull-off whose `__reduce__` gave `state`.
+    #[staticmethod]
+    fn _rebuild(state: PullOffState) -> Self {
+        let (force, depth, solves, iterations, cells_across, zone_cells) = state;
+        CohesivePullOff {
+            force,
+            depth,
+            solves,
+            iterations,
+            cells_across,
+            zone_cells,
+        }
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "CohesivePullOff(force={:e}, depth={:e}, solves={}, iterations={}, \
+             cells_across={}, zone_cells={})",
+            self.force,
+            self.depth,
+            self.solves,
+            self.iterations,
+            self.cells_across,
+            self.zone_cells
+        )
+    }
+}

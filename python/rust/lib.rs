@@ -139,6 +139,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Solution>()?;
     m.add_class::<ContactSolver>()?;
     m.add_class::<Curve>()?;
+    m.add_class::<adhesion::CohesivePullOff>()?;
     m.add_function(wrap_pyfunction!(run_scene, m)?)?;
     m.add_function(wrap_pyfunction!(indenters::rough_surface_heights, m)?)?;
     m.add_function(wrap_pyfunction!(indenters::refine_heights, m)?)?;

@@ -324,9 +324,11 @@ impl ContactSolver {
     /// the force has stayed above its least value for three steps, the
     /// least force then searched to a sixteenth of a step (the crate's
     /// `ContactSolver::cohesive_pull_off`; a step out of the fixed point's
-    /// reach is taken in substeps). Returns `(force, depth)` (N, m); a
-    /// `CohesiveZoneWarning` where the zone is wider than the contact at
-    /// the pull-off (`CohesivePullOff::zone_spans_contact`).
+    /// reach is taken in substeps). Returns a `CohesivePullOff` (its force,
+    /// N, and depth, m, the solves and iterations it took, the contact's
+    /// and the zone's widths in cells); a `CohesiveZoneWarning` where the
+    /// zone is wider than the contact at the pull-off
+    /// (`CohesivePullOff.zone_spans_contact`).
     #[pyo3(signature = (indenter, depth, step, advancing, receding=None, zone_cells=None, cells_across=None))]
     #[allow(clippy::too_many_arguments)]
     fn cohesive_pull_off(
@@ -339,7 +341,7 @@ impl ContactSolver {
         receding: Option<f64>,
         zone_cells: Option<f64>,
         cells_across: Option<f64>,
-    ) -> PyResult<(f64, f64)> {
+    ) -> PyResult<adhesion::CohesivePullOff> {
         let zone = cohesive_zone(advancing, receding, zone_cells, cells_across)?;
         let shape = Shared(indenter.inner.clone());
         let inner = &mut self.inner;
@@ -355,7 +357,7 @@ impl ContactSolver {
             ))?;
             PyErr::warn(py, &py.get_type::<CohesiveZoneWarning>(), &message, 1)?;
         }
-        Ok((pull_off.force, pull_off.depth))
+        Ok(adhesion::CohesivePullOff::from(&pull_off))
     }
 
     /// `(rows, columns, spacing)`.

@@ -2,6 +2,7 @@
 against the exact values the Rust tests use."""
 
 import math
+import pickle
 import warnings
 
 import numpy as np
@@ -95,7 +96,7 @@ def test_cohesive_zone_sinusoid_along_the_grid_and_at_45_degrees():
         amplitude = math.sqrt(2 * wavelength * work / (math.pi**2 * ESTAR)) / 0.3
         surface = lc.Indenter.wavy(n, n, spacing, wave, amplitude)
         solver = lc.ContactSolver(lc.Substrate.half_space(RUBBER), n, n, spacing, periodic=True)
-        force, _ = solver.cohesive_pull_off(surface, 0.6 * amplitude, amplitude / 40, work)
+        force = solver.cohesive_pull_off(surface, 0.6 * amplitude, amplitude / 40, work).force
         exact, _ = lc.analytic.jkr_sinusoid_pull_off(RUBBER, wavelength, amplitude, work)
         errors.append(force / side**2 / exact - 1)
     assert errors[0] == pytest.approx(-0.0178, abs=1e-3)
@@ -114,16 +115,27 @@ def test_cohesive_zone_wider_than_the_pull_off_contact_warns():
     def pull_off(alpha):
         amplitude = math.sqrt(2 * side * work / (math.pi**2 * ESTAR)) / alpha
         surface = lc.Indenter.wavy(n, n, spacing, (1, 0), amplitude)
-        force, _ = solver.cohesive_pull_off(surface, 0.6 * amplitude, amplitude / 40, work)
+        found = solver.cohesive_pull_off(surface, 0.6 * amplitude, amplitude / 40, work)
         exact, _ = lc.analytic.jkr_sinusoid_pull_off(RUBBER, side, amplitude, work)
-        return force / side**2 / exact - 1
+        return found, found.force / side**2 / exact - 1
 
     with pytest.warns(lc.CohesiveZoneWarning, match="refine the grid"):
-        error = pull_off(0.05)
+        found, error = pull_off(0.05)
     assert error < -0.03
+    # The warning's reason, on the result: the contact at the least force
+    # is narrower than the zone (its four cells).
+    assert found.zone_spans_contact and found.cells_across < found.zone_cells == 4.0
+    # It pickles (Dask returns it from workers) to the same fields.
+    again = pickle.loads(pickle.dumps(found))
+    assert (again.force, again.depth, again.iterations) == (found.force, found.depth, found.iterations)
     with warnings.catch_warnings():
         warnings.simplefilter("error", lc.CohesiveZoneWarning)
-        assert abs(pull_off(0.3)) < 0.02
+        found, error = pull_off(0.3)
+    assert abs(error) < 0.02
+    # A resolved contact: wider than the zone, and the solves and their
+    # iterations counted (each solve at least one iteration).
+    assert not found.zone_spans_contact and found.cells_across > found.zone_cells
+    assert 1 <= found.solves <= found.iterations
 
 
 def test_cohesive_zone_refuses_bad_laws():

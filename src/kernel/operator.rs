@@ -278,9 +278,11 @@ pub fn check_film(substrate: &Substrate, grid: &Grid) -> Result<()> {
         return Err(Error::InvalidParameter {
             name: "h / Delta (top layer thickness over cell size)",
             value: ratio,
-            expected: "at least 0.5 for this nearly incompressible layer on a support that \
-                       acts as rigid (below, its squeeze-film compliance is not resolved; \
-                       refine the grid)",
+            expected: "at least 0.5 for this layer on a support that acts as rigid, or thin \
+                       enough to compress by uniaxial strain alone (its squeeze-film \
+                       compliance, (h/Delta)^2 M/mu times the uniaxial one, below 1 % of the \
+                       film's and the support's: on a rigid base below 0.053 cells at nu = \
+                       0.3, never for a nearly incompressible layer); refine the grid",
         });
     }
     Ok(())

@@ -32,6 +32,7 @@ from ._native import refine_heights, rough_surface_heights, subsurface_stress
 from .rough import interface_curve
 from .stress import plot_section
 from ._native import (
+    CohesivePullOff,
     CohesiveZoneWarning,
     ConvergenceError,
     ContactSolver,
@@ -54,6 +55,7 @@ from ._native import scene_schema as _scene_schema
 SceneLike = Union[Mapping[str, Any], str, "os.PathLike[str]"]
 
 __all__ = [
+    "CohesivePullOff",
     "CohesiveZoneWarning",
     "ConvergenceError",
     "ContactSolver",

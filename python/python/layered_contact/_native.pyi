@@ -8,6 +8,7 @@ import numpy as np
 import numpy.typing as npt
 
 __all__ = [
+    "CohesivePullOff",
     "CohesiveZoneWarning",
     "ContactSolver",
     "ConvergenceError",
@@ -139,6 +140,20 @@ class Solution:
     y: npt.NDArray[np.float64]
 
 @final
+class CohesivePullOff:
+    force: float
+    depth: float
+    solves: int
+    iterations: int
+    cells_across: float
+    zone_cells: float
+    @property
+    def zone_spans_contact(self) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
+    @staticmethod
+    def _rebuild(state: Tuple[float, float, int, int, float, float]) -> CohesivePullOff: ...
+
+@final
 class ContactSolver:
     def __new__(
         cls,
@@ -180,7 +195,7 @@ class ContactSolver:
         receding: float | None = None,
         zone_cells: float | None = None,
         cells_across: float | None = None,
-    ) -> Tuple[float, float]: ...
+    ) -> CohesivePullOff: ...
     @property
     def grid(self) -> Tuple[int, int, float]: ...
 
