@@ -737,7 +737,13 @@
 //! [`Caveat::CohesiveZoneLongAgainstLayer`](crate::scene::Caveat::CohesiveZoneLongAgainstLayer)
 //! (-0.8 % measured with the zone half the film, -4.6 % with the whole).
 //! The energy balance, automatic for these axisymmetric scenes, stays
-//! within 0.06 % from 64 cells.
+//! within 0.06 % from 64 cells. On a stiff layer over a body thousands of
+//! times softer the long zone costs tens of per cents: a paraboloid on a
+//! 57 GPa layer 24 um thick over a half-space 3850 times softer, pull-off
+//! +40, +14, +5.1, +0.20 % at 16, 24, 32, 64 cells across (the zone 2.9,
+//! 2.0, 1.5, 0.73 times the layer), which the caveat quotes; over a base
+//! ten times softer the same ratios cost a few per cent (`BENCHMARKS.md`,
+//! "Seeds 74 to 85").
 //!
 //! The law's range `rho = 2 sqrt(dgamma l / E*)` makes the zone span its
 //! `l` when the body is as stiff as `E*` at the zone's wavelengths: the
