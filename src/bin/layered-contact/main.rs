@@ -25,7 +25,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
-use layered_contact::scene::Scene;
+use layered_contact::scene::{Caveat, Scene};
 
 /// Contact mechanics of coated elastic bodies: run scenes from files.
 #[derive(Parser)]
@@ -207,6 +207,11 @@ fn run_with(
     }
     for caveat in &curve.caveats {
         say!("caveat: {caveat}");
+        if *caveat == Caveat::CohesiveZoneLongAgainstLayer {
+            if let Some(line) = zone_against_layer(scene, curve.grid.spacing())? {
+                say!("{line}");
+            }
+        }
     }
     if let Some(k) = curve.stiffness() {
         say!("stiffness at the peak: {k:.6e} N/m");
@@ -322,4 +327,26 @@ fn reference(scene: &Scene) -> Result<()> {
         say!("{}: {:.9e} ({})", r.quantity.name(), r.value, r.source);
     }
     Ok(())
+}
+
+/// The cohesive zone's length against the top layer's thickness on cells
+/// of `spacing` (m), the measure of
+/// [`Caveat::CohesiveZoneLongAgainstLayer`]'s bias (tens of per cents at
+/// three times the thickness over a body far softer below, a few where the
+/// body is not; the caveat's doc), so that a user can tell how far to
+/// refine.
+fn zone_against_layer(scene: &Scene, spacing: f64) -> Result<Option<String>> {
+    let (Some(zone), Some(thickness)) = (
+        scene.cohesive_zone()?,
+        scene.substrate.build()?.top_thickness(),
+    ) else {
+        return Ok(None);
+    };
+    let cells = zone.cells_on(spacing, Some(thickness));
+    let length = cells * spacing;
+    Ok(Some(format!(
+        "  the zone: {cells} cells, {length:.4e} m, {:.2} times the top layer's thickness \
+         ({thickness:.4e} m)",
+        length / thickness
+    )))
 }
