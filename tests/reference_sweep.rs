@@ -241,7 +241,10 @@ fn scene_text(
     // `w`: its work spans a third of the decades, in units of `0.23 E1 a
     // s^2` (a fifth to once the peak contact too). Its jump-off contact
     // under displacement control is a ninth of that, and the grid resolves
-    // it by 7.2 cells: up to about 650 cells across.
+    // it by 7.2 cells: up to about 650 cells across on a half-space, and
+    // 1620 to 1680 on layers that shrink it further (seeds 80, 83 and 85
+    // of the energy balance; 83 and 85 alone: 148 and 83 s at one thread,
+    // within 0.02 %; BENCHMARKS.md, "Seeds 74 to 85").
     let w = match kind {
         "flat_punch" => e1 * a * decade(work),
         "cone" => 0.23 * e1 * a * slope * slope * decade(work / 3.0),

@@ -149,7 +149,7 @@ def test_every_example_scene_meets_the_schema():
 
     schema = lc.scene_schema()
     folder = pathlib.Path(__file__).resolve().parents[2] / "examples" / "scenes"
-    files = sorted(folder.glob("*.toml")) + sorted(folder.glob("*.json"))
+    files = sorted(folder.glob("**/*.toml")) + sorted(folder.glob("**/*.json"))
     assert len(files) >= 5
     for path in files:
         text = path.read_text()

@@ -1,0 +1,58 @@
+//! The cohesive zone's length against the top layer and the body's contact
+//! modulus at the zone's scale against the contact's, for scene files: the
+//! two numbers that tell a long zone's bias
+//! ([`Caveat::CohesiveZoneLongAgainstLayer`]) on a body far softer below
+//! from one that costs a few per cent (`BENCHMARKS.md`, "Seeds 74 to 85").
+//!
+//! For each scene (its resolution, its body, its zone as
+//! [`Scene::cohesive_zone`] and [`CohesiveZone::cells_on`] set it) it
+//! prints the zone's length over the top layer's thickness, and `E*(q) = 2
+//! / (q u_z(q))` (the body's surface compliance, Perriot & Barthel 2004,
+//! [`FourierCompliance`]) at the zone's wavelength `q = 2 pi / l` and at the
+//! peak contact's, `q = pi / a` (`a` the exact peak contact radius of
+//! [`Scene::reference`]), over the surface material's `E*`, and their
+//! ratio.
+//!
+//! `cargo run --release --example zone_scales -- examples/scenes/long_zone/*.toml`
+//!
+//! [`CohesiveZone::cells_on`]: layered_contact::solver::CohesiveZone::cells_on
+
+use layered_contact::kernel::FourierCompliance;
+#[cfg(doc)]
+use layered_contact::scene::Caveat;
+use layered_contact::scene::{Quantity, Scene};
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    println!("| scene | zone / h | E*(zone) / E*s | E*(contact) / E*s | E*(zone) / E*(contact) |");
+    println!("|---|---|---|---|---|");
+    for path in std::env::args().skip(1) {
+        let scene = Scene::from_toml(&std::fs::read_to_string(&path)?)?;
+        let body = scene.substrate.build()?;
+        let (Some(zone), Some(h)) = (scene.cohesive_zone()?, body.top_thickness()) else {
+            println!("| {path} | no zone or no layer | | | |");
+            continue;
+        };
+        let spacing = scene.grid()?.spacing();
+        let length = zone.cells_on(spacing, Some(h)) * spacing;
+        let Some(a) = scene
+            .reference()?
+            .iter()
+            .find(|r| r.quantity == Quantity::PeakContactRadius)
+            .map(|r| r.value)
+        else {
+            println!("| {path} | {:.2} | no exact peak contact | | |", length / h);
+            continue;
+        };
+        let compliance = FourierCompliance::new(&body);
+        let surface = body.surface_material().contact_modulus();
+        let modulus = |q: f64| 2.0 / (q * compliance.eval(q)) / surface;
+        let pi = std::f64::consts::PI;
+        let (at_zone, at_contact) = (modulus(2.0 * pi / length), modulus(pi / a));
+        println!(
+            "| {path} | {:.2} | {at_zone:.3} | {at_contact:.3e} | {:.1} |",
+            length / h,
+            at_zone / at_contact
+        );
+    }
+    Ok(())
+}
