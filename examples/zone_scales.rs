@@ -22,37 +22,42 @@ use layered_contact::kernel::FourierCompliance;
 use layered_contact::scene::Caveat;
 use layered_contact::scene::{Quantity, Scene};
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
+fn main() {
     println!("| scene | zone / h | E*(zone) / E*s | E*(contact) / E*s | E*(zone) / E*(contact) |");
     println!("|---|---|---|---|---|");
     for path in std::env::args().skip(1) {
-        let scene = Scene::from_toml(&std::fs::read_to_string(&path)?)?;
-        let body = scene.substrate.build()?;
-        let (Some(zone), Some(h)) = (scene.cohesive_zone()?, body.top_thickness()) else {
-            println!("| {path} | no zone or no layer | | | |");
-            continue;
-        };
-        let spacing = scene.grid()?.spacing();
-        let length = zone.cells_on(spacing, Some(h)) * spacing;
-        let Some(a) = scene
-            .reference()?
-            .iter()
-            .find(|r| r.quantity == Quantity::PeakContactRadius)
-            .map(|r| r.value)
-        else {
-            println!("| {path} | {:.2} | no exact peak contact | | |", length / h);
-            continue;
-        };
-        let compliance = FourierCompliance::new(&body);
-        let surface = body.surface_material().contact_modulus();
-        let modulus = |q: f64| 2.0 / (q * compliance.eval(q)) / surface;
-        let pi = std::f64::consts::PI;
-        let (at_zone, at_contact) = (modulus(2.0 * pi / length), modulus(pi / a));
-        println!(
-            "| {path} | {:.2} | {at_zone:.3} | {at_contact:.3e} | {:.1} |",
-            length / h,
-            at_zone / at_contact
-        );
+        match row(&path) {
+            Ok(cells) => println!("| {path} | {cells} |"),
+            Err(e) => println!("| {path} | {e} | | | |"),
+        }
     }
-    Ok(())
+}
+
+/// The table's cells for the scene file at `path`.
+fn row(path: &str) -> Result<String, Box<dyn std::error::Error>> {
+    let scene = Scene::from_toml(&std::fs::read_to_string(path)?)?;
+    let body = scene.substrate.build()?;
+    let (Some(zone), Some(h)) = (scene.cohesive_zone()?, body.top_thickness()) else {
+        return Err("no cohesive zone or no layer".into());
+    };
+    let spacing = scene.grid()?.spacing();
+    let length = zone.cells_on(spacing, Some(h)) * spacing;
+    let Some(a) = scene
+        .reference()?
+        .iter()
+        .find(|r| r.quantity == Quantity::PeakContactRadius)
+        .map(|r| r.value)
+    else {
+        return Err("no exact peak contact".into());
+    };
+    let compliance = FourierCompliance::new(&body);
+    let surface = body.surface_material().contact_modulus();
+    let modulus = |q: f64| 2.0 / (q * compliance.eval(q)) / surface;
+    let pi = std::f64::consts::PI;
+    let (at_zone, at_contact) = (modulus(2.0 * pi / length), modulus(pi / a));
+    Ok(format!(
+        "{:.2} | {at_zone:.3} | {at_contact:.3e} | {:.1}",
+        length / h,
+        at_zone / at_contact
+    ))
 }
