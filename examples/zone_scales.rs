@@ -11,7 +11,8 @@
 //! [`FourierCompliance`]) at the zone's wavelength `q = 2 pi / l` and at the
 //! peak contact's, `q = pi / a` (`a` the exact peak contact radius of
 //! [`Scene::reference`]), over the surface material's `E*`, and their
-//! ratio.
+//! ratio ([`ZoneScales`]; the run itself measures it at its own peak
+//! contact for [`Caveat::CohesiveZoneStifferThanContact`]).
 //!
 //! `cargo run --release --example zone_scales -- examples/scenes/long_zone/*.toml`
 //!
@@ -20,7 +21,7 @@
 use layered_contact::kernel::FourierCompliance;
 #[cfg(doc)]
 use layered_contact::scene::Caveat;
-use layered_contact::scene::{Quantity, Scene};
+use layered_contact::scene::{Quantity, Scene, ZoneScales};
 
 fn main() {
     println!("| scene | zone / h | E*(zone) / E*s | E*(contact) / E*s | E*(zone) / E*(contact) |");
@@ -37,11 +38,9 @@ fn main() {
 fn row(path: &str) -> Result<String, Box<dyn std::error::Error>> {
     let scene = Scene::from_toml(&std::fs::read_to_string(path)?)?;
     let body = scene.substrate.build()?;
-    let (Some(zone), Some(h)) = (scene.cohesive_zone()?, body.top_thickness()) else {
-        return Err("no cohesive zone or no layer".into());
+    let Some(zone) = scene.cohesive_zone()? else {
+        return Err("no cohesive zone".into());
     };
-    let spacing = scene.grid()?.spacing();
-    let length = zone.cells_on(spacing, Some(h)) * spacing;
     let Some(a) = scene
         .reference()?
         .iter()
@@ -50,14 +49,18 @@ fn row(path: &str) -> Result<String, Box<dyn std::error::Error>> {
     else {
         return Err("no exact peak contact".into());
     };
+    let Some(scales) = ZoneScales::new(&zone, &body, scene.grid()?.spacing(), a) else {
+        return Err("no layer".into());
+    };
     let compliance = FourierCompliance::new(&body);
     let surface = body.surface_material().contact_modulus();
-    let modulus = |q: f64| 2.0 / (q * compliance.eval(q)) / surface;
     let pi = std::f64::consts::PI;
-    let (at_zone, at_contact) = (modulus(2.0 * pi / length), modulus(pi / a));
+    let modulus = |q: f64| compliance.contact_modulus_at(q) / surface;
     Ok(format!(
-        "{:.2} | {at_zone:.3} | {at_contact:.3e} | {:.1}",
-        length / h,
-        at_zone / at_contact
+        "{:.2} | {:.3} | {:.3e} | {:.1}",
+        scales.length / scales.layer_thickness,
+        modulus(2.0 * pi / scales.length),
+        modulus(pi / a),
+        scales.modulus_ratio
     ))
 }

@@ -571,14 +571,13 @@ fn fit_recovers_the_film_from_a_curve() {
 #[test]
 fn run_says_how_long_the_zone_is_against_the_layer() {
     let dir = folder("long_zone");
-    let source = "[substrate]\nkind = \"layer_resting_on_elastic_base\"\n\
-                  youngs_modulus = 5.699309133317363e10\npoisson_ratio = 0.3\n\
-                  thickness = 2.412818170441917e-5\nbase_youngs_modulus = 1.47934312668344e7\n\
-                  base_poisson_ratio = 0.5\n[indenter]\nkind = \"paraboloid\"\n\
-                  radius = 3.408462164269162e-3\n[adhesion]\nkind = \"constant\"\n\
-                  work_of_adhesion = 6.857232844176532e1\n[protocol]\nkind = \"cycle\"\n\
-                  max_depth = 5.385678181901121e-6\nsteps = 4\n[resolution]\ncells_across = 16\n\
-                  [solver]\nadhesion_method = \"cohesive_zone\"\n";
+    let source = &resting_cycle(
+        [5.699309133317363e10, 0.3, 2.412818170441917e-5],
+        [1.47934312668344e7, 0.5],
+        "kind = \"paraboloid\"\nradius = 3.408462164269162e-3",
+        "kind = \"constant\"\nwork_of_adhesion = 6.857232844176532e1",
+        5.385678181901121e-6,
+    );
     std::fs::write(dir.join("film.toml"), source).unwrap();
     let out = tool(&["run", "film.toml", "-o", "result"], &dir);
     assert!(out.status.success(), "{}", text(&out.stderr));
@@ -597,4 +596,72 @@ fn run_says_how_long_the_zone_is_against_the_layer() {
         )),
         "{stdout}"
     );
+    // The body at the zone's length against the peak contact's: 360 times
+    // as stiff with the exact peak radius (`examples/zone_scales.rs`), more
+    // with the coarse run's wider one; the caveat of a ratio above 30.
+    let stiffer: f64 = stdout
+        .split("; the body ")
+        .nth(1)
+        .and_then(|rest| rest.split(' ').next())
+        .and_then(|number| number.parse().ok())
+        .unwrap_or_else(|| panic!("{stdout}"));
+    assert!((300.0..600.0).contains(&stiffer), "{stiffer}");
+    assert!(
+        stdout.contains("caveat: cohesive zone on a skin far stiffer than the contact's body"),
+        "{stdout}"
+    );
+}
+
+/// A run whose exact values the closed forms cannot reach (a cone with
+/// hysteresis whose pull-off contact lies beyond the radii the layered JKR
+/// solution tabulates; the cohesive reference sweep's seed 75) still
+/// succeeds: it says why there is nothing to compare with and prints the
+/// pull-off the library computes. Before, the run ended in that error
+/// after its results.
+#[test]
+fn run_without_exact_values_still_succeeds() {
+    let dir = folder("no_reference");
+    let source = &resting_cycle(
+        [5.233563611308424e10, 0.2, 4.978801340756114e-4],
+        [5.3796043836172484e7, 0.49],
+        "kind = \"cone\"\nhalf_angle = 1.1913977797509538\nbase_radius = 1.1827120486251617e-2",
+        "kind = \"hysteresis\"\nloading = 1.742310475350797e5\nunloading = 7.971647843616368e5",
+        4.4752631589373295e-4,
+    );
+    std::fs::write(dir.join("cone.toml"), source).unwrap();
+    let scene = toml::from_str::<Scene>(source).unwrap();
+    assert!(scene.reference().is_err());
+    let out = tool(&["run", "cone.toml", "-o", "result"], &dir);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    assert!(
+        stdout.contains("no exact values to compare with: "),
+        "{stdout}"
+    );
+    let pull_off = scene.run(&mut |_| {}).unwrap().pull_off().unwrap().force;
+    assert!(
+        stdout.contains(&format!("pull-off: {pull_off:.6e} N")),
+        "{stdout}"
+    );
+}
+
+/// A cycle of four steps to `max_depth` (m) through the cohesive zone, 16
+/// cells across, of `indenter` with `adhesion` (TOML bodies of their
+/// tables) on a layer (`[E, nu, h]`) resting on an elastic half-space
+/// (`[E, nu]`): the reference sweep's scenes.
+fn resting_cycle(
+    layer: [f64; 3],
+    base: [f64; 2],
+    indenter: &str,
+    adhesion: &str,
+    max_depth: f64,
+) -> String {
+    let ([e, nu, h], [base_e, base_nu]) = (layer, base);
+    format!(
+        "[substrate]\nkind = \"layer_resting_on_elastic_base\"\nyoungs_modulus = {e:e}\n\
+         poisson_ratio = {nu}\nthickness = {h:e}\nbase_youngs_modulus = {base_e:e}\n\
+         base_poisson_ratio = {base_nu}\n[indenter]\n{indenter}\n[adhesion]\n{adhesion}\n\
+         [protocol]\nkind = \"cycle\"\nmax_depth = {max_depth:e}\nsteps = 4\n[resolution]\n\
+         cells_across = 16\n[solver]\nadhesion_method = \"cohesive_zone\"\n"
+    )
 }

@@ -112,9 +112,13 @@ fn caveat_tolerance(caveat: &Caveat) -> f64 {
         // -26.5 to +11.7 % at 16 cells over the sweeps' seeds 11, 37 and 50
         // to 69 (BENCHMARKS.md, "The loading branch under hysteresis").
         Caveat::CohesivePinnedPullOff => 0.3,
+        // Alone: at most 11.3 % at 16 cells over the sweeps' seeds 51, 53,
+        // 56, 60, 71, 75, 77 and 80 to 92 (BENCHMARKS.md, "The zone stiffer
+        // than the contact").
+        Caveat::CohesiveZoneLongAgainstLayer => 0.15,
         // +40 % at 16 cells, a zone 2.9 times the layer's thickness over a
         // base 3850 times softer (seed 74; BENCHMARKS.md, "Seeds 74 to 85").
-        Caveat::CohesiveZoneLongAgainstLayer => 0.5,
+        Caveat::CohesiveZoneStifferThanContact => 0.5,
         // 0.9 to 25 % weak (BENCHMARKS.md, "The cohesive zone on contacts it
         // spans").
         Caveat::CohesiveZoneSpansContact => 0.3,

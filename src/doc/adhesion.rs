@@ -741,9 +741,17 @@
 //! times softer the long zone costs tens of per cents: a paraboloid on a
 //! 57 GPa layer 24 um thick over a half-space 3850 times softer, pull-off
 //! +40, +14, +5.1, +0.20 % at 16, 24, 32, 64 cells across (the zone 2.9,
-//! 2.0, 1.5, 0.73 times the layer), which the caveat quotes; over a base
-//! ten times softer the same ratios cost a few per cent (`BENCHMARKS.md`,
-//! "Seeds 74 to 85").
+//! 2.0, 1.5, 0.73 times the layer); over a base ten times softer the same
+//! ratios cost a few per cent (`BENCHMARKS.md`, "Seeds 74 to 85"). What
+//! tells them apart is not the zone against the layer but the body at the
+//! zone's length against the body at the contact's size: `E*(q) = 2 / (q
+//! u_z(q))` at `q = 2 pi / l` over that at `q = pi / a`, 360 for that
+//! paraboloid and 7 over the base ten times softer. From
+//! [`ZONE_CONTACT_MODULUS_RATIO`](crate::scene::ZONE_CONTACT_MODULUS_RATIO)
+//! (30) scenes report
+//! [`Caveat::CohesiveZoneStifferThanContact`](crate::scene::Caveat::CohesiveZoneStifferThanContact)
+//! too ([`ZoneScales`](crate::scene::ZoneScales); `BENCHMARKS.md`, "The
+//! zone stiffer than the contact").
 //!
 //! The law's range `rho = 2 sqrt(dgamma l / E*)` makes the zone span its
 //! `l` when the body is as stiff as `E*` at the zone's wavelengths: the

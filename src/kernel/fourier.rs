@@ -72,6 +72,25 @@ impl FourierCompliance {
         2.0 * h * r_over_t / self.contact_modulus
     }
 
+    /// The body's contact modulus at wavenumber `|q|` (rad/m), `E*(q) = 2 /
+    /// (q u_z(q))` (Pa): the surface's `E*` at short wavelengths, the
+    /// deepest material's at long ones over an elastic base (the apparent
+    /// modulus of Perriot & Barthel 2004, J. Mater. Res. 19, 600).
+    ///
+    /// ```
+    /// use layered_contact::kernel::FourierCompliance;
+    /// use layered_contact::{Material, Substrate};
+    ///
+    /// let (film, glass) = (Material::new(1e6, 0.3)?, Material::new(7e10, 0.2)?);
+    /// let body = FourierCompliance::new(&Substrate::layer_on_elastic_base(film, 1e-4, glass)?);
+    /// assert!((body.contact_modulus_at(1e9) / film.contact_modulus() - 1.0).abs() < 1e-6);
+    /// assert!((body.contact_modulus_at(1e-8) / glass.contact_modulus() - 1.0).abs() < 1e-6);
+    /// Ok::<(), layered_contact::Error>(())
+    /// ```
+    pub fn contact_modulus_at(&self, q: f64) -> f64 {
+        2.0 / (q.abs() * self.eval(q))
+    }
+
     /// `u_z(0)`: finite only for a layer on a rigid base.
     pub fn at_zero(&self) -> f64 {
         self.eval(0.0)

@@ -35,6 +35,7 @@
 //! ```
 
 mod accuracy;
+mod caveat;
 mod curve;
 mod energy;
 #[cfg(feature = "serde")]
@@ -49,7 +50,10 @@ mod spec;
 mod stresses;
 
 pub use accuracy::{richardson, Converged, Quantity};
-pub use curve::{Caveat, Curve, Phase, Step, PINNED_AREA_FRACTION, SOFT_BELOW_CONTRAST};
+pub use caveat::{
+    Caveat, ZoneScales, PINNED_AREA_FRACTION, SOFT_BELOW_CONTRAST, ZONE_CONTACT_MODULUS_RATIO,
+};
+pub use curve::{Curve, Phase, Step};
 pub use reference::Reference;
 pub use spec::{
     Adhesion, CustomIndenter, IndenterSpec, LayerSpec, MaterialSpec, SubstrateSpec, Tilt,

@@ -290,6 +290,7 @@ impl<'a> Runner<'a> {
         let substrate = self.solver.substrate();
         let soft_below = substrate.surface_material().contact_modulus()
             >= super::SOFT_BELOW_CONTRAST * substrate.softest_contact_modulus();
+        let peak_radius = super::caveat::peak_radius(&self.steps);
         let mut curve = Curve {
             steps: self.steps,
             grid: *self.solver.grid(),
@@ -298,25 +299,14 @@ impl<'a> Runner<'a> {
             // criterion's or the cohesive zone's.
             caveats: match (self.scene.adhesion.works(), self.cohesive) {
                 (Some(_), None) => vec![super::Caveat::MeshDependentAdhesion],
-                (Some(_), Some(zone)) => {
-                    let (spacing, top) = (
-                        self.solver.grid().spacing(),
-                        self.solver.substrate().top_thickness(),
-                    );
-                    let thin = !zone.resolves_layer(spacing, top);
-                    let rough = matches!(self.scene.indenter, IndenterSpec::RoughSurface { .. });
-                    let spans = self
-                        .least_cohesive
-                        .is_some_and(|(_, across)| across < zone.cells_on(spacing, top));
-                    [
-                        (thin, super::Caveat::CohesiveZoneLongAgainstLayer),
-                        (rough, super::Caveat::CohesiveZoneOnRoughSurface),
-                        (spans, super::Caveat::CohesiveZoneSpansContact),
-                    ]
-                    .into_iter()
-                    .filter_map(|(applies, caveat)| applies.then_some(caveat))
-                    .collect()
-                }
+                (Some(_), Some(zone)) => super::caveat::cohesive(
+                    &zone,
+                    substrate,
+                    self.solver.grid().spacing(),
+                    peak_radius,
+                    &self.scene.indenter,
+                    self.least_cohesive.map(|(_, across)| across),
+                ),
                 _ => Vec::new(),
             },
             stresses: None,

@@ -208,8 +208,18 @@ fn run_with(
     for caveat in &curve.caveats {
         say!("caveat: {caveat}");
         if *caveat == Caveat::CohesiveZoneLongAgainstLayer {
-            if let Some(line) = zone_against_layer(scene, curve.grid.spacing())? {
-                say!("{line}");
+            if let Some(s) = scene.zone_scales(&curve)? {
+                say!(
+                    "  the zone: {} cells, {:.4e} m, {:.2} times the top layer's thickness \
+                     ({:.4e} m); the body {:.3} times as stiff at its length as at the peak \
+                     contact's radius ({:.4e} m)",
+                    s.cells,
+                    s.length,
+                    s.length / s.layer_thickness,
+                    s.layer_thickness,
+                    s.modulus_ratio,
+                    s.contact_radius
+                );
             }
         }
     }
@@ -224,7 +234,17 @@ fn run_with(
             say!("{line}");
         }
     }
-    for r in scene.reference()? {
+    // The run stands without its exact values: a reference the closed forms
+    // cannot reach (a contact beyond the radii they tabulate) is said, not
+    // turned into a failed run.
+    let references = match scene.reference() {
+        Ok(references) => references,
+        Err(e) => {
+            say!("no exact values to compare with: {e}");
+            Vec::new()
+        }
+    };
+    for r in references {
         if let Some(bem) = r.quantity.of(&curve) {
             let error = if r.value == 0.0 {
                 format!("difference {:.3e}", bem - r.value)
@@ -327,26 +347,4 @@ fn reference(scene: &Scene) -> Result<()> {
         say!("{}: {:.9e} ({})", r.quantity.name(), r.value, r.source);
     }
     Ok(())
-}
-
-/// The cohesive zone's length against the top layer's thickness on cells
-/// of `spacing` (m), the measure of
-/// [`Caveat::CohesiveZoneLongAgainstLayer`]'s bias (tens of per cents at
-/// three times the thickness over a body far softer below, a few where the
-/// body is not; the caveat's doc), so that a user can tell how far to
-/// refine.
-fn zone_against_layer(scene: &Scene, spacing: f64) -> Result<Option<String>> {
-    let (Some(zone), Some(thickness)) = (
-        scene.cohesive_zone()?,
-        scene.substrate.build()?.top_thickness(),
-    ) else {
-        return Ok(None);
-    };
-    let cells = zone.cells_on(spacing, Some(thickness));
-    let length = cells * spacing;
-    Ok(Some(format!(
-        "  the zone: {cells} cells, {length:.4e} m, {:.2} times the top layer's thickness \
-         ({thickness:.4e} m)",
-        length / thickness
-    )))
 }
