@@ -74,6 +74,14 @@ pub(crate) struct Curve {
     /// The stresses below the surface at the most loaded step, when the
     /// scene's `outputs.stresses` asks for them (see `subsurface_stress`).
     stresses: Option<Py<PyDict>>,
+    /// The cohesive zone's scales on a layered body (`cells`, `length` m,
+    /// `layer_thickness` m, `contact_radius` m of the peak, and
+    /// `modulus_ratio`, the body's contact modulus at the zone's length
+    /// over that at the peak contact's: from 30 with a zone long against
+    /// the layer the caveat of a zone stiffer than the contact), None
+    /// without a cohesive zone or a layer: see
+    /// `layered_contact::scene::ZoneScales`.
+    zone_scales: Option<Py<PyDict>>,
 }
 
 #[pymethods]
@@ -103,6 +111,7 @@ impl Curve {
         state.set_item("caveats", &c.caveats)?;
         state.set_item("adhesion_method", &c.adhesion_method)?;
         state.set_item("stresses", &c.stresses)?;
+        state.set_item("zone_scales", &c.zone_scales)?;
         Ok((slf.get_type().getattr("_rebuild")?, (state,)))
     }
 
@@ -128,6 +137,11 @@ impl Curve {
             caveats: get("caveats")?.extract()?,
             adhesion_method: get("adhesion_method")?.extract()?,
             stresses: get("stresses")?.extract()?,
+            // Absent from curves pickled before 0.2.0's zone scales.
+            zone_scales: match state.get_item("zone_scales")? {
+                Some(v) => v.extract()?,
+                None => None,
+            },
         })
     }
 
@@ -279,7 +293,26 @@ pub(crate) fn run_scene(
             .as_ref()
             .map(|r| stresses::stresses_dict(py, &curve.grid, r).map(Bound::unbind))
             .transpose()?,
+        zone_scales: scene
+            .zone_scales(&curve)
+            .py_err()?
+            .map(|z| zone_scales_dict(py, &z).map(Bound::unbind))
+            .transpose()?,
     })
+}
+
+/// `ZoneScales` as a dict.
+fn zone_scales_dict<'py>(
+    py: Python<'py>,
+    z: &lc::scene::ZoneScales,
+) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("cells", z.cells)?;
+    d.set_item("length", z.length)?;
+    d.set_item("layer_thickness", z.layer_thickness)?;
+    d.set_item("contact_radius", z.contact_radius)?;
+    d.set_item("modulus_ratio", z.modulus_ratio)?;
+    Ok(d)
 }
 
 /// Validates a scene; returns `(rows, columns, spacing, memory_bytes)` of

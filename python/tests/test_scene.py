@@ -330,3 +330,40 @@ def test_a_tilted_punch_comes_off_by_the_local_criterion():
     balance = lc.run_scene(dict(scene, solver={"adhesion_method": "energy_balance"}))
     assert len(balance.caveats) == 1
     assert balance.pull_off["force"] / onset > 1.05
+
+
+def test_zone_scales_mark_a_zone_stiffer_than_the_contact():
+    """The sweep's seed 74 (a paraboloid on a 57 GPa layer 24.1 um thick
+    resting on a base 3850 times softer, 16 cells across): the two-cell zone
+    is 2.93 times the layer (two cells of the grid the curve reports, over
+    the scene's thickness), the body about 450 times as stiff at the zone's
+    length as at the peak contact's (360 at the exact peak radius, more at
+    the coarse run's wider one; BENCHMARKS.md, "The zone stiffer than the
+    contact"), and the curve carries both caveats: its pull-off is 40 % too
+    strong."""
+    import pathlib
+    import pickle
+
+    path = (pathlib.Path(__file__).resolve().parents[2] / "examples" / "scenes"
+            / "long_zone" / "stiff_layer_far_softer_base.toml")
+    curve = lc.run_scene(str(path))
+    scales = curve.zone_scales
+    assert scales["cells"] == 2.0
+    assert scales["length"] == pytest.approx(2 * curve.grid[2], rel=1e-12)
+    assert scales["length"] / scales["layer_thickness"] == pytest.approx(2.93, abs=0.01)
+    assert 300 < scales["modulus_ratio"] < 600
+    assert scales["contact_radius"] == pytest.approx(max(curve.contact_radius), rel=1e-12)
+    assert len(curve.caveats) == 2 and "far stiffer than the contact" in curve.caveats[1]
+    exact = lc.scene_reference(str(path))["pull_off_force"]
+    assert 0.35 < curve.pull_off["force"] / exact - 1 < 0.45
+    assert pickle.loads(pickle.dumps(curve)).zone_scales == scales
+    # Without a layer there are no scales.
+    half = lc.run_scene({
+        "substrate": {"kind": "half_space", "youngs_modulus": 1e6, "poisson_ratio": 0.5},
+        "indenter": {"kind": "sphere", "radius": 1e-3},
+        "adhesion": {"kind": "constant", "work_of_adhesion": 0.05},
+        "protocol": {"kind": "cycle", "max_depth": 2e-6, "steps": 4},
+        "resolution": {"cells_across": 16},
+        "solver": {"adhesion_method": "cohesive_zone"},
+    })
+    assert half.zone_scales is None and half.caveats == []

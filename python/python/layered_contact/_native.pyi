@@ -214,6 +214,7 @@ class Curve:
     caveats: list[str]
     adhesion_method: Optional[str]
     stresses: Optional[dict]
+    zone_scales: Optional[dict]
     def __len__(self) -> int: ...
 
 def run_scene(
