@@ -567,7 +567,9 @@ fn fit_recovers_the_film_from_a_curve() {
 /// long: seed 74's paraboloid on a 57 GPa layer 24.13 um thick over a base
 /// 3850 times softer, at 16 cells across, has its zone at the fewest two
 /// cells of the grid `check` prints (`BENCHMARKS.md`, "Seeds 74 to 85":
-/// 2.9 times the layer, the pull-off +39.9 %).
+/// 2.9 times the layer, the pull-off +39.9 %), how much stiffer the body is
+/// at that length than at the contact's, and the resolution that brings
+/// the zone within the layer.
 #[test]
 fn run_says_how_long_the_zone_is_against_the_layer() {
     let dir = folder("long_zone");
@@ -610,6 +612,21 @@ fn run_says_how_long_the_zone_is_against_the_layer() {
         stdout.contains("caveat: cohesive zone on a skin far stiffer than the contact's body"),
         "{stdout}"
     );
+    // The resolution it names is the least whose grid holds the zone of
+    // two cells within the layer (47 here).
+    let across: usize = stdout
+        .split("  cells_across = ")
+        .nth(1)
+        .and_then(|rest| rest.split(' ').next())
+        .and_then(|number| number.parse().ok())
+        .unwrap_or_else(|| panic!("{stdout}"));
+    let zone_over_layer = |cells_across: usize| {
+        let mut scene = toml::from_str::<Scene>(source).unwrap();
+        scene.resolution.cells_across = cells_across;
+        2.0 * scene.grid().unwrap().spacing() / 2.412818170441917e-5
+    };
+    assert!(zone_over_layer(across) <= 1.0, "{across}");
+    assert!(zone_over_layer(across - 1) > 1.0, "{across}");
 }
 
 /// A run whose exact values the closed forms cannot reach (a cone with

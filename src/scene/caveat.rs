@@ -335,9 +335,9 @@ impl std::fmt::Display for Caveat {
             Caveat::CohesiveZoneStifferThanContact => f.write_str(
                 "cohesive zone on a skin far stiffer than the contact's body: at the zone's \
                  length the body is at least 30 times stiffer than at the contact's size (a \
-                 stiff layer on a far softer body), and such pull-offs came out too strong by \
-                 6 to 13 % with the ratio below 100 and by 32 and 40 % above it at 16 cells \
-                 across (the last +5 % at 32 and +0.2 % at 64): refine the grid until the zone \
+                 stiff layer on a far softer body), and such pull-offs came out -0.2 to +13 % \
+                 off with the ratio below 100 and +19 to +40 % above it at 16 cells across \
+                 (the last +5 % at 32 and +0.2 % at 64): refine the grid until the zone \
                  is shorter than the layer's thickness, or for an axisymmetric contact use the \
                  energy balance",
             ),

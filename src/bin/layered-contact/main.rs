@@ -25,7 +25,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
-use layered_contact::scene::{Caveat, Scene};
+use layered_contact::scene::{Caveat, IndenterSpec, Scene};
 
 /// Contact mechanics of coated elastic bodies: run scenes from files.
 #[derive(Parser)]
@@ -220,6 +220,21 @@ fn run_with(
                     s.modulus_ratio,
                     s.contact_radius
                 );
+                // The cell shrinks as `cells_across` grows (a height map's
+                // grid is its own): the zone of two cells within the
+                // layer's thickness from this many.
+                if !matches!(
+                    scene.indenter,
+                    IndenterSpec::HeightMap { .. } | IndenterSpec::RoughSurface { .. }
+                ) {
+                    let across =
+                        scene.resolution.cells_across as f64 * s.length / s.layer_thickness;
+                    say!(
+                        "  cells_across = {} or more brings the zone within the layer's \
+                         thickness",
+                        across.ceil()
+                    );
+                }
             }
         }
     }
@@ -302,18 +317,15 @@ fn check(scene: &Scene, ranks: Option<usize>) -> Result<()> {
         // keeps them (8 bytes per cell of its rows; the synthesis's 24
         // come and go before the solver's vectors are allocated).
         let own_rows = match &scene.indenter {
-            layered_contact::scene::IndenterSpec::HeightMap { path, .. } => path
+            IndenterSpec::HeightMap { path, .. } => path
                 .extension()
                 .is_some_and(|e| e.eq_ignore_ascii_case("npy")),
-            layered_contact::scene::IndenterSpec::RoughSurface { .. } => true,
+            IndenterSpec::RoughSurface { .. } => true,
             _ => false,
         };
         if own_rows {
             per_rank += 8 * grid.len().div_ceil(ranks);
-        } else if matches!(
-            scene.indenter,
-            layered_contact::scene::IndenterSpec::HeightMap { .. }
-        ) {
+        } else if matches!(scene.indenter, IndenterSpec::HeightMap { .. }) {
             per_rank += 24 * grid.len();
         }
         say!(
