@@ -73,9 +73,9 @@
 //! `LAYERED_CONTACT_REFERENCE_SEED` draws other scenes (see
 //! `doc::reliability`). `LAYERED_CONTACT_CASE_SECONDS=400` lets the slow
 //! classes above finish instead of stopping the sweep: so bounded, the
-//! energy balance's seeds 80 and 89 and the cohesive zone's seed 79, each
-//! stopped at 60 s before, pass their 40 cases (BENCHMARKS.md, "The zone
-//! stiffer than the contact").
+//! energy balance's seeds 80, 83, 85, 89 and 93 and the cohesive zone's 79
+//! and 106, each stopped at 60 s before, pass their 40 cases
+//! (BENCHMARKS.md, "The zone stiffer than the contact").
 
 #![cfg(feature = "serde")]
 
