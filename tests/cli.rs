@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use layered_contact::scene::Scene;
+use layered_contact::scene::{Quantity, Scene};
 
 const PUNCH: &str = r#"# A flat punch cycled on a rubber half-space.
 [substrate]
@@ -629,14 +629,16 @@ fn run_says_how_long_the_zone_is_against_the_layer() {
     assert!(zone_over_layer(across - 1) > 1.0, "{across}");
 }
 
-/// A run whose exact values the closed forms cannot reach (a cone with
-/// hysteresis whose pull-off contact lies beyond the radii the layered JKR
-/// solution tabulates; the cohesive reference sweep's seed 75) still
-/// succeeds: it says why there is nothing to compare with and prints the
-/// pull-off the library computes. Before, the run ended in that error
-/// after its results.
+/// Seed 75's cone with hysteresis (works 1.7e5 and 8.0e5 J/m^2) on a 52
+/// GPa layer resting on a base 970 times softer: its exact values ended in
+/// an error (the loading root beyond a local maximum of the branch, see
+/// `tests/tips.rs`), and the tool then failed after printing its results.
+/// Now the run compares with them: peak force 162.43 N and pull-off
+/// -1467.6 N exact, the cohesive zone at 16 cells +0.19 % and -12.0 % (on
+/// the grid sized from the exact peak; the pinned pull-off's caveat: too
+/// weak by up to tens of per cents at 16 cells over a far softer base).
 #[test]
-fn run_without_exact_values_still_succeeds() {
+fn run_compares_a_cone_over_a_far_softer_base_with_its_exact_values() {
     let dir = folder("no_reference");
     let source = &resting_cycle(
         [5.233563611308424e10, 0.2, 4.978801340756114e-4],
@@ -646,20 +648,31 @@ fn run_without_exact_values_still_succeeds() {
         4.4752631589373295e-4,
     );
     std::fs::write(dir.join("cone.toml"), source).unwrap();
-    let scene = toml::from_str::<Scene>(source).unwrap();
-    assert!(scene.reference().is_err());
     let out = tool(&["run", "cone.toml", "-o", "result"], &dir);
     assert!(out.status.success(), "{}", text(&out.stderr));
     let stdout = text(&out.stdout);
+    let exact = toml::from_str::<Scene>(source)
+        .unwrap()
+        .reference()
+        .unwrap();
+    let pull_off = exact
+        .iter()
+        .find(|r| r.quantity == Quantity::PullOffForce)
+        .unwrap()
+        .value;
+    assert!((pull_off / -1467.6 - 1.0).abs() < 1e-4, "{pull_off}");
     assert!(
-        stdout.contains("no exact values to compare with: "),
+        stdout.contains("pull_off_force: ") && stdout.contains("pinned pull-off"),
         "{stdout}"
     );
-    let pull_off = scene.run(&mut |_| {}).unwrap().pull_off().unwrap().force;
-    assert!(
-        stdout.contains(&format!("pull-off: {pull_off:.6e} N")),
-        "{stdout}"
-    );
+    let error: f64 = stdout
+        .split("pull_off_force: ")
+        .nth(1)
+        .and_then(|rest| rest.split(", ").nth(1))
+        .and_then(|e| e.split(' ').next())
+        .and_then(|e| e.parse().ok())
+        .unwrap_or_else(|| panic!("{stdout}"));
+    assert!((-20.0..-10.0).contains(&error), "{error}");
 }
 
 /// A cycle of four steps to `max_depth` (m) through the cohesive zone, 16

@@ -400,3 +400,44 @@ fn jkr_cone_closed_form_matches_the_exact_cone() {
     assert!(JkrCone::new(&rubber(), 1.6, 0.05).is_err());
     assert!(JkrCone::new(&rubber(), 1.2, -0.05).is_err());
 }
+
+/// A cone on a stiff layer resting on a far softer base, with a large work
+/// of adhesion (the cohesive reference sweep's seed 75: a 52 GPa layer 0.5
+/// mm thick over a base 970 times softer, 1.7e5 J/m^2): the depth of its
+/// adhesive branch rises with the contact radius to a local maximum
+/// (1.16e-3 m near 0.51 mm) and then falls (the base's own JKR branch,
+/// -4.5e-3 m at 8.8 mm). The loading equilibrium at a depth below that
+/// maximum is the root on the rising part, about 0.26 mm, where the
+/// cohesive zone's grid solution lands (0.27 mm at 16 cells across, +3.7 %
+/// in its contact radius, +0.19 % in its peak force): the walk from Sneddon's radius (0.71 mm, on the falling
+/// part) read its first rising sample as the branch's minimum and ended in
+/// `InvalidParameter` from a least depth at the table's end. Checked
+/// against direct evaluations: the depth equal to the target, rising
+/// through it.
+#[test]
+fn a_root_beyond_a_local_maximum_of_the_branch_is_found() {
+    let body = Substrate::layer_resting_on_elastic_base(
+        Material::new(5.233563611308424e10, 0.2).unwrap(),
+        4.978801340756114e-4,
+        Material::new(5.3796043836172484e7, 0.49).unwrap(),
+    )
+    .unwrap();
+    let exact = Axisymmetric::up_to_contact_radius(&body, 1.1e-2).unwrap();
+    let cone = exact
+        .tip(
+            Tip::Cone {
+                half_angle: 1.1913977797509538,
+            },
+            1.742310475350797e5,
+        )
+        .unwrap();
+    // The branch: up to a local maximum of the depth, then down.
+    let depth = |a: f64| cone.at_contact_radius(a).unwrap().depth;
+    assert!(depth(5.1e-4) > 1e-3 && depth(8.8e-3) < -4e-3);
+    let target = 4.475263158937329e-4;
+    let state = cone.at_depth(target).unwrap().unwrap();
+    let a = state.contact_radius;
+    assert!((state.depth / target - 1.0).abs() < 1e-9, "{state:?}");
+    assert!((2.5e-4..2.8e-4).contains(&a), "{a}");
+    assert!(depth(0.99 * a) < target && target < depth(1.01 * a));
+}

@@ -155,6 +155,13 @@ fn stable_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option<
         hi * 1e-9
     };
     let (mut previous, mut lo) = (key(hi)?, hi);
+    // Whether a sample has come out below the one before it (the walk is on
+    // a part of the branch that rises with the radius), and the sample at
+    // which the walk first met one above the one before it while none had
+    // (a part that falls with the radius: beyond a local maximum, as a
+    // film's on a far softer base, whose own JKR branch falls far beyond
+    // the film's; or past the minimum in the first step).
+    let (mut fell, mut rise_start) = (false, None);
     loop {
         let next = 0.9 * lo;
         let value = key(next)?;
@@ -163,7 +170,7 @@ fn stable_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option<
             lo = next;
             break;
         }
-        if value > previous || next < floor {
+        if (value > previous && fell) || next < floor {
             // Passed the minimum (or ran out of branch) above the target.
             if tip.work() == 0.0 {
                 return Ok(None);
@@ -173,11 +180,15 @@ fn stable_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option<
                 return Ok(None);
             }
             // The minimum dips below the target between samples: bracket
-            // between it and the last sample above.
-            hi = lo;
+            // between it and the last sample above it on the rising part.
+            hi = if fell { lo } else { rise_start.unwrap_or(lo) };
             lo = least.contact_radius;
             break;
         }
+        if value > previous && rise_start.is_none() {
+            rise_start = Some(lo);
+        }
+        fell |= value < previous;
         previous = value;
         lo = next;
     }
