@@ -434,8 +434,9 @@ impl IndenterSpec {
     }
 
     /// Whether the indenter ends at the edge of its own grid (the height-map
-    /// kinds), so that a contact reaching it is not truncated by the grid.
-    pub(crate) fn is_map(&self) -> bool {
+    /// kinds), so that a contact reaching it is not truncated by the grid and
+    /// `resolution.cells_across` does not set the cell.
+    pub fn is_map(&self) -> bool {
         matches!(
             self,
             IndenterSpec::HeightMap { .. } | IndenterSpec::RoughSurface { .. }

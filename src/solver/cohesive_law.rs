@@ -312,7 +312,7 @@ pub(super) fn zone_modulus(
     let mut modulus = surface;
     for k in 0..=samples {
         let q = first * 10f64.powf(k as f64 / PER_DECADE);
-        let seen = 2.0 / (q * compliance.eval(q));
+        let seen = compliance.contact_modulus_at(q);
         if seen.is_nan() {
             modulus = seen;
             break;

@@ -223,10 +223,7 @@ fn run_with(
                 // The cell shrinks as `cells_across` grows (a height map's
                 // grid is its own): the zone of two cells within the
                 // layer's thickness from this many.
-                if !matches!(
-                    scene.indenter,
-                    IndenterSpec::HeightMap { .. } | IndenterSpec::RoughSurface { .. }
-                ) {
+                if !scene.indenter.is_map() {
                     let across =
                         scene.resolution.cells_across as f64 * s.length / s.layer_thickness;
                     say!(
