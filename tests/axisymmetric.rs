@@ -251,3 +251,93 @@ fn pressure_profiles_integrate_to_the_force() {
         assert_eq!(punch.pressure(d, 1.01 * a), 0.0);
     }
 }
+
+/// A tip's pressure profile (`LayeredTip::pressure`) integrates to the force
+/// of its equilibrium, which the Fredholm solution gives by another route
+/// (`F = 2 E1* a Integral phi`), for the sphere, the cone and the rounded
+/// cone (its kink inside the contact) on a layer over a base 8000 times
+/// softer and on a film on glass, to 1e-6 of the integral of its magnitude
+/// (it turns tensile inside on the first body); and the paraboloid's equals
+/// `LayeredParaboloid::pressure`.
+#[test]
+fn tip_pressures_integrate_to_their_force() {
+    use layered_contact::analytic::Tip;
+    let rule = gauss_quad::legendre::GaussLegendre::new(32.try_into().unwrap());
+    let stiff = Material::new(9.5e7, 0.45).unwrap();
+    let bodies = [
+        Substrate::layer_on_elastic_base(stiff, 1.36e-6, Material::new(1.19e4, 0.45).unwrap())
+            .unwrap(),
+        Substrate::layer_on_rigid_base(rubber(), 2e-6).unwrap(),
+    ];
+    let tips = [
+        Tip::Sphere { radius: 23.4e-6 },
+        Tip::Cone { half_angle: 1.2 },
+        Tip::RoundedCone {
+            half_angle: 1.2,
+            tip_radius: 8e-6,
+        },
+    ];
+    for body in &bodies {
+        let exact = Axisymmetric::new(body, 8.0).unwrap();
+        for tip in tips {
+            let layered = exact.tip(tip, 0.0).unwrap();
+            for a in [3e-6, 9.7e-6] {
+                let state = layered.at_contact_radius(a).unwrap();
+                // r = a sin t: the edge's square root becomes smooth; the
+                // pieces halve towards the centre, where a cone's pressure
+                // grows like ln(a/r), and the rounded cone's kink starts a
+                // piece over w^2 (its pressure starts like a square root
+                // past the kink).
+                let force = |t: f64| {
+                    let r = a * t.sin();
+                    2.0 * PI * r * layered.pressure(a, r).unwrap() * a * t.cos()
+                };
+                let kink = match tip {
+                    Tip::RoundedCone {
+                        half_angle,
+                        tip_radius,
+                    } => Some(tip_radius * half_angle.cos()).filter(|&b| b < a),
+                    _ => None,
+                };
+                let split = kink.map_or(PI / 2.0, |b| (b / a).asin());
+                let mut breaks: Vec<f64> = (0..6).map(|k| split / 4f64.powi(5 - k)).collect();
+                breaks.insert(0, 0.0);
+                // The sum and the sum of magnitudes (the pressure changes
+                // sign: the quadrature's error is on the scale of the
+                // latter).
+                let sums = |lo: f64, hi: f64, f: &dyn Fn(f64) -> f64| {
+                    rule.iter().fold((0.0, 0.0), |(s, m), (x, w)| {
+                        let v = 0.5 * (hi - lo) * w * f(lo + 0.5 * (hi - lo) * (x + 1.0));
+                        (s + v, m + v.abs())
+                    })
+                };
+                let (mut integral, mut magnitude) = breaks
+                    .windows(2)
+                    .map(|w| sums(w[0], w[1], &force))
+                    .fold((0.0, 0.0), |(s, m), (a, b)| (s + a, m + b));
+                if kink.is_some() {
+                    let span = PI / 2.0 - split;
+                    let (s, m) = sums(0.0, 1.0, &|w| 2.0 * span * w * force(split + span * w * w));
+                    integral += s;
+                    magnitude += m;
+                }
+                assert!(
+                    (integral - state.force).abs() < 1e-6 * magnitude,
+                    "{tip:?} at {a}: {integral} vs {} ({magnitude})",
+                    state.force
+                );
+            }
+        }
+        let radius = 23.4e-6;
+        let tip = exact.tip(Tip::Paraboloid { radius }, 0.0).unwrap();
+        let ball = exact.paraboloid(radius, 0.0).unwrap();
+        for r in [0.0, 2e-6, 5e-6, 9e-6] {
+            let (p, q) = (
+                tip.pressure(9.7e-6, r).unwrap(),
+                ball.pressure(9.7e-6, r).unwrap(),
+            );
+            // Two quadratures of the tail (over `v` there, `u` here).
+            assert!((p - q).abs() < 1e-8 * q.abs(), "{r}: {p} vs {q}");
+        }
+    }
+}

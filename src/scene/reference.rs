@@ -57,7 +57,10 @@ impl Scene {
     ///   force of a displacement-controlled unloading; where the peak's
     ///   contact is narrower than that pull-off's (a receding work well
     ///   above the advancing one), the force at which the pinned contact
-    ///   lets go, the receding state at the peak's radius.
+    ///   lets go, the receding state at the peak's radius. Without
+    ///   adhesion none where that disc's solution pulls somewhere inside
+    ///   ([`LayeredTip::holds_without_adhesion`]): a stiff layer on a far
+    ///   softer base lifts off the tip's middle, and the contact is a ring.
     ///
     /// Empty for other scenes, for contacts wider than 50 layer
     /// thicknesses, and for a sphere pressed to a contact beyond 0.95 of its
@@ -159,6 +162,19 @@ impl Scene {
                     return Ok(out);
                 };
                 if let Some(state) = peak.filter(|s| s.contact_radius > 0.0) {
+                    // Without adhesion the disc is the contact only where
+                    // its solution presses everywhere: a stiff layer on a
+                    // far softer base, pressed far, lifts off the tip's
+                    // middle (the contact a ring; a sphere's disc pulled
+                    // there at 18 % of its mean pressure, and its radius
+                    // was 45 % off the BEM's ring's area).
+                    if !adhesive
+                        && !exact
+                            .tip(tip, 0.0)?
+                            .holds_without_adhesion(state.contact_radius)?
+                    {
+                        return Ok(out);
+                    }
                     if self.peak_depth().is_some() {
                         out.push(Reference {
                             quantity: Quantity::PeakForce,

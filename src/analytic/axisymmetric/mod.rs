@@ -39,6 +39,7 @@ mod family;
 mod paraboloid;
 mod punch;
 mod tip;
+mod tip_pressure;
 
 pub use curve::{before_jump_off, ForceCurve};
 pub use family::{ModulusFamily, MODULUS_NODES};
@@ -140,6 +141,8 @@ struct Nystrom {
     /// ([`super::LayeredTip`]) solved with the same factorisation and
     /// converged with the others.
     extra: Option<[f64; 2]>,
+    /// That third solution `chi` at the nodes (empty without one).
+    extra_values: Vec<f64>,
     kernel: Option<Arc<CosineKernel>>,
     /// Relative change at the last doubling.
     change: f64,
@@ -154,6 +157,7 @@ impl Nystrom {
             unit: Vec::new(),
             quadratic: Vec::new(),
             extra: None,
+            extra_values: Vec::new(),
             kernel: None,
             change: 0.0,
         }
@@ -195,6 +199,7 @@ impl Nystrom {
         };
         let unit = solve(DVector::from_element(n, 1.0))?;
         let quadratic = solve(DVector::from_iterator(n, nodes.iter().map(|x| x * x)))?;
+        let mut extra_values = Vec::new();
         let extra = match extra {
             None => None,
             Some(rhs) => {
@@ -207,6 +212,7 @@ impl Nystrom {
                         .zip(chi.iter())
                         .map(|((s, w), v)| w * Self::kernel_at(kernel, eps, 1.0, *s) * v)
                         .sum::<f64>();
+                extra_values = chi.as_slice().to_vec();
                 Some([integral, edge])
             }
         };
@@ -217,6 +223,7 @@ impl Nystrom {
             unit: unit.as_slice().to_vec(),
             quadratic: quadratic.as_slice().to_vec(),
             extra,
+            extra_values,
             kernel: Some(Arc::clone(kernel)),
             change: f64::INFINITY,
         })
@@ -317,6 +324,18 @@ impl Nystrom {
         rhs: f64,
         kernel_fn: fn(&CosineKernel, f64, f64, f64) -> f64,
     ) -> f64 {
+        self.interpolate_values(self.values(quadratic), xi, rhs, kernel_fn)
+    }
+
+    /// [`Nystrom::interpolate`] of the solution whose node values are
+    /// `values`.
+    fn interpolate_values(
+        &self,
+        values: &[f64],
+        xi: f64,
+        rhs: f64,
+        kernel_fn: fn(&CosineKernel, f64, f64, f64) -> f64,
+    ) -> f64 {
         match &self.kernel {
             None => rhs,
             Some(kernel) => {
@@ -324,7 +343,7 @@ impl Nystrom {
                     .nodes
                     .iter()
                     .zip(&self.weights)
-                    .zip(self.values(quadratic))
+                    .zip(values)
                     .map(|((s, w), v)| w * kernel_fn(kernel, self.eps, xi, *s) * v)
                     .sum::<f64>()
             }

@@ -25,7 +25,7 @@ use crate::error::{non_negative_finite, positive_finite, Error, Result};
 /// per piece (the integrands are smooth within a piece).
 const PIECE_ORDER: usize = 64;
 /// The piecewise rule, built once.
-fn piece_rule() -> &'static GaussLegendre {
+pub(super) fn piece_rule() -> &'static GaussLegendre {
     static RULE: OnceLock<GaussLegendre> = OnceLock::new();
     RULE.get_or_init(|| gauss(PIECE_ORDER))
 }
@@ -176,7 +176,7 @@ impl Tip {
     }
 
     /// Where `g` has a kink (the rounded cone's `b`), m.
-    fn kink(&self) -> Option<f64> {
+    pub(super) fn kink(&self) -> Option<f64> {
         match *self {
             Tip::RoundedCone {
                 half_angle,
@@ -232,10 +232,19 @@ pub struct LayeredTip {
 /// The four numbers a contact radius needs: `Integral psi_1`, `psi_1(1)`,
 /// `Integral psi_g` (m) and `psi_g(1)` (m).
 #[derive(Debug, Clone, Copy)]
-struct Solved {
-    eps: f64,
-    unit: [f64; 2],
-    profile: [f64; 2],
+pub(super) struct Solved {
+    pub(super) eps: f64,
+    pub(super) unit: [f64; 2],
+    pub(super) profile: [f64; 2],
+}
+
+/// The solutions behind [`Solved`]: `psi_1` (and for a paraboloid its
+/// quadratic `psi_2`, `psi_g = (a^2/R) psi_2`) and for other tips `chi`
+/// (`psi_g = g + chi`, `chi = K g + K chi`) with the piecewise rule's nodes
+/// and weights times `g`, from which `K g` is summed.
+pub(super) struct TipFunctions {
+    pub(super) solution: Nystrom,
+    pub(super) weighted: Vec<(f64, f64)>,
 }
 
 impl Axisymmetric {
@@ -280,6 +289,15 @@ impl LayeredTip {
     }
 
     fn solved(&self, contact_radius: f64) -> Result<Solved> {
+        Ok(self.solved_with_functions(contact_radius)?.0)
+    }
+
+    /// [`LayeredTip::solved`] and the solutions themselves
+    /// ([`TipFunctions`]), for the pressure profile.
+    pub(super) fn solved_with_functions(
+        &self,
+        contact_radius: f64,
+    ) -> Result<(Solved, TipFunctions)> {
         let a = positive_finite("contact_radius", contact_radius)?;
         if let Tip::Sphere { radius } = self.tip {
             if a > self.tip.max_contact_radius() {
@@ -295,11 +313,16 @@ impl LayeredTip {
             // as `LayeredParaboloid` has it (the same values).
             let (_, unit) = self.body.nystrom(a)?;
             let curvature = a * a / radius;
-            return Ok(Solved {
+            let solved = Solved {
                 eps: unit.eps,
                 unit: [unit.integral(false), unit.edge(false)],
                 profile: [curvature * unit.integral(true), curvature * unit.edge(true)],
-            });
+            };
+            let functions = TipFunctions {
+                solution: unit,
+                weighted: Vec::new(),
+            };
+            return Ok((solved, functions));
         }
         let g = |xi: f64| self.tip.equivalent_profile(a * xi);
         let mut breaks = vec![0.0];
@@ -332,14 +355,19 @@ impl LayeredTip {
         let scale = integral_g.abs() + g(1.0).abs();
         let (_, unit) = self.body.nystrom_with(a, Some((&kg, scale)))?;
         let chi = unit.extra.unwrap_or([0.0, 0.0]);
-        Ok(Solved {
+        let solved = Solved {
             eps: unit.eps,
             unit: [unit.integral(false), unit.edge(false)],
             profile: [integral_g + chi[0], g(1.0) + chi[1]],
-        })
+        };
+        let functions = TipFunctions {
+            solution: unit,
+            weighted,
+        };
+        Ok((solved, functions))
     }
 
-    fn state_at_depth(&self, a: f64, depth: f64, solved: &Solved) -> ContactState {
+    pub(super) fn state_at_depth(&self, a: f64, depth: f64, solved: &Solved) -> ContactState {
         let e = self.body.contact_modulus;
         ContactState {
             contact_radius: a,
@@ -359,11 +387,15 @@ impl LayeredTip {
     /// with the flat punch's (by order 4096).
     pub fn at_contact_radius(&self, contact_radius: f64) -> Result<ContactState> {
         let solved = self.solved(contact_radius)?;
-        let e = self.body.contact_modulus;
-        let a = contact_radius;
-        let adhesive = (2.0 * PI * a * self.work_of_adhesion / e).sqrt();
-        let depth = (solved.profile[1] - adhesive) / solved.unit[1];
-        Ok(self.state_at_depth(a, depth, &solved))
+        let depth = self.equilibrium_depth(contact_radius, &solved);
+        Ok(self.state_at_depth(contact_radius, depth, &solved))
+    }
+
+    /// The depth at which the edge of a contact of radius `a` is in
+    /// equilibrium: `phi(1) = -sqrt(2 pi a dgamma / E1*)`.
+    pub(super) fn equilibrium_depth(&self, a: f64, solved: &Solved) -> f64 {
+        let adhesive = (2.0 * PI * a * self.work_of_adhesion / self.body.contact_modulus).sqrt();
+        (solved.profile[1] - adhesive) / solved.unit[1]
     }
 
     /// The state of a contact of radius `a` (m) held at `depth` (m), as

@@ -346,10 +346,11 @@ fn reference(scene: &Scene) -> Result<()> {
     let references = scene.reference()?;
     if references.is_empty() {
         say!(
-            "no exact values for this scene (they exist for an untilted flat punch, paraboloid \
-             or sphere on an isolated grid, whose contact stays within 50 top-layer thicknesses \
-             and, for a sphere, within 0.95 of its radius; a punch without adhesion only where \
-             its bonded face presses everywhere)"
+            "no exact values for this scene (they exist for an untilted flat punch, paraboloid, \
+             sphere or cone on an isolated grid, whose contact stays within 50 top-layer \
+             thicknesses and, for a sphere, within 0.95 of its radius; without adhesion only \
+             where the punch's bonded face, or the tip's disc of contact, presses everywhere: \
+             a stiff layer on a far softer base lifts off the middle, and the contact is a ring)"
         );
     }
     for r in references {
