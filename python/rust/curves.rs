@@ -261,3 +261,43 @@ pub(crate) fn before_jump_off<'py>(
         lc::analytic::before_jump_off(&position, &force),
     ))
 }
+
+/// The pressure (Pa) at radii `r` (m, any shape) of a tip (as [`tip`]) on
+/// `substrate` with work of adhesion `work_of_adhesion` (J/m^2) at the
+/// equilibrium of contact radius `contact_radius` (m)
+/// (`analytic::LayeredTip::pressure`), and that disc's least pressure over
+/// its mean (`LayeredTip::minimum_pressure_ratio`: negative where it pulls
+/// on the tip, which without adhesion makes the contact a ring, not the
+/// disc).
+#[pyfunction]
+#[pyo3(signature = (substrate, kind, radius, work_of_adhesion, contact_radius, r, half_angle=f64::NAN))]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn tip_pressure<'py>(
+    py: Python<'py>,
+    substrate: &Substrate,
+    kind: &str,
+    radius: f64,
+    work_of_adhesion: f64,
+    contact_radius: f64,
+    r: PyReadonlyArrayDyn<'py, f64>,
+    half_angle: f64,
+) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, f64)> {
+    let tip = tip(kind, radius, half_angle)?;
+    checked_len("r", r.shape())?;
+    let shape = r.shape().to_vec();
+    let radii: Vec<f64> = r.as_array().iter().copied().collect();
+    let substrate = substrate.inner.clone();
+    let (pressures, least) = py
+        .detach(|| -> lc::Result<(Vec<f64>, f64)> {
+            let exact =
+                lc::analytic::Axisymmetric::up_to_contact_radius(&substrate, contact_radius)?;
+            let layered = exact.tip(tip, work_of_adhesion)?;
+            let pressures = radii
+                .iter()
+                .map(|&x| layered.pressure(contact_radius, x))
+                .collect::<lc::Result<Vec<f64>>>()?;
+            Ok((pressures, layered.minimum_pressure_ratio(contact_radius)?))
+        })
+        .py_err()?;
+    Ok((PyArray1::from_vec(py, pressures).reshape(shape)?, least))
+}

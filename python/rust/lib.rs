@@ -162,6 +162,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(curves::before_jump_off, m)?)?;
     m.add_function(wrap_pyfunction!(analytic::paraboloid_series, m)?)?;
     m.add_function(wrap_pyfunction!(curves::tip_pull_off, m)?)?;
+    m.add_function(wrap_pyfunction!(curves::tip_pressure, m)?)?;
     m.add_function(wrap_pyfunction!(analytic::flat_punch_pull_off_force, m)?)?;
     Ok(())
 }

@@ -108,3 +108,25 @@ def test_bottom_effect_series_matches_the_exact_forces():
     assert abs(fitted[1] - c[1]) < 1e-6
     # Dimitriadis' first coefficient, from a fit in nu, is 0.54 % high.
     assert abs(lc.analytic.DIMITRIADIS_BONDED[0] / c[0] - 1.00537) < 1e-4
+
+
+def test_tip_pressure_is_sneddons_cone_and_finds_a_disc_that_pulls():
+    # Sneddon (1948): a cone on a half-space presses with
+    # p = (E* cot(theta) / 2) acosh(a / r).
+    theta, a = math.radians(70), 1e-6
+    r = np.array([0.1e-6, 0.5e-6, 0.9e-6, 1.2e-6])
+    half = lc.Substrate.half_space(RUBBER)
+    p, least = lc.analytic.tip_pressure(half, "cone", a, r, half_angle=theta)
+    exact = 0.5 * E_STAR / math.tan(theta) * np.arccosh(np.maximum(a / r, 1.0))
+    np.testing.assert_allclose(p, exact, rtol=1e-9)
+    assert least > 0
+    # A sphere on a 95 MPa layer over a base 8000 times softer: the disc of
+    # 9.74 um pulls at its middle (18 % of its mean; the BEM's contact is a
+    # ring there, tests/promise.rs), the disc of 3 um presses everywhere.
+    layer, base = lc.Material(9.52688603947193e7, 0.45), lc.Material(1.1906824045483834e4, 0.45)
+    plate = lc.Substrate.layer_resting_on_elastic_base(layer, 1.3643821587963536e-6, base)
+    p, least = lc.analytic.tip_pressure(plate, "sphere", 9.74e-6, [0.0], radius=2.340057717547073e-5)
+    assert -0.2 < least < -0.15
+    assert p[0] < 0
+    _, least = lc.analytic.tip_pressure(plate, "sphere", 3e-6, 0.0, radius=2.340057717547073e-5)
+    assert least > 0.1

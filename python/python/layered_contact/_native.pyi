@@ -42,6 +42,7 @@ __all__ = [
     "scene_reference",
     "scene_schema",
     "subsurface_stress",
+    "tip_pressure",
     "tip_pull_off",
 ]
 
@@ -317,6 +318,15 @@ class ForceCurve:
     @property
     def max_depth(self) -> float: ...
 
+def tip_pressure(
+    substrate: Substrate,
+    kind: str,
+    radius: float,
+    work_of_adhesion: float,
+    contact_radius: float,
+    r: npt.NDArray[np.float64],
+    half_angle: float = ...,
+) -> Tuple[npt.NDArray[np.float64], float]: ...
 def tip_pull_off(
     substrate: Substrate,
     kind: str,

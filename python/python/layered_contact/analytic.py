@@ -30,6 +30,7 @@ __all__ = [
     "jkr_state",
     "paraboloid_pull_off_force",
     "paraboloid_state",
+    "tip_pressure",
     "tip_pull_off",
 ]
 
@@ -140,6 +141,37 @@ def tip_pull_off(
     return _native.tip_pull_off(
         substrate, tip, radius, work_of_adhesion, half_angle=half_angle, spring=spring
     )
+
+
+def tip_pressure(
+    substrate: Substrate,
+    tip: str,
+    contact_radius: float,
+    r: ArrayLike,
+    *,
+    radius: float = float("nan"),
+    half_angle: float = float("nan"),
+    work_of_adhesion: float = 0.0,
+) -> Tuple[Any, float]:
+    """Exact pressure (Pa, compressive positive) at radii ``r`` (m) under an
+    axisymmetric ``tip`` (as :func:`tip_pull_off`) on ``substrate`` at its
+    equilibrium of contact radius ``contact_radius`` (m), with work of
+    adhesion ``work_of_adhesion`` (J/m^2, 0 for none), and the least
+    pressure over that disc divided by its mean. A negative least pressure
+    without adhesion means the disc pulls on the tip inside: a stiff layer
+    on a far softer base lifts off the tip's middle, the contact is a ring,
+    and the disc's solution is not the contact's (scenes then have no exact
+    values)."""
+    pressure, least = _native.tip_pressure(
+        substrate,
+        tip,
+        radius,
+        work_of_adhesion,
+        contact_radius,
+        _array(r),
+        half_angle=half_angle,
+    )
+    return _out(pressure, r), least
 
 
 #: Dimitriadis et al. (2002), bonded layer, nu = 0.5: the coefficients of
