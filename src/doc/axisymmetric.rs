@@ -85,6 +85,26 @@
 //! ([`LayeredTip::spring_pull_off`](crate::analytic::LayeredTip::spring_pull_off),
 //! [`spring_jump_in`](crate::analytic::LayeredTip::spring_jump_in)).
 //!
+//! ## The disc of contact
+//!
+//! All of this assumes that the contact is the disc `r < a`. The pressure
+//! `p(r) = (E1*/pi) [phi(a) / sqrt(a^2 - r^2) - Integral_r^a phi'(t) /
+//! sqrt(t^2 - r^2) dt]` (Sneddon 1965 on a half-space;
+//! [`LayeredTip::pressure`](crate::analytic::LayeredTip::pressure), over
+//! `t = r cosh u`, which makes the tail smooth) says whether it is: with
+//! adhesion the bonded disc may pull anywhere inside, without it only where
+//! it presses everywhere
+//! ([`LayeredTip::holds_without_adhesion`](crate::analytic::LayeredTip::holds_without_adhesion),
+//! [`LayeredFlatPunch::holds_without_adhesion`](crate::analytic::LayeredFlatPunch::holds_without_adhesion)).
+//! A stiff layer on a far softer base bends like a plate on a foundation:
+//! pressed to a few layer thicknesses its middle lifts off the tip and the
+//! contact is a ring, which the BEM finds and the disc's solution does not
+//! (a sphere on a layer 3000 to 8000 times stiffer than its base, from
+//! about `a = 3 h`; `examples/disc_or_ring.rs`). Its force still comes within
+//! about `1e-4` of the ring's there, its contact radius does not;
+//! [`Scene::reference`](crate::scene::Scene::reference) gives no exact values
+//! for such a scene.
+//!
 //! ## Numerics
 //!
 //! `k(y)` is tabulated once per substrate by Chebyshev interpolation on
