@@ -6,8 +6,9 @@
 //! least pressure over its mean (`LayeredTip::minimum_pressure_ratio`:
 //! negative where the disc would pull on the tip) beside the BEM at the
 //! disc's depth (96 cells across 2.6 contact radii, isolated): its pressure
-//! at the centre, its contact cells (the disc holds about 4312) and its
-//! force against the disc's.
+//! at the centre, its contact cells (the disc holds about 4312), its force
+//! against the disc's, and the cold solve's iterations (fine and coarse):
+//! a contact whose middle lifts off takes hundreds to thousands.
 //!
 //! `cargo run --release --example disc_or_ring`
 use layered_contact::analytic::{Axisymmetric, Tip};
@@ -20,7 +21,9 @@ fn main() -> Result<()> {
     let radius = 23.4e-6;
     let layer = Material::new(9.5e7, 0.45)?;
     let n = 96;
-    println!("E1/E2  a/h  depth m    least/mean  BEM centre Pa  BEM cells  BEM F / disc F - 1");
+    println!(
+        "E1/E2  a/h  depth m    least/mean  BEM centre Pa  BEM cells  BEM F / disc F - 1  iterations"
+    );
     for ratio in [30.0, 300.0, 3000.0, 8000.0] {
         let base = Material::new(9.5e7 / ratio, 0.45)?;
         let body = Substrate::layer_resting_on_elastic_base(layer, h, base)?;
@@ -46,9 +49,11 @@ fn main() -> Result<()> {
             let centre = 0.25 * (p[[m, m]] + p[[m - 1, m]] + p[[m, m - 1]] + p[[m - 1, m - 1]]);
             let cells = p.iter().filter(|v| **v > 0.0).count();
             println!(
-                "{ratio:5} {eps:4} {:.3e} {least:+.4e}  {centre:.4e}  {cells:9}  {:+.3e}",
+                "{ratio:5} {eps:4} {:.3e} {least:+.4e}  {centre:.4e}  {cells:9}  {:+.3e}  {} ({})",
                 state.depth,
-                solution.force / state.force - 1.0
+                solution.force / state.force - 1.0,
+                solution.iterations,
+                solution.coarse_iterations
             );
         }
     }
