@@ -14,6 +14,9 @@ cells, load control at the mean pressure `pbar` (in `E1*`), tolerance
   (Polonsky & Keer 1999, Wear 231, 206; the conjugation kept across new
   overlap where it descends), preconditioned by the box inverse `P K P`
   (Vollebregt 2014, J. Comput. Phys. 257, 333);
+- `restart`: the same, the conjugation restarted at every new overlap
+  (Polonsky and Keer's own rule, which the crate takes up once a solve
+  stalls, `src/solver/stall.rs`);
 - `k=2`, `k=8`: the box with the residual extended by `k` sweeps of the
   four-neighbour mean past the set (`edge_extension.py`);
 - `linear`: preconditioned conjugate gradients on the converged contact
@@ -55,8 +58,9 @@ def body(ratio, n):
     return (xx**2 + yy**2) / (2 * RADIUS), compliance, stiffness
 
 
-def constrained(height, compliance, pbar, precondition):
-    """The crate's constrained conjugate gradients; (pressures, iterations)."""
+def constrained(height, compliance, pbar, precondition, restart=False):
+    """The crate's constrained conjugate gradients (with `restart`, Polonsky
+    and Keer's restarts at new overlap); (pressures, iterations)."""
     apply = pc.operator(compliance)
     p = np.where(height < np.percentile(height, 5), 1.0, 0.0)
     p *= pbar / p.mean()
@@ -71,7 +75,8 @@ def constrained(height, compliance, pbar, precondition):
         z = np.where(member, z - z[member].mean(), 0.0)
         rz = np.sum(r * z)
         beta = rz / rz_old if rz_old > 0 else 0.0
-        if joining.any() and beta > 0 and rz + beta * np.sum(np.where(member, t, 0) * r) <= 0:
+        descends = rz + beta * np.sum(np.where(member, t, 0) * r) > 0
+        if joining.any() and (restart or (beta > 0 and not descends)):
             beta = 0.0
         t = np.where(member, z + beta * t, 0.0)
         step = np.sum(r * t) / np.sum(t * apply(t))
@@ -125,8 +130,9 @@ def active_set(height, compliance, pbar, precondition, loops=100):
 
 def main(n):
     print(f"{n} x {n} cells, iterations to 1e-8 from a cold start")
-    print("| E1/E2 | pbar | contact cells | PK | k=2 | k=8 | linear, box / none | active set: loops, inner |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("| E1/E2 | pbar | contact cells | PK | restart | k=2 | k=8 | linear, box / none "
+          "| active set: loops, inner |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for ratio in (1.0, 30.0, 300.0, 3000.0):
         for pbar in (3e-5, 1e-4):
             height, compliance, stiffness = body(ratio, n)
@@ -136,11 +142,13 @@ def main(n):
                 p, it = constrained(height, compliance, pbar, ee.laplace(sweeps, 1.0, box))
                 counts.append(it if sweeps else (it, p))
             (pk, p), k2, k8 = counts
+            _, restarted = constrained(height, compliance, pbar, ee.laplace(0, 1.0, box), True)
             member = p > 0
             boxed, _ = linear(height, compliance, pbar, member, ee.laplace(0, 1.0, box))
             plain, _ = linear(height, compliance, pbar, member, lambda m, r: np.where(m, r, 0.0))
             loops, inner = active_set(height, compliance, pbar, ee.laplace(0, 1.0, box))
-            print(f"| {ratio:g} | {pbar:g} | {member.sum()} | {pk} | {k2} | {k8} | {boxed} / {plain} "
+            print(f"| {ratio:g} | {pbar:g} | {member.sum()} | {pk} | {restarted} | {k2} | {k8} "
+                  f"| {boxed} / {plain} "
                   f"| {loops}, {inner} |", flush=True)
 
 
