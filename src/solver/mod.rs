@@ -54,6 +54,7 @@
 // than a five-way zip.
 #![allow(clippy::needless_range_loop)]
 
+mod active_set;
 mod adhesive;
 mod anderson;
 mod cg_ends;

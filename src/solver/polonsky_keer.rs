@@ -7,7 +7,10 @@
 //! restarted only where the new direction would not descend: rough
 //! contacts, whose working set grows in most early iterations, otherwise
 //! iterate near steepest descent. A solve whose change has stopped falling
-//! goes back to Polonsky and Keer's restarts ([`stall`](super::stall)). A
+//! goes back to Polonsky and Keer's restarts ([`stall`](super::stall)); a
+//! depth-driven one still running at its 100th iteration tries primal-dual
+//! active-set loops once ([`active_set`](super::active_set): a plate over a
+//! soft base changes its set a few cells an iteration). A
 //! cold solve's early iterations, until the
 //! change per iteration falls to `1e-5`, apply the operator in single
 //! precision; the displacement is then recomputed in double and the solve
@@ -23,6 +26,7 @@ use std::ops::Range;
 use crate::error::{Error, Result};
 use crate::indenter::Indenter;
 
+use super::active_set::ACTIVE_SET_AFTER;
 use super::multiresolution::loosened;
 use super::stall::Stall;
 use super::step_response::Arithmetic;
@@ -305,6 +309,9 @@ impl ContactSolver {
         let mut early = cold;
         let mut restarted = !cold;
         let mut stall = Stall::new();
+        // The conjugate-gradient iterations of the active-set loops, if
+        // they ran: counted in the solution's iterations.
+        let mut loop_iterations = 0;
         for iteration in 1..=self.params.max_iterations {
             self.check_interrupt("the constrained conjugate gradients")?;
             let leave = early && residual <= EARLY_ABOVE.max(tolerance);
@@ -340,6 +347,31 @@ impl ContactSolver {
                     }
                 }
                 contact_sums = None;
+            }
+            // A depth-driven solve still running tries the active-set
+            // loops once (serial, from its own start displacement:
+            // `src/solver/active_set.rs`); either way the conjugation
+            // restarts from the pressures it goes on with.
+            if let (ACTIVE_SET_AFTER, Control::Depth(d), None, false) =
+                (iteration, control, &start, self.is_split())
+            {
+                let budget = self.params.max_iterations.saturating_sub(iteration);
+                match self.active_set_loops(d, &pressure, &reachable, budget)? {
+                    Some((found, spent)) => {
+                        pressure = found;
+                        loop_iterations = spent;
+                    }
+                    None => {
+                        self.operator
+                            .apply(&pressure, &mut self.workspace.displacement)?;
+                    }
+                }
+                self.workspace.direction.fill(0.0);
+                direction_cells = None;
+                pressure_cells = 0..n;
+                rz_old = 0.0;
+                clamped = false;
+                early = false;
             }
             // The depth under force control: the mean of profile + u over
             // the contact.
@@ -603,7 +635,13 @@ impl ContactSolver {
                 && (!set.overlap || self.start_level)
                 && (!early || self.start_level)
             {
-                return self.converged(control, pressure, depth, iteration, residual);
+                return self.converged(
+                    control,
+                    pressure,
+                    depth,
+                    iteration + loop_iterations,
+                    residual,
+                );
             }
         }
         Err(Error::NoConvergence {
