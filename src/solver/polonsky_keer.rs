@@ -349,21 +349,40 @@ impl ContactSolver {
                 contact_sums = None;
             }
             // A depth-driven solve still running tries the active-set
-            // loops once (serial, from its own start displacement:
-            // `src/solver/active_set.rs`); either way the conjugation
-            // restarts from the pressures it goes on with.
-            if let (ACTIVE_SET_AFTER, Control::Depth(d), None, false) =
-                (iteration, control, &start, self.is_split())
+            // loops once (serial; `src/solver/active_set.rs`); either way
+            // the conjugation restarts from the pressures it goes on with.
+            if let (ACTIVE_SET_AFTER, Control::Depth(d), false) =
+                (iteration, control, self.is_split())
             {
+                // A given start displacement carries a part the pressures
+                // do not make: `u0 - K p0`.
+                let offset = match &start {
+                    Some((p0, u0)) => {
+                        let mut offset = vec![0.0; n];
+                        self.operator.apply(p0, &mut offset)?;
+                        for (o, u) in offset.iter_mut().zip(u0) {
+                            *o = u - *o;
+                        }
+                        Some(offset)
+                    }
+                    None => None,
+                };
                 let budget = self.params.max_iterations.saturating_sub(iteration);
-                match self.active_set_loops(d, &pressure, &reachable, budget)? {
-                    Some((found, spent)) => {
-                        pressure = found;
+                let found =
+                    self.active_set_loops(d, &pressure, &reachable, budget, offset.as_deref())?;
+                match found {
+                    Some((settled, spent)) => {
+                        pressure = settled;
                         loop_iterations = spent;
                     }
                     None => {
-                        self.operator
-                            .apply(&pressure, &mut self.workspace.displacement)?;
+                        let ws = &mut self.workspace;
+                        self.operator.apply(&pressure, &mut ws.displacement)?;
+                        if let Some(offset) = &offset {
+                            for (u, o) in ws.displacement.iter_mut().zip(offset) {
+                                *u += o;
+                            }
+                        }
                     }
                 }
                 self.workspace.direction.fill(0.0);
