@@ -8,9 +8,10 @@
 //! working set a few cells an iteration: a sphere on a layer 8000 times
 //! stiffer than its base took 2019 iterations to find a ring of contact
 //! (`examples/disc_or_ring.rs`), where the linear system on the converged
-//! set takes 5 to 29 (`benches/rough/plate_active_set.py`). A depth-driven
-//! serial solve (the cohesive zone's inner solves among them) still
-//! running at [`ACTIVE_SET_AFTER`] iterations therefore tries, once, the
+//! set takes 5 to 29 (`benches/rough/plate_active_set.py`). A serial solve
+//! under depth or force control (the cohesive zone's inner solves among
+//! them) still running at [`ACTIVE_SET_AFTER`] iterations therefore tries,
+//! once, the
 //! loops of Hintermueller, Ito & Kunisch (2002, SIAM J. Optim. 13, 865):
 //! solve the linear system on the current set (the clamped solve of the
 //! energy balance, preconditioned by the same box inverse), take out every
@@ -23,10 +24,11 @@
 
 use crate::error::{Error, Result};
 
+use super::polonsky_keer::Control;
 use super::ContactSolver;
 
-/// The iteration of the constrained conjugate gradients at which a
-/// depth-driven solve that has not converged tries the active-set loops:
+/// The iteration of the constrained conjugate gradients at which a solve
+/// that has not converged tries the active-set loops:
 /// above what smooth and rough contacts take (12 to 15 for a Hertzian
 /// contact, 17 to 58 fine iterations for rough ones up to 8192^2,
 /// `BENCHMARKS.md`), so that only the slow class is touched.
@@ -36,54 +38,90 @@ pub(super) const ACTIVE_SET_AFTER: usize = 100;
 const MAX_LOOPS: usize = 30;
 
 impl ContactSolver {
-    /// The loops from the cells where `pressure` is positive, at `depth`,
-    /// over `reachable` cells, within `budget` conjugate-gradient
+    /// The loops from the cells where `pressure` is positive, under
+    /// `control`, over `reachable` cells, within `budget` conjugate-gradient
     /// iterations in all; `offset` the part of the displacement that the
     /// pressures do not make (an inner solve of the cohesive zone keeps
     /// the tensions' response in it). The settled pressures (the
     /// workspace's displacement theirs, with `offset`) and the iterations
     /// spent, or `None` if the set did not settle (the workspace's vectors
-    /// then hold no state of the caller's).
+    /// then hold no state of the caller's). Under force control each loop
+    /// solves twice on the set, for a unit depth and for the profile, and
+    /// takes the depth that carries the force.
     pub(super) fn active_set_loops(
         &mut self,
-        depth: f64,
+        control: Control,
         pressure: &[f64],
         reachable: &[bool],
         budget: usize,
         offset: Option<&[f64]>,
     ) -> Result<Option<(Vec<f64>, usize)>> {
         let saved = self.params.max_iterations;
-        let result = self.loops(depth, pressure, reachable, budget, offset);
+        let result = self.loops(control, pressure, reachable, budget, offset);
         self.params.max_iterations = saved;
         result
     }
 
     fn loops(
         &mut self,
-        depth: f64,
+        control: Control,
         pressure: &[f64],
         reachable: &[bool],
         budget: usize,
         offset: Option<&[f64]>,
     ) -> Result<Option<(Vec<f64>, usize)>> {
+        let n = pressure.len();
         let offset_at = |c: usize| offset.map_or(0.0, |o| o[c]);
-        // The displacement the pressures must make where they act.
-        let target: Vec<f64> = (0..pressure.len())
-            .map(|c| depth - self.workspace.profile[c] - offset_at(c))
+        // The displacement the pressures must make where they act, less the
+        // depth.
+        let profile: Vec<f64> = (0..n)
+            .map(|c| -self.workspace.profile[c] - offset_at(c))
             .collect();
         let mut member: Vec<bool> = pressure.iter().map(|p| *p > 0.0).collect();
         let mut p: Vec<f64> = pressure.iter().map(|p| p.max(0.0)).collect();
+        // Under force control, the solutions for a unit depth and for the
+        // profile, and the first one's displacement.
+        let force = match control {
+            Control::Force(w) => Some(w / self.grid().cell_area()),
+            Control::Depth(_) => None,
+        };
+        let (mut unit, mut shape) = (vec![0.0; n], vec![0.0; n]);
+        let mut unit_response = Vec::new();
         let mut spent = 0;
         for _ in 0..MAX_LOOPS {
             if spent >= budget || !member.iter().any(|m| *m) {
                 return Ok(None);
             }
-            self.params.max_iterations = budget - spent;
-            match self.clamped_cg(&member, &target, &mut p) {
-                Ok((iterations, _)) => spent += iterations,
-                Err(Error::NoConvergence { .. }) => return Ok(None),
-                Err(e) => return Err(e),
-            }
+            let depth = match (control, force) {
+                (Control::Depth(d), _) => {
+                    let target: Vec<f64> = profile.iter().map(|f| d + f).collect();
+                    if !self.solve_on(&member, &target, &mut p, budget, &mut spent)? {
+                        return Ok(None);
+                    }
+                    d
+                }
+                (_, Some(total)) => {
+                    let ones = vec![1.0; n];
+                    if !self.solve_on(&member, &ones, &mut unit, budget, &mut spent)? {
+                        return Ok(None);
+                    }
+                    unit_response.clone_from(&self.workspace.displacement);
+                    if !self.solve_on(&member, &profile, &mut shape, budget, &mut spent)? {
+                        return Ok(None);
+                    }
+                    let (a, b): (f64, f64) = (unit.iter().sum(), shape.iter().sum());
+                    if a.is_nan() || a <= 0.0 || !a.is_finite() || !b.is_finite() {
+                        return Ok(None);
+                    }
+                    let d = (total - b) / a;
+                    for c in 0..n {
+                        p[c] = d * unit[c] + shape[c];
+                        self.workspace.displacement[c] += d * unit_response[c];
+                    }
+                    d
+                }
+                _ => return Ok(None),
+            };
             if let Some(offset) = offset {
                 for (u, o) in self.workspace.displacement.iter_mut().zip(offset) {
                     *u += o;
@@ -91,19 +129,21 @@ impl ContactSolver {
             }
             // Overlap counts beyond the solve's own tolerance on the scale
             // of the prescribed displacements.
-            let scale = target
+            let scale = profile
                 .iter()
                 .zip(&member)
                 .filter(|(_, m)| **m)
-                .fold(0.0f64, |s, (t, _)| s.max(t.abs()));
+                .fold(0.0f64, |s, (f, _)| s.max((depth + f).abs()));
             let overlap = -self.params.tolerance * scale;
             let ws = &self.workspace;
             let mut changed = false;
-            for c in 0..p.len() {
+            for c in 0..n {
                 if member[c] {
                     if p[c] < 0.0 {
                         member[c] = false;
                         p[c] = 0.0;
+                        unit[c] = 0.0;
+                        shape[c] = 0.0;
                         changed = true;
                     }
                 } else if reachable[c] && ws.profile[c] - depth + ws.displacement[c] < overlap {
@@ -116,5 +156,30 @@ impl ContactSolver {
             }
         }
         Ok(None)
+    }
+
+    /// The clamped solve of `x` on `member` for `target`, within what is
+    /// left of `budget` after `spent` (which it adds to): whether it ran
+    /// to its tolerance.
+    fn solve_on(
+        &mut self,
+        member: &[bool],
+        target: &[f64],
+        x: &mut [f64],
+        budget: usize,
+        spent: &mut usize,
+    ) -> Result<bool> {
+        if *spent >= budget {
+            return Ok(false);
+        }
+        self.params.max_iterations = budget - *spent;
+        match self.clamped_cg(member, target, x) {
+            Ok((iterations, _)) => {
+                *spent += iterations;
+                Ok(true)
+            }
+            Err(Error::NoConvergence { .. }) => Ok(false),
+            Err(e) => Err(e),
+        }
     }
 }

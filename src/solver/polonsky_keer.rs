@@ -7,8 +7,8 @@
 //! restarted only where the new direction would not descend: rough
 //! contacts, whose working set grows in most early iterations, otherwise
 //! iterate near steepest descent. A solve whose change has stopped falling
-//! goes back to Polonsky and Keer's restarts ([`stall`](super::stall)); a
-//! depth-driven one still running at its 100th iteration tries primal-dual
+//! goes back to Polonsky and Keer's restarts ([`stall`](super::stall)); one
+//! still running at its 100th iteration tries primal-dual
 //! active-set loops once ([`active_set`](super::active_set): a plate over a
 //! soft base changes its set a few cells an iteration). A
 //! cold solve's early iterations, until the
@@ -348,12 +348,10 @@ impl ContactSolver {
                 }
                 contact_sums = None;
             }
-            // A depth-driven solve still running tries the active-set
-            // loops once (serial; `src/solver/active_set.rs`); either way
+            // A solve still running tries the active-set loops once
+            // (serial; `src/solver/active_set.rs`); either way
             // the conjugation restarts from the pressures it goes on with.
-            if let (ACTIVE_SET_AFTER, Control::Depth(d), false) =
-                (iteration, control, self.is_split())
-            {
+            if iteration == ACTIVE_SET_AFTER && !self.is_split() {
                 // A given start displacement carries a part the pressures
                 // do not make: `u0 - K p0`.
                 let offset = match &start {
@@ -368,8 +366,13 @@ impl ContactSolver {
                     None => None,
                 };
                 let budget = self.params.max_iterations.saturating_sub(iteration);
-                let found =
-                    self.active_set_loops(d, &pressure, &reachable, budget, offset.as_deref())?;
+                let found = self.active_set_loops(
+                    control,
+                    &pressure,
+                    &reachable,
+                    budget,
+                    offset.as_deref(),
+                )?;
                 match found {
                     Some((settled, spent)) => {
                         pressure = settled;
