@@ -1,6 +1,6 @@
-//! Primal-dual active-set loops, for a depth-driven contact whose
-//! constrained conjugate gradients ([`polonsky_keer`](super::polonsky_keer))
-//! find their contact set slowly.
+//! Primal-dual active-set loops, for a contact whose constrained conjugate
+//! gradients ([`polonsky_keer`](super::polonsky_keer)) find their contact
+//! set slowly.
 //!
 //! On a stiff layer over a far softer base the layer bends like a plate on
 //! a foundation, and a contact changes the pressures far from where a cell
@@ -11,8 +11,8 @@
 //! set takes 5 to 29 (`benches/rough/plate_active_set.py`). A serial solve
 //! under depth or force control (the cohesive zone's inner solves among
 //! them) still running at [`ACTIVE_SET_AFTER`] iterations therefore tries,
-//! once, the
-//! loops of Hintermueller, Ito & Kunisch (2002, SIAM J. Optim. 13, 865):
+//! once, the loops of Hintermueller, Ito & Kunisch (2002, SIAM J. Optim.
+//! 13, 865):
 //! solve the linear system on the current set (the clamped solve of the
 //! energy balance, preconditioned by the same box inverse), take out every
 //! cell whose pressure came out tensile and add every cell the indenter
@@ -28,8 +28,8 @@ use super::polonsky_keer::Control;
 use super::ContactSolver;
 
 /// The iteration of the constrained conjugate gradients at which a solve
-/// that has not converged tries the active-set loops:
-/// above what smooth and rough contacts take (12 to 15 for a Hertzian
+/// that has not converged tries the active-set loops: above what smooth
+/// and rough contacts take (12 to 15 for a Hertzian
 /// contact, 17 to 58 fine iterations for rough ones up to 8192^2,
 /// `BENCHMARKS.md`), so that only the slow class is touched.
 pub(super) const ACTIVE_SET_AFTER: usize = 100;
