@@ -42,27 +42,12 @@ impl ContactSolver {
     /// `control`, over `reachable` cells, within `budget` conjugate-gradient
     /// iterations in all; `offset` the part of the displacement that the
     /// pressures do not make (an inner solve of the cohesive zone keeps
-    /// the tensions' response in it). The settled pressures (the
-    /// workspace's displacement theirs, with `offset`) and the iterations
-    /// spent, or `None` if the set did not settle (the workspace's vectors
-    /// then hold no state of the caller's). Under force control each loop
-    /// solves twice on the set, for a unit depth and for the profile, and
-    /// takes the depth that carries the force.
+    /// the tensions' response in it). The settled pressures and the
+    /// iterations spent, or `None` if the set did not settle; either way
+    /// the workspace's vectors hold no state of the caller's. Under force
+    /// control each loop solves twice on the set, for a unit depth and for
+    /// the profile, and takes the depth that carries the force.
     pub(super) fn active_set_loops(
-        &mut self,
-        control: Control,
-        pressure: &[f64],
-        reachable: &[bool],
-        budget: usize,
-        offset: Option<&[f64]>,
-    ) -> Result<Option<(Vec<f64>, usize)>> {
-        let saved = self.params.max_iterations;
-        let result = self.loops(control, pressure, reachable, budget, offset);
-        self.params.max_iterations = saved;
-        result
-    }
-
-    fn loops(
         &mut self,
         control: Control,
         pressure: &[f64],
@@ -77,32 +62,32 @@ impl ContactSolver {
         let profile: Vec<f64> = (0..n)
             .map(|c| -self.workspace.profile[c] - offset_at(c))
             .collect();
+        // What each loop's first solve is for: the displacement at the
+        // depth, or under force control a unit depth.
+        let first: Vec<f64> = match control {
+            Control::Depth(d) => profile.iter().map(|f| d + f).collect(),
+            Control::Force(_) => vec![1.0; n],
+        };
         let mut member: Vec<bool> = pressure.iter().map(|p| *p > 0.0).collect();
         let mut p: Vec<f64> = pressure.iter().map(|p| p.max(0.0)).collect();
         // Under force control, the solutions for a unit depth and for the
         // profile, and the first one's displacement.
-        let force = match control {
-            Control::Force(w) => Some(w / self.grid().cell_area()),
-            Control::Depth(_) => None,
-        };
         let (mut unit, mut shape) = (vec![0.0; n], vec![0.0; n]);
         let mut unit_response = Vec::new();
         let mut spent = 0;
         for _ in 0..MAX_LOOPS {
-            if spent >= budget || !member.iter().any(|m| *m) {
+            if !member.iter().any(|m| *m) {
                 return Ok(None);
             }
-            let depth = match (control, force) {
-                (Control::Depth(d), _) => {
-                    let target: Vec<f64> = profile.iter().map(|f| d + f).collect();
-                    if !self.solve_on(&member, &target, &mut p, budget, &mut spent)? {
+            let depth = match control {
+                Control::Depth(d) => {
+                    if !self.solve_on(&member, &first, &mut p, budget, &mut spent)? {
                         return Ok(None);
                     }
                     d
                 }
-                (_, Some(total)) => {
-                    let ones = vec![1.0; n];
-                    if !self.solve_on(&member, &ones, &mut unit, budget, &mut spent)? {
+                Control::Force(w) => {
+                    if !self.solve_on(&member, &first, &mut unit, budget, &mut spent)? {
                         return Ok(None);
                     }
                     unit_response.clone_from(&self.workspace.displacement);
@@ -110,17 +95,16 @@ impl ContactSolver {
                         return Ok(None);
                     }
                     let (a, b): (f64, f64) = (unit.iter().sum(), shape.iter().sum());
-                    if a.is_nan() || a <= 0.0 || !a.is_finite() || !b.is_finite() {
+                    if !a.is_finite() || a <= 0.0 || !b.is_finite() {
                         return Ok(None);
                     }
-                    let d = (total - b) / a;
+                    let d = (w / self.grid().cell_area() - b) / a;
                     for c in 0..n {
                         p[c] = d * unit[c] + shape[c];
                         self.workspace.displacement[c] += d * unit_response[c];
                     }
                     d
                 }
-                _ => return Ok(None),
             };
             if let Some(offset) = offset {
                 for (u, o) in self.workspace.displacement.iter_mut().zip(offset) {
@@ -160,7 +144,7 @@ impl ContactSolver {
 
     /// The clamped solve of `x` on `member` for `target`, within what is
     /// left of `budget` after `spent` (which it adds to): whether it ran
-    /// to its tolerance.
+    /// to its tolerance. The solver's own iteration limit is restored.
     fn solve_on(
         &mut self,
         member: &[bool],
@@ -172,8 +156,10 @@ impl ContactSolver {
         if *spent >= budget {
             return Ok(false);
         }
-        self.params.max_iterations = budget - *spent;
-        match self.clamped_cg(member, target, x) {
+        let saved = std::mem::replace(&mut self.params.max_iterations, budget - *spent);
+        let solved = self.clamped_cg(member, target, x);
+        self.params.max_iterations = saved;
+        match solved {
             Ok((iterations, _)) => {
                 *spent += iterations;
                 Ok(true)

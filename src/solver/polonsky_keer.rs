@@ -328,30 +328,12 @@ impl ContactSolver {
                 rz_old = 0.0;
             }
             let single = early && self.single_precision;
-            if iteration % REFRESH == 0 || leave {
-                let ws = &mut self.workspace;
-                match &start {
-                    Some((p0, u0)) => {
-                        // `gap` and `response` are written again before
-                        // they are next read.
-                        for ((d, p), q) in ws.gap.iter_mut().zip(&pressure).zip(p0) {
-                            *d = p - q;
-                        }
-                        self.operator.apply(&ws.gap, &mut ws.response)?;
-                        for ((u, s), k) in ws.displacement.iter_mut().zip(u0).zip(&ws.response) {
-                            *u = s + k;
-                        }
-                    }
-                    None => {
-                        self.operator.apply(&pressure, &mut ws.displacement)?;
-                    }
-                }
-                contact_sums = None;
-            }
             // A solve still running tries the active-set loops once
-            // (serial; `src/solver/active_set.rs`); either way
-            // the conjugation restarts from the pressures it goes on with.
-            if iteration == ACTIVE_SET_AFTER && !self.is_split() {
+            // (serial; `src/solver/active_set.rs`), then goes on from the
+            // pressures they leave (or its own) with the displacement
+            // recomputed below and its conjugation restarted.
+            let tried = iteration == ACTIVE_SET_AFTER && !self.is_split();
+            if tried {
                 // A given start displacement carries a part the pressures
                 // do not make: `u0 - K p0`.
                 let offset = match &start {
@@ -373,20 +355,9 @@ impl ContactSolver {
                     budget,
                     offset.as_deref(),
                 )?;
-                match found {
-                    Some((settled, spent)) => {
-                        pressure = settled;
-                        loop_iterations = spent;
-                    }
-                    None => {
-                        let ws = &mut self.workspace;
-                        self.operator.apply(&pressure, &mut ws.displacement)?;
-                        if let Some(offset) = &offset {
-                            for (u, o) in ws.displacement.iter_mut().zip(offset) {
-                                *u += o;
-                            }
-                        }
-                    }
+                if let Some((settled, spent)) = found {
+                    pressure = settled;
+                    loop_iterations = spent;
                 }
                 self.workspace.direction.fill(0.0);
                 direction_cells = None;
@@ -394,6 +365,26 @@ impl ContactSolver {
                 rz_old = 0.0;
                 clamped = false;
                 early = false;
+            }
+            if iteration % REFRESH == 0 || leave || tried {
+                let ws = &mut self.workspace;
+                match &start {
+                    Some((p0, u0)) => {
+                        // `gap` and `response` are written again before
+                        // they are next read.
+                        for ((d, p), q) in ws.gap.iter_mut().zip(&pressure).zip(p0) {
+                            *d = p - q;
+                        }
+                        self.operator.apply(&ws.gap, &mut ws.response)?;
+                        for ((u, s), k) in ws.displacement.iter_mut().zip(u0).zip(&ws.response) {
+                            *u = s + k;
+                        }
+                    }
+                    None => {
+                        self.operator.apply(&pressure, &mut ws.displacement)?;
+                    }
+                }
+                contact_sums = None;
             }
             // The depth under force control: the mean of profile + u over
             // the contact.
