@@ -5,10 +5,10 @@
 //! under depth and under force control.
 //! The answer must be the bound-constrained minimum all the same.
 
-use layered_contact::analytic::{Axisymmetric, Tip};
+use layered_contact::analytic::{Axisymmetric, LayeredTip, Tip};
 use layered_contact::indenter::Sphere;
-use layered_contact::solver::{ContactSolver, Fields, SolverParams};
-use layered_contact::{Boundary, Grid, Material, Substrate};
+use layered_contact::solver::{ContactSolver, Fields, IterationInfo, SolverParams};
+use layered_contact::{Boundary, Error, Grid, Material, Substrate};
 
 /// The layer of `examples/disc_or_ring.rs` (95 MPa, 1.36 um) on a base 8000
 /// times softer, a sphere of 23.4 um at the depth of the exact disc of 8
@@ -20,29 +20,36 @@ use layered_contact::{Boundary, Grid, Material, Substrate};
 /// contact a ring (no pressure at the centre), and its force within 2e-4
 /// of the exact disc's (measured 1.5e-4: the disc pulls a little where the
 /// ring has let go).
-/// The sphere on the plate at the depth or force of the exact disc of 8
-/// layer thicknesses, and the minimum's conditions checked on the answer.
-fn ring(force_control: bool) -> (usize, usize, f64, f64) {
+/// The body, the exact sphere on it, the grid and the parameters of
+/// [`ring`].
+fn plate() -> (Substrate, LayeredTip, Grid, SolverParams) {
     let h = 1.36e-6;
-    let radius = 23.4e-6;
     let layer = Material::new(9.5e7, 0.45).unwrap();
     let base = Material::new(9.5e7 / 8000.0, 0.45).unwrap();
     let body = Substrate::layer_resting_on_elastic_base(layer, h, base).unwrap();
     let tip = Axisymmetric::new(&body, 10.0)
         .unwrap()
-        .tip(Tip::Sphere { radius }, 0.0)
+        .tip(Tip::Sphere { radius: 23.4e-6 }, 0.0)
         .unwrap();
-    let a = 8.0 * h;
-    let disc = tip.at_contact_radius(a).unwrap();
     let n = 96;
-    let grid = Grid::new(n, n, 2.6 * a / n as f64).unwrap();
+    let grid = Grid::new(n, n, 2.6 * 8.0 * h / n as f64).unwrap();
     let params = SolverParams {
-        fields: Fields::all(),
         tolerance: 1e-8,
         ..SolverParams::default()
     };
+    (body, tip, grid, params)
+}
+
+/// The sphere on the plate at the depth or force of the exact disc of 8
+/// layer thicknesses, and the minimum's conditions checked on the answer.
+fn ring(force_control: bool) -> (usize, usize, f64, f64) {
+    let (body, tip, grid, mut params) = plate();
+    params.fields = Fields::all();
+    let a = 8.0 * 1.36e-6;
+    let disc = tip.at_contact_radius(a).unwrap();
+    let n = grid.rows();
     let mut solver = ContactSolver::new(&body, &grid, Boundary::Isolated, params).unwrap();
-    let sphere = Sphere::new(radius).unwrap();
+    let sphere = Sphere::new(23.4e-6).unwrap();
     let (solution, _) = if force_control {
         solver.solve_force(&sphere, disc.force, None, &mut ())
     } else {
@@ -93,4 +100,44 @@ fn the_ring_under_force_control_is_the_same_minimum() {
     assert!((1000..1200).contains(&cells), "{cells}");
     assert!(depth.abs() < 2e-4, "{depth}");
     assert!(iterations < 1000, "{iterations}");
+}
+
+/// The loops count against the iteration limit whether or not the set
+/// settles: with a limit of 150 the loops get the 50 left after the
+/// constrained iteration's 100, do not settle within them (the ring takes
+/// 256 more), and the solve stops with `NoConvergence` after the fine
+/// level's 100th constrained iteration, having reported no iteration past
+/// 150. Before, a failed set of loops spent up to the limit again: the
+/// constrained iteration went on to 150 after them.
+#[test]
+fn the_loops_count_against_the_iteration_limit() {
+    let (body, tip, grid, mut params) = plate();
+    params.max_iterations = 150;
+    let disc = tip.at_contact_radius(8.0 * 1.36e-6).unwrap();
+    let mut solver = ContactSolver::new(&body, &grid, Boundary::Isolated, params).unwrap();
+    let sphere = Sphere::new(23.4e-6).unwrap();
+    // The fine level's constrained iterations (the observer's count starts
+    // again at each level of the multi-resolution start) and the last
+    // count it reported.
+    let (mut calls, mut last) = (0, 0);
+    let mut observer = |info: &IterationInfo| {
+        if info.iteration < last {
+            calls = 0;
+        }
+        calls += 1;
+        last = info.iteration;
+    };
+    let result = solver.solve_depth(&sphere, disc.depth, None, &mut observer);
+    assert!(
+        matches!(
+            result,
+            Err(Error::NoConvergence {
+                iterations: 150,
+                ..
+            })
+        ),
+        "{result:?}"
+    );
+    assert_eq!(calls, 100);
+    assert_eq!(last, 150);
 }

@@ -42,9 +42,10 @@ impl ContactSolver {
     /// `control`, over `reachable` cells, within `budget` conjugate-gradient
     /// iterations in all; `offset` the part of the displacement that the
     /// pressures do not make (an inner solve of the cohesive zone keeps
-    /// the tensions' response in it). The settled pressures and the
-    /// iterations spent, or `None` if the set did not settle; either way
-    /// the workspace's vectors hold no state of the caller's. Under force
+    /// the tensions' response in it). The settled pressures (`None` if the
+    /// set did not settle) and the iterations spent either way, a solve
+    /// that ran out of the budget counting all of it; the workspace's
+    /// vectors hold no state of the caller's. Under force
     /// control each loop solves twice on the set, for a unit depth and for
     /// the profile, and takes the depth that carries the force.
     pub(super) fn active_set_loops(
@@ -54,7 +55,7 @@ impl ContactSolver {
         reachable: &[bool],
         budget: usize,
         offset: Option<&[f64]>,
-    ) -> Result<Option<(Vec<f64>, usize)>> {
+    ) -> Result<(Option<Vec<f64>>, usize)> {
         let n = pressure.len();
         let offset_at = |c: usize| offset.map_or(0.0, |o| o[c]);
         // The displacement the pressures must make where they act, less the
@@ -77,26 +78,26 @@ impl ContactSolver {
         let mut spent = 0;
         for _ in 0..MAX_LOOPS {
             if !member.iter().any(|m| *m) {
-                return Ok(None);
+                return Ok((None, spent));
             }
             let depth = match control {
                 Control::Depth(d) => {
                     if !self.solve_on(&member, &first, &mut p, budget, &mut spent)? {
-                        return Ok(None);
+                        return Ok((None, spent));
                     }
                     d
                 }
                 Control::Force(w) => {
                     if !self.solve_on(&member, &first, &mut unit, budget, &mut spent)? {
-                        return Ok(None);
+                        return Ok((None, spent));
                     }
                     unit_response.clone_from(&self.workspace.displacement);
                     if !self.solve_on(&member, &profile, &mut shape, budget, &mut spent)? {
-                        return Ok(None);
+                        return Ok((None, spent));
                     }
                     let (a, b): (f64, f64) = (unit.iter().sum(), shape.iter().sum());
                     if !a.is_finite() || a <= 0.0 || !b.is_finite() {
-                        return Ok(None);
+                        return Ok((None, spent));
                     }
                     let d = (w / self.grid().cell_area() - b) / a;
                     for c in 0..n {
@@ -136,15 +137,16 @@ impl ContactSolver {
                 }
             }
             if !changed {
-                return Ok(Some((p, spent)));
+                return Ok((Some(p), spent));
             }
         }
-        Ok(None)
+        Ok((None, spent))
     }
 
     /// The clamped solve of `x` on `member` for `target`, within what is
-    /// left of `budget` after `spent` (which it adds to): whether it ran
-    /// to its tolerance. The solver's own iteration limit is restored.
+    /// left of `budget` after `spent` (which it adds to, all that was left
+    /// if it did not converge): whether it ran to its tolerance. The
+    /// solver's own iteration limit is restored.
     fn solve_on(
         &mut self,
         member: &[bool],
@@ -156,7 +158,8 @@ impl ContactSolver {
         if *spent >= budget {
             return Ok(false);
         }
-        let saved = std::mem::replace(&mut self.params.max_iterations, budget - *spent);
+        let left = budget - *spent;
+        let saved = std::mem::replace(&mut self.params.max_iterations, left);
         let solved = self.clamped_cg(member, target, x);
         self.params.max_iterations = saved;
         match solved {
@@ -164,7 +167,10 @@ impl ContactSolver {
                 *spent += iterations;
                 Ok(true)
             }
-            Err(Error::NoConvergence { .. }) => Ok(false),
+            Err(Error::NoConvergence { .. }) => {
+                *spent = budget;
+                Ok(false)
+            }
             Err(e) => Err(e),
         }
     }

@@ -310,9 +310,13 @@ impl ContactSolver {
         let mut restarted = !cold;
         let mut stall = Stall::new();
         // The conjugate-gradient iterations of the active-set loops, if
-        // they ran: counted in the solution's iterations.
+        // they ran: counted in the solution's iterations and against the
+        // iteration limit, whether or not the set settled.
         let mut loop_iterations = 0;
         for iteration in 1..=self.params.max_iterations {
+            if iteration + loop_iterations > self.params.max_iterations {
+                break;
+            }
             self.check_interrupt("the constrained conjugate gradients")?;
             let leave = early && residual <= EARLY_ABOVE.max(tolerance);
             if leave {
@@ -355,10 +359,11 @@ impl ContactSolver {
                     budget,
                     offset.as_deref(),
                 )?;
-                if let Some((settled, spent)) = found {
+                let (settled, spent) = found;
+                if let Some(settled) = settled {
                     pressure = settled;
-                    loop_iterations = spent;
                 }
+                loop_iterations = spent;
                 self.workspace.direction.fill(0.0);
                 direction_cells = None;
                 pressure_cells = 0..n;
@@ -638,7 +643,7 @@ impl ContactSolver {
             }
             stall.record(residual);
             observer.observe(&IterationInfo {
-                iteration,
+                iteration: iteration + loop_iterations,
                 residual,
                 contact_cells: stats.contact,
             });
