@@ -12,6 +12,7 @@
 
 use std::process::{Command, ExitCode};
 
+use layered_contact::analytic::{Axisymmetric, Tip};
 use layered_contact::distributed::Ranks;
 use layered_contact::indenter::{HeightMap, Indenter, Sphere};
 use layered_contact::solver::{ContactSolver, Fields, SolverParams};
@@ -194,6 +195,14 @@ struct Case {
     /// (m) if `force` is false, forces (N) if true.
     loads: Vec<f64>,
     force: bool,
+    /// The most iterations a split solve may take, if bounded; such a case
+    /// solves without the multi-resolution start, whose coarse levels a
+    /// split solver builds otherwise than a serial one (so that both take
+    /// the same steps).
+    most_iterations: Option<usize>,
+    /// The largest difference of the pressures asserted, over the largest
+    /// pressure.
+    pressure_agreement: f64,
 }
 
 fn rough(grid: &Grid, side: f64, seed: u64) -> Result<HeightMap, layered_contact::Error> {
@@ -223,6 +232,8 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
             indenter: Box::new(rough(&periodic, side, 1)?),
             loads: vec![5e3 * side * side, 2e4 * side * side],
             force: true,
+            most_iterations: None,
+            pressure_agreement: AGREEMENT,
         },
         Case {
             name: "rough half-space, isolated 130 x 72 (odd coarse rows), depth control",
@@ -232,6 +243,8 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
             indenter: Box::new(rough(&odd, side, 2)?),
             loads: vec![0.5e-6, 1e-6],
             force: false,
+            most_iterations: None,
+            pressure_agreement: AGREEMENT,
         },
         Case {
             name: "sphere on a film on glass, isolated 128 x 128, depth control",
@@ -241,6 +254,8 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
             indenter: Box::new(Sphere::new(5e-3)?),
             loads: vec![2e-6, 4e-6],
             force: false,
+            most_iterations: None,
+            pressure_agreement: AGREEMENT,
         },
         // The contact misses the outer ranks' rows: their warm starts have
         // no contact while the inner ranks' do.
@@ -252,8 +267,45 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
             indenter: Box::new(Sphere::new(5e-3)?),
             loads: vec![2e-3, 8e-3],
             force: true,
+            most_iterations: None,
+            pressure_agreement: AGREEMENT,
         },
+        plate()?,
     ])
+}
+
+/// A sphere of 23.4 um on a 95 MPa layer 1.36 um thick over a base 8000
+/// times softer (`tests/plate_contact.rs`), at the depths of the exact
+/// discs of 6 and 8 layer thicknesses, on 96 x 96 cells across 2.6 times
+/// the larger: the layer bends like a plate and its contact is a ring,
+/// which the constrained conjugate gradients find a few cells an
+/// iteration. Cold (the second load warm) at the tolerance of 1e-14:
+/// without the active-set loops 1815 and 2600 iterations serially, 2100
+/// and 2621 split; with them 712 and 710 serially, 1270 and 495 split
+/// (2026-12-03): under 1600. The paths part before the loops start (the
+/// sums' rounding on a set that changes a few cells an iteration), and the
+/// pressures agree to 6.8e-11 and 8.5e-11 of the largest with the loops
+/// and without (asserted below 1e-9): the plate's ring is ill-conditioned,
+/// a relative change of 1e-14 fixes its pressures to about 1e-10 (at
+/// 1e-10, to 3e-7). The forces agree to 2e-14.
+fn plate() -> Result<Case, layered_contact::Error> {
+    let h = 1.36e-6;
+    let layer = Material::new(9.5e7, 0.45)?;
+    let base = Material::new(9.5e7 / 8000.0, 0.45)?;
+    let body = Substrate::layer_resting_on_elastic_base(layer, h, base)?;
+    let tip = Axisymmetric::new(&body, 10.0)?.tip(Tip::Sphere { radius: 23.4e-6 }, 0.0)?;
+    let depth = |radii: f64| tip.at_contact_radius(radii * h).map(|e| e.depth);
+    Ok(Case {
+        name: "sphere on a stiff layer over a far softer base (a ring), isolated 96 x 96",
+        body,
+        grid: Grid::new(96, 96, 2.6 * 8.0 * h / 96.0)?,
+        boundary: Boundary::Isolated,
+        indenter: Box::new(Sphere::new(23.4e-6)?),
+        loads: vec![depth(6.0)?, depth(8.0)?],
+        force: false,
+        most_iterations: Some(1600),
+        pressure_agreement: 1e-9,
+    })
 }
 
 fn ranks_main() -> Result<(), String> {
@@ -272,6 +324,10 @@ fn ranks_main() -> Result<(), String> {
     let text = |e: layered_contact::Error| e.to_string();
     let mut failures = Vec::new();
     for case in cases().map_err(text)? {
+        let params = SolverParams {
+            multiresolution: case.most_iterations.is_none(),
+            ..params
+        };
         let mut serial =
             ContactSolver::new(&case.body, &case.grid, case.boundary, params).map_err(text)?;
         let mut split =
@@ -293,6 +349,16 @@ fn ranks_main() -> Result<(), String> {
                 split.solve_depth(&*case.indenter, load, warm_split.as_ref(), &mut ())
             }
             .map_err(text)?;
+            if let Some(most) = case.most_iterations {
+                if b.iterations > most {
+                    failures.push(format!(
+                        "rank {}: {}: {} split iterations (asserted at most {most})",
+                        ranks.rank(),
+                        case.name,
+                        b.iterations
+                    ));
+                }
+            }
             let relative = |x: f64, y: f64| (x - y).abs() / x.abs().max(f64::MIN_POSITIVE);
             let p = a.pressure.as_ref().ok_or("serial pressure")?;
             let q = b.pressure.as_ref().ok_or("split pressure")?;
@@ -329,9 +395,14 @@ fn ranks_main() -> Result<(), String> {
             // Failures are collected, not returned at once: the other
             // ranks go on to the next solve, which needs this one too.
             for (what, error) in errors {
-                if error > AGREEMENT || error.is_nan() {
+                let agreement = if what.starts_with("pressure") {
+                    case.pressure_agreement
+                } else {
+                    AGREEMENT
+                };
+                if error > agreement || error.is_nan() {
                     failures.push(format!(
-                        "rank {}: {}: {what} differs by {error:e} (asserted below {AGREEMENT:e})",
+                        "rank {}: {}: {what} differs by {error:e} (asserted below {agreement:e})",
                         ranks.rank(),
                         case.name
                     ));

@@ -8,7 +8,7 @@
 //! working set a few cells an iteration: a sphere on a layer 8000 times
 //! stiffer than its base took 2019 iterations to find a ring of contact
 //! (`examples/disc_or_ring.rs`), where the linear system on the converged
-//! set takes 5 to 29 (`benches/rough/plate_active_set.py`). A serial solve
+//! set takes 5 to 29 (`benches/rough/plate_active_set.py`). A solve
 //! under depth or force control (the cohesive zone's inner solves among
 //! them) still running at [`ACTIVE_SET_AFTER`] iterations therefore tries,
 //! once, the loops of Hintermueller, Ito & Kunisch (2002, SIAM J. Optim.
@@ -20,7 +20,8 @@
 //! constrained iteration goes on from its pressures (and ends at once, the
 //! conditions of the bound-constrained minimum holding); if it does not
 //! within [`MAX_LOOPS`] loops or the budget, the iteration goes on from
-//! where it was.
+//! where it was. A solver split across MPI ranks runs the same loops, its
+//! sums, bounds and decisions taken over every rank.
 
 use crate::error::{Error, Result};
 
@@ -77,7 +78,7 @@ impl ContactSolver {
         let mut unit_response = Vec::new();
         let mut spent = 0;
         for _ in 0..MAX_LOOPS {
-            if !member.iter().any(|m| *m) {
+            if !self.on_any_rank(member.iter().any(|m| *m)) {
                 return Ok((None, spent));
             }
             let depth = match control {
@@ -95,7 +96,9 @@ impl ContactSolver {
                     if !self.solve_on(&member, &profile, &mut shape, budget, &mut spent)? {
                         return Ok((None, spent));
                     }
-                    let (a, b): (f64, f64) = (unit.iter().sum(), shape.iter().sum());
+                    let mut sums = [unit.iter().sum(), shape.iter().sum()];
+                    self.sum_over_ranks(&mut sums);
+                    let [a, b] = sums;
                     if !a.is_finite() || a <= 0.0 || !b.is_finite() {
                         return Ok((None, spent));
                     }
@@ -119,6 +122,7 @@ impl ContactSolver {
                 .zip(&member)
                 .filter(|(_, m)| **m)
                 .fold(0.0f64, |s, (f, _)| s.max((depth + f).abs()));
+            let scale = self.max_over_ranks(scale);
             let overlap = -self.params.tolerance * scale;
             let ws = &self.workspace;
             let mut changed = false;
@@ -136,7 +140,7 @@ impl ContactSolver {
                     changed = true;
                 }
             }
-            if !changed {
+            if !self.on_any_rank(changed) {
                 return Ok((Some(p), spent));
             }
         }

@@ -315,16 +315,23 @@ impl ContactSolver {
                 ws.gap[c] = 0.0;
             }
         }
+        // On a split solver (the active-set loops of a split
+        // non-adhesive solve) sums and bounds are taken over every rank.
+        let mut norms = [b_norm, r_norm];
+        self.sum_over_ranks(&mut norms);
+        let [b_norm, mut r_norm] = norms;
         super::all_finite(
             "clamped solve (prescribed displacements or their norm overflow)",
             &[b_norm, r_norm],
         )?;
         let b_norm = b_norm.sqrt().max(f64::MIN_POSITIVE);
-        ws.working.copy_from_slice(attached);
+        self.workspace.working.copy_from_slice(attached);
         let columns = self.grid().columns();
         let set = attached.iter().enumerate().filter(|(_, on)| **on);
         let bounds = super::passes::bounds_of(set.map(|(c, _)| c), columns);
+        let (bounds, gap_max) = self.whole_bounds(bounds, gap_max);
         let mut rz = self.precondition_working_set(bounds, 0.0, gap_max)?.1;
+        rz = self.summed(rz);
         let ws = &mut self.workspace;
         // Only the attached cells of the box's `response` are read.
         for ((d, &z), &on) in ws.direction.iter_mut().zip(&ws.response).zip(attached) {
@@ -332,10 +339,7 @@ impl ContactSolver {
         }
         let mut iterations = 0;
         while r_norm.sqrt() > tolerance * b_norm {
-            super::interrupted(
-                &self.interrupt,
-                "the conjugate gradients on the attached cells",
-            )?;
+            self.check_interrupt("the conjugate gradients on the attached cells")?;
             if iterations == self.params.max_iterations {
                 return Err(Error::NoConvergence {
                     method: "conjugate gradients on the attached cells",
@@ -352,12 +356,14 @@ impl ContactSolver {
                     curvature += ws.direction[c] * ws.response[c];
                 }
             }
+            let curvature = self.summed(curvature);
             if curvature.is_nan() || rz.is_nan() || curvature <= 0.0 || rz <= 0.0 {
                 break;
             }
             let step = rz / curvature;
             r_norm = 0.0;
-            gap_max = 0.0;
+            let mut gap_max = 0.0f64;
+            let ws = &mut self.workspace;
             for c in 0..n {
                 if attached[c] {
                     pressure[c] += step * ws.direction[c];
@@ -366,7 +372,10 @@ impl ContactSolver {
                     gap_max = gap_max.max(ws.gap[c].abs());
                 }
             }
+            r_norm = self.summed(r_norm);
+            let gap_max = self.max_over_ranks(gap_max);
             let rz_new = self.precondition_working_set(bounds, 0.0, gap_max)?.1;
+            let rz_new = self.summed(rz_new);
             let beta = rz_new / rz;
             rz = rz_new;
             let ws = &mut self.workspace;

@@ -333,10 +333,10 @@ impl ContactSolver {
             }
             let single = early && self.single_precision;
             // A solve still running tries the active-set loops once
-            // (serial; `src/solver/active_set.rs`), then goes on from the
+            // (`src/solver/active_set.rs`), then goes on from the
             // pressures they leave (or its own) with the displacement
             // recomputed below and its conjugation restarted.
-            let tried = iteration == ACTIVE_SET_AFTER && !self.is_split();
+            let tried = iteration == ACTIVE_SET_AFTER;
             if tried {
                 // A given start displacement carries a part the pressures
                 // do not make: `u0 - K p0`.

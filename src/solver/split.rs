@@ -34,6 +34,13 @@ impl ContactSolver {
         }
     }
 
+    /// `value` summed over the ranks (itself when serial).
+    pub(super) fn summed(&self, value: f64) -> f64 {
+        let mut sum = [value];
+        self.sum_over_ranks(&mut sum);
+        sum[0]
+    }
+
     /// [`Error::Unsupported`] for `what` on a distributed solver: only the
     /// non-adhesive solves run on a grid split across ranks.
     pub(crate) fn serial_only(&self, what: &'static str) -> Result<()> {
@@ -94,45 +101,69 @@ impl ContactSolver {
     /// The working set over every rank, its bounds in rows of the whole
     /// grid (a serial solver's set as it is).
     pub(super) fn whole_working_set(&self, mut set: passes::WorkingSet) -> passes::WorkingSet {
-        let Some(slab) = self.operator.slab() else {
+        if self.operator.slab().is_none() {
             return set;
-        };
-        let first = slab.rows().start;
+        }
         let mut sums = [
             set.members as f64,
             set.gap_sum,
             f64::from(u8::from(set.overlap)),
         ];
-        slab.sum(&mut sums);
+        self.sum_over_ranks(&mut sums);
+        (set.bounds, set.gap_max) = self.whole_bounds(set.bounds, set.gap_max);
+        set.members = sums[0] as usize;
+        set.gap_sum = sums[1];
+        set.overlap = sums[2] > 0.0;
+        set
+    }
+
+    /// `bounds` of cells in this rank's rows as bounds in rows of the whole
+    /// grid over every rank (`None` if no rank has any), and the largest of
+    /// the ranks' `largest` (a magnitude, at least zero); as they are on a
+    /// serial solver. One collective.
+    pub(super) fn whole_bounds(
+        &self,
+        bounds: Option<passes::Bounds>,
+        largest: f64,
+    ) -> (Option<passes::Bounds>, f64) {
+        let Some(slab) = self.operator.slab() else {
+            return (bounds, largest);
+        };
+        let first = slab.rows().start;
         // Bounds as minima: first row and column, and minus the last ones.
-        let mut bounds = match set.bounds {
+        let mut minima = match bounds {
             Some(((r0, r1), (c0, c1))) => [
                 (first + r0) as f64,
                 -((first + r1) as f64),
                 c0 as f64,
                 -(c1 as f64),
-                -set.gap_max,
+                -largest,
             ],
             None => [
                 f64::INFINITY,
                 f64::INFINITY,
                 f64::INFINITY,
                 f64::INFINITY,
-                0.0,
+                -largest,
             ],
         };
-        slab.exchange.min(&mut bounds);
-        set.gap_max = -bounds[4];
-        set.members = sums[0] as usize;
-        set.gap_sum = sums[1];
-        set.overlap = sums[2] > 0.0;
-        set.bounds = bounds[0].is_finite().then(|| {
+        slab.exchange.min(&mut minima);
+        let bounds = minima[0].is_finite().then(|| {
             (
-                (bounds[0] as usize, -bounds[1] as usize),
-                (bounds[2] as usize, -bounds[3] as usize),
+                (minima[0] as usize, -minima[1] as usize),
+                (minima[2] as usize, -minima[3] as usize),
             )
         });
-        set
+        (bounds, -minima[4])
+    }
+
+    /// The largest of the ranks' `value`s (this one's when serial).
+    pub(super) fn max_over_ranks(&self, value: f64) -> f64 {
+        let mut minimum = [-value];
+        if let Some(slab) = self.operator.slab() {
+            slab.exchange.min(&mut minimum);
+        }
+        -minimum[0]
     }
 
     /// A step's statistics over every rank.
