@@ -1,6 +1,7 @@
 //! The exact layered JKR paraboloid and tips (the sphere) as functions of
-//! depth and of force, and the paraboloid's loading and unloading curve
-//! with adhesion hysteresis.
+//! depth and of force: the stable equilibrium and the loading's state.
+//! The paraboloid's cycle with adhesion hysteresis is in
+//! [`layered_jkr_cycle`](super::layered_jkr_cycle).
 
 use super::axisymmetric::{ContactState, LayeredParaboloid, LayeredTip, Tip};
 use std::f64::consts::PI;
@@ -192,6 +193,18 @@ fn stable_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option<
         previous = value;
         lo = next;
     }
+    crossing(tip, (lo, hi), &key, target).map(Some)
+}
+
+/// The state of `tip` where `key` rises through `target` between radii
+/// `lo` (below it) and `hi` (at or above it), by [`BISECTIONS`]
+/// bisections.
+fn crossing(
+    tip: &impl Branch,
+    (mut lo, mut hi): (f64, f64),
+    key: &impl Fn(f64) -> Result<f64>,
+    target: f64,
+) -> Result<ContactState> {
     for _ in 0..BISECTIONS {
         let mid = 0.5 * (lo + hi);
         if key(mid)? < target {
@@ -200,7 +213,64 @@ fn stable_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option<
             hi = mid;
         }
     }
-    tip.state(hi).map(Some)
+    tip.state(hi)
+}
+
+/// The factor between the radii at which [`loading_root`] samples its
+/// branch.
+const LOADING_STEP: f64 = 1.15;
+
+/// Where [`loading_root`] starts its scan, as a fraction of the stable
+/// root's radius (made smaller, four decades at a time, until the branch
+/// there lies below the target).
+const LOADING_FLOOR: f64 = 1e-4;
+
+/// The state of `tip` at `target > 0` depth or force that a quasi-static
+/// loading from first contact reaches: the first root, going out in `a`,
+/// at which `key(a)` rises through `target`. Where `key` falls somewhere
+/// with `a` (a stiff layer over a far softer base: the branch has folds)
+/// the loading jumps out at each fold and this root may be far smaller
+/// than [`stable_root`]'s (a cone on such a stack at 5 mm: 3.0 mm against
+/// 25.5 mm). Scans from [`LOADING_FLOOR`] of the stable root's radius in
+/// steps of [`LOADING_STEP`], then bisects; at `target <= 0` the stable
+/// root.
+fn loading_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option<ContactState>> {
+    let Some(stable) = stable_root(tip, target, by_force)? else {
+        return Ok(None);
+    };
+    if target <= 0.0 {
+        return Ok(Some(stable));
+    }
+    let key = |a: f64| -> Result<f64> {
+        let s = tip.state(a)?;
+        Ok(if by_force { s.force } else { s.depth })
+    };
+    let top = stable.contact_radius;
+    // A start below the target: the branch goes to 0 with the radius.
+    let mut lo = top;
+    for _ in 0..4 {
+        lo *= LOADING_FLOOR;
+        if key(lo)? < target {
+            break;
+        }
+    }
+    if key(lo)? >= target {
+        return Err(Error::Internal {
+            what: "exact loading branch",
+            detail: format!("no radius down to {lo:e} m lies below the target {target:e}"),
+        });
+    }
+    // At most log(1 / LOADING_FLOOR^4) / log(LOADING_STEP) samples.
+    loop {
+        let hi = lo * LOADING_STEP;
+        if hi >= top {
+            return Ok(Some(stable));
+        }
+        if key(hi)? >= target {
+            return crossing(tip, (lo, hi), &key, target).map(Some);
+        }
+        lo = hi;
+    }
 }
 
 impl LayeredParaboloid {
@@ -237,6 +307,29 @@ impl LayeredParaboloid {
     /// As [`at_depth`](Self::at_depth).
     pub fn at_force(&self, force: f64) -> Result<Option<ContactState>> {
         stable_root(self, force, true)
+    }
+
+    /// The state that a quasi-static loading from first contact reaches at
+    /// `depth > 0` (m): the first equilibrium, going out in contact radius,
+    /// at which the depth rises through `depth`. Where the branch folds (a
+    /// stiff layer over a far softer base) the loading jumps outward at
+    /// each fold and may stop far inside [`at_depth`](Self::at_depth)'s
+    /// largest-radius state; elsewhere the two are the same. At
+    /// `depth <= 0`, [`at_depth`](Self::at_depth).
+    ///
+    /// # Errors
+    /// As [`at_depth`](Self::at_depth).
+    pub fn loading_at_depth(&self, depth: f64) -> Result<Option<ContactState>> {
+        loading_root(self, depth, false)
+    }
+
+    /// As [`loading_at_depth`](Self::loading_at_depth) under load control
+    /// at `force > 0` (N).
+    ///
+    /// # Errors
+    /// As [`at_depth`](Self::at_depth).
+    pub fn loading_at_force(&self, force: f64) -> Result<Option<ContactState>> {
+        loading_root(self, force, true)
     }
 }
 
@@ -277,117 +370,43 @@ impl LayeredTip {
     pub fn at_force(&self, force: f64) -> Result<Option<ContactState>> {
         stable_root(self, force, true)
     }
-}
 
-/// The exact displacement-controlled loading and unloading of a paraboloid
-/// on a coated half-space with adhesion hysteresis: the contact edge advances
-/// against the advancing work of adhesion `dgamma0` while the indenter goes
-/// in, stays pinned when it starts to retract, and recedes against the
-/// receding work `dgamma1 >= dgamma0` once the energy release rate reaches
-/// it (Johnson, Kendall & Roberts 1971; hysteresis as in Maugis 2000, ch. 5).
-///
-/// ```
-/// use layered_contact::analytic::{Axisymmetric, LayeredJkrCycle};
-/// use layered_contact::{Material, Substrate};
-///
-/// let film = Substrate::layer_on_rigid_base(Material::new(0.324e6, 0.48)?, 5e-3)?;
-/// let exact = Axisymmetric::new(&film, 2.0)?;
-/// let cycle = LayeredJkrCycle::new(&exact, 0.05, 0.0175, 0.326, 2e-4)?;
-/// let peak = cycle.loading(2e-4)?.unwrap();
-/// // Unloading starts pinned at the peak's contact radius...
-/// let pinned = cycle.unloading(1.9e-4)?.unwrap();
-/// assert_eq!(pinned.contact_radius, peak.contact_radius);
-/// // ...and the least force on the way out is the receding pull-off force.
-/// let least = cycle.unloading_pull_off()?;
-/// assert!(least.force < 0.0);
-/// Ok::<(), layered_contact::Error>(())
-/// ```
-#[derive(Debug, Clone)]
-pub struct LayeredJkrCycle {
-    advancing: LayeredParaboloid,
-    receding: LayeredParaboloid,
-    peak: ContactState,
-}
-
-impl LayeredJkrCycle {
-    /// The cycle of a paraboloid of tip radius `sphere_radius` (m) pressed
-    /// to `max_depth` (m) and pulled off, with advancing and receding works
-    /// of adhesion (J/m^2).
+    /// The state that a quasi-static loading from first contact reaches at
+    /// `depth > 0` (m), as [`LayeredParaboloid::loading_at_depth`]: where
+    /// the branch folds (a stiff layer over a far softer base) it may lie
+    /// far inside [`at_depth`](Self::at_depth)'s largest-radius state.
+    ///
+    /// ```
+    /// use layered_contact::analytic::{Axisymmetric, Tip};
+    /// use layered_contact::{Base, Material, Substrate};
+    ///
+    /// // A soft film on a stiffer layer over a far softer base.
+    /// let body = Substrate::stack(
+    ///     &[(Material::new(1e3, 0.0)?, 1.8e-3), (Material::new(8.7e3, 0.0)?, 2.6e-3)],
+    ///     Base::Elastic(Material::new(4.15, 0.0)?),
+    /// )?;
+    /// let exact = Axisymmetric::up_to_contact_radius(&body, 0.1)?;
+    /// let cone = exact.tip(Tip::Cone { half_angle: 1.4 }, 2.2e-3)?;
+    /// let loading = cone.loading_at_depth(5e-3)?.unwrap();
+    /// let widest = cone.at_depth(5e-3)?.unwrap();
+    /// // The loading stops at 3 mm; an equilibrium of 25 mm lies beyond a fold.
+    /// assert!(loading.contact_radius < 3.1e-3 && widest.contact_radius > 2e-2);
+    /// assert!((loading.depth - 5e-3).abs() < 1e-12);
+    /// Ok::<(), layered_contact::Error>(())
+    /// ```
     ///
     /// # Errors
-    /// [`Error::InvalidParameter`] for invalid radii or works, an advancing
-    /// work above the receding one, a non-positive maximum depth, or a peak
-    /// contact beyond the tabulated range.
-    pub fn new(
-        body: &super::Axisymmetric,
-        sphere_radius: f64,
-        advancing: f64,
-        receding: f64,
-        max_depth: f64,
-    ) -> Result<Self> {
-        let max_depth = crate::error::positive_finite("max_depth", max_depth)?;
-        let (advancing, receding) = crate::error::works_of_adhesion(advancing, receding)?;
-        let advancing = body.paraboloid(sphere_radius, advancing)?;
-        let receding = body.paraboloid(sphere_radius, receding)?;
-        let peak = advancing.at_depth(max_depth)?.ok_or(Error::Internal {
-            what: "layered JKR cycle",
-            detail: "no loading equilibrium at a positive depth".into(),
-        })?;
-        Ok(LayeredJkrCycle {
-            advancing,
-            receding,
-            peak,
-        })
+    /// As [`at_depth`](Self::at_depth).
+    pub fn loading_at_depth(&self, depth: f64) -> Result<Option<ContactState>> {
+        loading_root(self, depth, false)
     }
 
-    /// The state at the deepest point.
-    pub fn peak(&self) -> ContactState {
-        self.peak
-    }
-
-    /// The loading branch at `depth` (m): `None` before first contact
-    /// (`depth < 0`); at `depth >= 0` the contact has jumped in and grows
-    /// against the advancing work of adhesion.
+    /// As [`loading_at_depth`](Self::loading_at_depth) under load control
+    /// at `force > 0` (N).
     ///
     /// # Errors
-    /// As [`LayeredParaboloid::at_depth`].
-    pub fn loading(&self, depth: f64) -> Result<Option<ContactState>> {
-        crate::solver::check_finite("depth", depth)?;
-        if depth < 0.0 {
-            return Ok(None);
-        }
-        self.advancing.at_depth(depth)
-    }
-
-    /// The unloading branch at `depth <= max_depth` (m): pinned at the
-    /// peak's contact radius until the energy release rate reaches the
-    /// receding work of adhesion, then receding; `None` once the contact has
-    /// jumped off.
-    ///
-    /// # Errors
-    /// As [`LayeredParaboloid::at_depth`].
-    pub fn unloading(&self, depth: f64) -> Result<Option<ContactState>> {
-        crate::solver::check_finite("depth", depth)?;
-        let a = self.peak.contact_radius;
-        let release = self.receding.at_contact_radius(a)?;
-        if depth >= release.depth {
-            return self.receding.pinned(a, depth).map(Some);
-        }
-        self.receding.at_depth(depth)
-    }
-
-    /// The least force of the unloading branch (displacement control): the
-    /// load-controlled pull-off of the receding work if its contact is
-    /// smaller than the peak's, else the pinned contact at its release.
-    ///
-    /// # Errors
-    /// As [`LayeredParaboloid::pull_off`].
-    pub fn unloading_pull_off(&self) -> Result<ContactState> {
-        let pull_off = self.receding.pull_off()?.load_control;
-        if pull_off.contact_radius <= self.peak.contact_radius {
-            Ok(pull_off)
-        } else {
-            self.receding.at_contact_radius(self.peak.contact_radius)
-        }
+    /// As [`at_depth`](Self::at_depth).
+    pub fn loading_at_force(&self, force: f64) -> Result<Option<ContactState>> {
+        loading_root(self, force, true)
     }
 }

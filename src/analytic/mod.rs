@@ -35,6 +35,7 @@ mod cone;
 mod hertz;
 mod jkr;
 mod layered_jkr;
+mod layered_jkr_cycle;
 mod punch;
 mod sinusoid;
 
@@ -46,7 +47,7 @@ pub use cone::{JkrCone, SneddonCone};
 pub use hertz::Hertz;
 pub use jkr::JkrSphere;
 pub use lambda::{a_m, a_m_of, lambda, lambda_g};
-pub use layered_jkr::LayeredJkrCycle;
+pub use layered_jkr_cycle::LayeredJkrCycle;
 pub use punch::{BoussinesqPunch, JkrFlatPunch};
 pub use series::{
     truncated_series, ConeForceSeries, ParaboloidForceSeries, PunchStiffnessSeries,

@@ -105,6 +105,22 @@
 //! [`Scene::reference`](crate::scene::Scene::reference) gives no exact values
 //! for such a scene.
 //!
+//! ## The loading's state
+//!
+//! On such bodies the branch may fold: the depth (or force) of the
+//! equilibrium of contact radius `a` rises, falls and rises again with `a`,
+//! so one depth has several equilibria. A quasi-static loading from first
+//! contact follows the first rising part and jumps outward at each fold,
+//! so at a depth it stops at the first radius where the depth rises
+//! through it
+//! ([`LayeredTip::loading_at_depth`](crate::analytic::LayeredTip::loading_at_depth)),
+//! which may lie far inside the largest-radius equilibrium
+//! ([`LayeredTip::at_depth`](crate::analytic::LayeredTip::at_depth)): an
+//! adhesive cone on a 1 kPa film over an 8.7 kPa layer over a 4 Pa base
+//! stops at 3.0 mm at a depth of 5 mm, where another equilibrium has 25.5
+//! mm (`tests/promise.rs`, finding 15). Scenes take the loading's state as
+//! their peak, and size their grids by it.
+//!
 //! ## Numerics
 //!
 //! `k(y)` is tabulated once per substrate by Chebyshev interpolation on

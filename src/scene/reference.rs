@@ -430,8 +430,9 @@ pub(super) fn tip_peak(
         };
         let tip_solution = exact.tip(tip, work)?;
         let peak = match protocol.peak() {
-            Reach::Depth(depth) => tip_solution.at_depth(depth),
-            Reach::Force(force) => tip_solution.at_force(force),
+            // The state the loading reaches, not a wider one beyond a fold.
+            Reach::Depth(depth) => tip_solution.loading_at_depth(depth),
+            Reach::Force(force) => tip_solution.loading_at_force(force),
         };
         match peak {
             // Beyond a sphere's cap a wider table does not help.

@@ -1,0 +1,121 @@
+//! The exact loading and unloading of a paraboloid with adhesion
+//! hysteresis on a coated body.
+
+use crate::error::{Error, Result};
+
+use super::axisymmetric::{ContactState, LayeredParaboloid};
+
+/// The exact displacement-controlled loading and unloading of a paraboloid
+/// on a coated half-space with adhesion hysteresis: the contact edge advances
+/// against the advancing work of adhesion `dgamma0` while the indenter goes
+/// in, stays pinned when it starts to retract, and recedes against the
+/// receding work `dgamma1 >= dgamma0` once the energy release rate reaches
+/// it (Johnson, Kendall & Roberts 1971; hysteresis as in Maugis 2000, ch. 5).
+///
+/// ```
+/// use layered_contact::analytic::{Axisymmetric, LayeredJkrCycle};
+/// use layered_contact::{Material, Substrate};
+///
+/// let film = Substrate::layer_on_rigid_base(Material::new(0.324e6, 0.48)?, 5e-3)?;
+/// let exact = Axisymmetric::new(&film, 2.0)?;
+/// let cycle = LayeredJkrCycle::new(&exact, 0.05, 0.0175, 0.326, 2e-4)?;
+/// let peak = cycle.loading(2e-4)?.unwrap();
+/// // Unloading starts pinned at the peak's contact radius...
+/// let pinned = cycle.unloading(1.9e-4)?.unwrap();
+/// assert_eq!(pinned.contact_radius, peak.contact_radius);
+/// // ...and the least force on the way out is the receding pull-off force.
+/// let least = cycle.unloading_pull_off()?;
+/// assert!(least.force < 0.0);
+/// Ok::<(), layered_contact::Error>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct LayeredJkrCycle {
+    advancing: LayeredParaboloid,
+    receding: LayeredParaboloid,
+    peak: ContactState,
+}
+
+impl LayeredJkrCycle {
+    /// The cycle of a paraboloid of tip radius `sphere_radius` (m) pressed
+    /// to `max_depth` (m) and pulled off, with advancing and receding works
+    /// of adhesion (J/m^2).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for invalid radii or works, an advancing
+    /// work above the receding one, a non-positive maximum depth, or a peak
+    /// contact beyond the tabulated range.
+    pub fn new(
+        body: &super::Axisymmetric,
+        sphere_radius: f64,
+        advancing: f64,
+        receding: f64,
+        max_depth: f64,
+    ) -> Result<Self> {
+        let max_depth = crate::error::positive_finite("max_depth", max_depth)?;
+        let (advancing, receding) = crate::error::works_of_adhesion(advancing, receding)?;
+        let advancing = body.paraboloid(sphere_radius, advancing)?;
+        let receding = body.paraboloid(sphere_radius, receding)?;
+        let peak = advancing
+            .loading_at_depth(max_depth)?
+            .ok_or(Error::Internal {
+                what: "layered JKR cycle",
+                detail: "no loading equilibrium at a positive depth".into(),
+            })?;
+        Ok(LayeredJkrCycle {
+            advancing,
+            receding,
+            peak,
+        })
+    }
+
+    /// The state at the deepest point.
+    pub fn peak(&self) -> ContactState {
+        self.peak
+    }
+
+    /// The loading branch at `depth` (m): `None` before first contact
+    /// (`depth < 0`); at `depth >= 0` the contact has jumped in and grows
+    /// against the advancing work of adhesion.
+    ///
+    /// # Errors
+    /// As [`LayeredParaboloid::at_depth`].
+    pub fn loading(&self, depth: f64) -> Result<Option<ContactState>> {
+        crate::solver::check_finite("depth", depth)?;
+        if depth < 0.0 {
+            return Ok(None);
+        }
+        self.advancing.loading_at_depth(depth)
+    }
+
+    /// The unloading branch at `depth <= max_depth` (m): pinned at the
+    /// peak's contact radius until the energy release rate reaches the
+    /// receding work of adhesion, then receding; `None` once the contact has
+    /// jumped off.
+    ///
+    /// # Errors
+    /// As [`LayeredParaboloid::at_depth`].
+    pub fn unloading(&self, depth: f64) -> Result<Option<ContactState>> {
+        crate::solver::check_finite("depth", depth)?;
+        let a = self.peak.contact_radius;
+        let release = self.receding.at_contact_radius(a)?;
+        if depth >= release.depth {
+            return self.receding.pinned(a, depth).map(Some);
+        }
+        self.receding.at_depth(depth)
+    }
+
+    /// The least force of the unloading branch (displacement control): the
+    /// load-controlled pull-off of the receding work if its contact is
+    /// smaller than the peak's, else the pinned contact at its release.
+    ///
+    /// # Errors
+    /// As [`LayeredParaboloid::pull_off`].
+    pub fn unloading_pull_off(&self) -> Result<ContactState> {
+        let pull_off = self.receding.pull_off()?.load_control;
+        if pull_off.contact_radius <= self.peak.contact_radius {
+            Ok(pull_off)
+        } else {
+            self.receding.at_contact_radius(self.peak.contact_radius)
+        }
+    }
+}
