@@ -441,7 +441,9 @@ fn f14_a_tip_whose_disc_would_pull_has_no_exact_values() {
 /// and pull-off, and the grid was sized for the wrong contact. The
 /// reference is now the loading's state: the first radius at which the
 /// depth rises through the peak's (checked here by a scan of its own,
-/// every 0.5 %), and the BEM's curve agrees with it.
+/// every 0.5 %), and the BEM's curve agrees with it. (The scene is read
+/// from the sweep's TOML text: with the `serde` feature.)
+#[cfg(feature = "serde")]
 #[test]
 fn f15_a_folding_branch_is_loaded_to_its_first_root() {
     use layered_contact::analytic::Tip;
