@@ -6,7 +6,7 @@ use layered_contact::analytic::{
     Axisymmetric, Hertz, PunchStiffnessSeries, SneddonCone as ExactCone,
 };
 use layered_contact::indenter::{Cone, FlatPunch, HeightMap, Paraboloid, Sphere};
-use layered_contact::scene::{IndenterSpec, Protocol, Quantity, Resolution, Scene};
+use layered_contact::scene::{IndenterSpec, Protocol, Resolution, Scene};
 use layered_contact::solver::{ContactSolver, Fields, SolverParams};
 use layered_contact::{Boundary, Error, Grid, Material, Substrate};
 
@@ -447,6 +447,7 @@ fn f14_a_tip_whose_disc_would_pull_has_no_exact_values() {
 #[test]
 fn f15_a_folding_branch_is_loaded_to_its_first_root() {
     use layered_contact::analytic::Tip;
+    use layered_contact::scene::Quantity;
     let text = r#"
 [substrate]
 kind = "stack"
