@@ -17,8 +17,12 @@
 //! energy balance, preconditioned by the same box inverse), take out every
 //! cell whose pressure came out tensile and add every cell the indenter
 //! overlaps, until the set no longer changes. If it settles, the
-//! constrained iteration goes on from its pressures (and ends at once, the
-//! conditions of the bound-constrained minimum holding); if it does not
+//! constrained iteration goes on from its pressures, which hold the
+//! conditions of the bound-constrained minimum to the clamped solve's
+//! tolerance, until its own change meets the tolerance (7 and 21 more
+//! iterations on `tests/plate_contact.rs`'s ring at a/h = 6 and 8 at the
+//! default `1e-8`; at `1e-14`, near its rounding floor, up to hundreds:
+//! `BENCHMARKS.md`, "A folding branch; the loops split across ranks"); if it does not
 //! within [`MAX_LOOPS`] loops or the budget, the iteration goes on from
 //! where it was. A solver split across MPI ranks runs the same loops, its
 //! sums, bounds and decisions taken over every rank.
