@@ -3,7 +3,7 @@
 //! The paraboloid's cycle with adhesion hysteresis is in
 //! [`layered_jkr_cycle`](super::layered_jkr_cycle).
 
-use super::axisymmetric::{ContactState, LayeredParaboloid, LayeredTip, Tip};
+use super::axisymmetric::{golden_minimum, ContactState, LayeredParaboloid, LayeredTip, Tip};
 use std::f64::consts::PI;
 
 use crate::error::{Error, Result};
@@ -232,8 +232,11 @@ const LOADING_FLOOR: f64 = 1e-4;
 /// the loading jumps out at each fold and this root may be far smaller
 /// than [`stable_root`]'s (a cone on such a stack at 5 mm: 3.0 mm against
 /// 25.5 mm). Scans from [`LOADING_FLOOR`] of the stable root's radius in
-/// steps of [`LOADING_STEP`], then bisects; at `target <= 0` the stable
-/// root.
+/// steps of [`LOADING_STEP`], then bisects; where the samples turn down
+/// below the target, the maximum between them (golden sections) decides
+/// whether the branch rose through it in between (a target within 0.2 %
+/// of a fold's depth, whose excursion above it spans 10 % of the radius,
+/// was stepped over before). At `target <= 0` the stable root.
 fn loading_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option<ContactState>> {
     let Some(stable) = stable_root(tip, target, by_force)? else {
         return Ok(None);
@@ -260,16 +263,37 @@ fn loading_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option
             detail: format!("no radius down to {lo:e} m lies below the target {target:e}"),
         });
     }
-    // At most log(1 / LOADING_FLOOR^4) / log(LOADING_STEP) samples.
+    // At most log(1 / LOADING_FLOOR^4) / log(LOADING_STEP) samples. A
+    // local maximum between samples may rise above the target where
+    // neither does (a target just below a fold's depth): where the samples
+    // turn down, the maximum between the last three is found and, if it
+    // reaches the target, the crossing lies below it.
+    let mut before = (lo, f64::NEG_INFINITY);
+    let mut last = key(lo)?;
     loop {
         let hi = lo * LOADING_STEP;
         if hi >= top {
             return Ok(Some(stable));
         }
-        if key(hi)? >= target {
+        let value = key(hi)?;
+        if value >= target {
             return crossing(tip, (lo, hi), &key, target).map(Some);
         }
-        lo = hi;
+        if value < last && last > before.1 {
+            let peak = golden_minimum(
+                (before.0, hi),
+                |a| tip.state(a),
+                |s| {
+                    -if by_force { s.force } else { s.depth }
+                },
+            )?;
+            let height = if by_force { peak.force } else { peak.depth };
+            if height >= target && peak.contact_radius > before.0 {
+                return crossing(tip, (before.0, peak.contact_radius), &key, target).map(Some);
+            }
+        }
+        before = (lo, last);
+        (lo, last) = (hi, value);
     }
 }
 

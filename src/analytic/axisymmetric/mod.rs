@@ -44,6 +44,7 @@ mod tip_pressure;
 pub use curve::{before_jump_off, ForceCurve};
 pub use family::{ModulusFamily, MODULUS_NODES};
 
+pub(in crate::analytic) use paraboloid::golden_minimum;
 use paraboloid::minimise;
 pub use paraboloid::{ContactState, LayeredParaboloid, PullOff};
 pub use punch::LayeredFlatPunch;

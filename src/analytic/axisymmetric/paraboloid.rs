@@ -206,10 +206,27 @@ pub(super) fn minimise(
                        contact: Axisymmetric::up_to_contact_radius)",
         });
     }
-    let (mut a, mut b) = (
-        states[best.saturating_sub(1)].contact_radius,
-        states[(best + 1).min(SCAN - 1)].contact_radius,
-    );
+    golden_minimum(
+        (
+            states[best.saturating_sub(1)].contact_radius,
+            states[(best + 1).min(SCAN - 1)].contact_radius,
+        ),
+        state,
+        key,
+    )
+}
+
+/// The state of least `key` over contact radii in `[a, b]` (m) where one
+/// minimum lies inside: golden-section search to `0.618^40 = 4e-9` of the
+/// bracket.
+///
+/// # Errors
+/// The failures of `state`.
+pub(in crate::analytic) fn golden_minimum(
+    (mut a, mut b): (f64, f64),
+    state: impl Fn(f64) -> Result<ContactState>,
+    key: impl Fn(&ContactState) -> f64,
+) -> Result<ContactState> {
     let golden = 0.5 * (5f64.sqrt() - 1.0);
     let mut x1 = b - golden * (b - a);
     let mut x2 = a + golden * (b - a);
