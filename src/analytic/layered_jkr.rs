@@ -300,7 +300,8 @@ fn loading_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option
 impl LayeredParaboloid {
     /// The stable equilibrium at `depth` (m) under displacement control: the
     /// largest-radius JKR state, `None` below the depth at which the contact
-    /// jumps off.
+    /// jumps off. Where the branch folds, a loading from first contact
+    /// stops at a smaller one: [`loading_at_depth`](Self::loading_at_depth).
     ///
     /// ```
     /// use layered_contact::analytic::Axisymmetric;
@@ -361,7 +362,9 @@ impl LayeredTip {
     /// The stable equilibrium at `depth` (m) under displacement control,
     /// as [`LayeredParaboloid::at_depth`]: the largest-radius state, `None`
     /// below the depth at which the contact jumps off (or at `depth <= 0`
-    /// without adhesion).
+    /// without adhesion). Where the branch folds, a loading from first
+    /// contact stops at a smaller one:
+    /// [`loading_at_depth`](Self::loading_at_depth).
     ///
     /// ```
     /// use layered_contact::analytic::{Axisymmetric, Tip};
