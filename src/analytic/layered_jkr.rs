@@ -268,7 +268,9 @@ fn loading_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option
     // neither does (a target just below a fold's depth): where the samples
     // turn down, the maximum between the last three is found and, if it
     // reaches the target, the crossing lies below it.
-    let mut before = (lo, f64::NEG_INFINITY);
+    // No maximum is sought between the start and the first sample (the
+    // start lies far below the target; an adhesive branch falls there).
+    let mut before = (lo, f64::INFINITY);
     let mut last = key(lo)?;
     loop {
         let hi = lo * LOADING_STEP;
