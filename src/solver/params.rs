@@ -38,7 +38,13 @@ impl Fields {
 pub struct SolverParams {
     /// Relative tolerance: on the change of the pressure per iteration for the
     /// constrained conjugate gradients (Polonsky and Keer's criterion), on the
-    /// residual of the linear system for the adhesive inner solves.
+    /// residual of the linear system for the adhesive inner solves. It
+    /// bounds the change, not the pressures' error: on an ill-conditioned
+    /// contact the error is far larger (a ring of contact on a stiff layer
+    /// over a base 8000 times softer: two solves that each met `1e-10`
+    /// differed by `2.8e-7` of the largest pressure, at `1e-14` by `1e-10`;
+    /// `BENCHMARKS.md`, "A folding branch; the loops split across ranks").
+    /// Their forces agreed far closer (`1.1e-11` and `3e-14`).
     pub tolerance: f64,
     /// Iteration limit (per inner solve for the adhesive solver).
     pub max_iterations: usize,
