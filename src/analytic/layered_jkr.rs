@@ -111,6 +111,15 @@ impl Branch for LayeredTip {
     }
 }
 
+/// The force of `state` (`by_force`) or its depth.
+fn controlled(state: &ContactState, by_force: bool) -> f64 {
+    if by_force {
+        state.force
+    } else {
+        state.depth
+    }
+}
+
 /// The stable equilibrium of `tip` at `target` depth or force: the root of
 /// `key(a) = target` of largest radius, on the branch where `key` grows
 /// with `a`; `None` below the branch's least value (no adhesive
@@ -120,10 +129,7 @@ impl Branch for LayeredTip {
 /// section) decides.
 fn stable_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option<ContactState>> {
     crate::solver::check_finite(if by_force { "force" } else { "depth" }, target)?;
-    let key = |a: f64| -> Result<f64> {
-        let s = tip.state(a)?;
-        Ok(if by_force { s.force } else { s.depth })
-    };
+    let key = |a: f64| tip.state(a).map(|s| controlled(&s, by_force));
     let (limit, capped) = tip.limit();
     let scale = tip.scale(target, by_force).min(limit);
     let lo_range = tip.pull_off_low();
@@ -177,7 +183,7 @@ fn stable_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option<
                 return Ok(None);
             }
             let least = tip.least(by_force)?;
-            if target < if by_force { least.force } else { least.depth } {
+            if target < controlled(&least, by_force) {
                 return Ok(None);
             }
             // The minimum dips below the target between samples: bracket
@@ -244,10 +250,7 @@ fn loading_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option
     if target <= 0.0 {
         return Ok(Some(stable));
     }
-    let key = |a: f64| -> Result<f64> {
-        let s = tip.state(a)?;
-        Ok(if by_force { s.force } else { s.depth })
-    };
+    let key = |a: f64| tip.state(a).map(|s| controlled(&s, by_force));
     let top = stable.contact_radius;
     // A start below the target: the branch goes to 0 with the radius.
     let mut lo = top;
@@ -285,12 +288,9 @@ fn loading_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option
             let peak = golden_minimum(
                 (before.0, hi),
                 |a| tip.state(a),
-                |s| {
-                    -if by_force { s.force } else { s.depth }
-                },
+                |s| -controlled(s, by_force),
             )?;
-            let height = if by_force { peak.force } else { peak.depth };
-            if height >= target && peak.contact_radius > before.0 {
+            if controlled(&peak, by_force) >= target && peak.contact_radius > before.0 {
                 return crossing(tip, (before.0, peak.contact_radius), &key, target).map(Some);
             }
         }

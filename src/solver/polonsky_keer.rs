@@ -352,14 +352,13 @@ impl ContactSolver {
                     None => None,
                 };
                 let budget = self.params.max_iterations.saturating_sub(iteration);
-                let found = self.active_set_loops(
+                let (settled, spent) = self.active_set_loops(
                     control,
                     &pressure,
                     &reachable,
                     budget,
                     offset.as_deref(),
                 )?;
-                let (settled, spent) = found;
                 if let Some(settled) = settled {
                     pressure = settled;
                 }
