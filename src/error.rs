@@ -288,6 +288,21 @@ pub fn non_negative_finite(name: &'static str, value: f64) -> Result<f64> {
     }
 }
 
+/// `Ok` for a positive work of adhesion (J/m^2), which a pull-off needs.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] naming `work_of_adhesion` for zero.
+pub(crate) fn work_for_pull_off(work: f64) -> Result<()> {
+    if work == 0.0 {
+        return Err(Error::InvalidParameter {
+            name: "work_of_adhesion",
+            value: 0.0,
+            expected: "positive for a pull-off",
+        });
+    }
+    Ok(())
+}
+
 /// Checks an advancing (loading, `dgamma0`) and a receding (unloading,
 /// `dgamma1`) work of adhesion: each non-negative and finite, and
 /// `dgamma0 <= dgamma1` (an edge that advanced more easily than it recedes

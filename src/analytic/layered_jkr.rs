@@ -16,7 +16,7 @@ const MAX_DOUBLINGS: usize = 40;
 
 /// What the search for a stable equilibrium needs of an exact tip on the
 /// coated half-space (the paraboloid, the sphere).
-trait Branch {
+pub(super) trait Branch {
     /// The equilibrium at contact radius `a` (m).
     fn state(&self, a: f64) -> Result<ContactState>;
     /// A contact radius of the order of the one at `target` (m): the
@@ -32,6 +32,11 @@ trait Branch {
     fn pull_off_low(&self) -> f64;
     /// The pull-off state under load (`by_force`) or displacement control.
     fn least(&self, by_force: bool) -> Result<ContactState>;
+    /// The contact radii a pull-off is sought over (m).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] without adhesion.
+    fn span(&self) -> Result<(f64, f64)>;
 }
 
 impl Branch for LayeredParaboloid {
@@ -56,6 +61,10 @@ impl Branch for LayeredParaboloid {
         } else {
             Ok(self.pull_off()?.displacement_control)
         }
+    }
+    fn span(&self) -> Result<(f64, f64)> {
+        crate::error::work_for_pull_off(self.work_of_adhesion)?;
+        Ok(self.pull_off_range())
     }
 }
 
@@ -109,10 +118,13 @@ impl Branch for LayeredTip {
             Ok(self.pull_off()?.displacement_control)
         }
     }
+    fn span(&self) -> Result<(f64, f64)> {
+        self.range()
+    }
 }
 
 /// The force of `state` (`by_force`) or its depth.
-fn controlled(state: &ContactState, by_force: bool) -> f64 {
+pub(super) fn controlled(state: &ContactState, by_force: bool) -> f64 {
     if by_force {
         state.force
     } else {
@@ -205,7 +217,7 @@ fn stable_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option<
 /// The state of `tip` where `key` rises through `target` between radii
 /// `lo` (below it) and `hi` (at or above it), by [`BISECTIONS`]
 /// bisections.
-fn crossing(
+pub(super) fn crossing(
     tip: &impl Branch,
     (mut lo, mut hi): (f64, f64),
     key: &impl Fn(f64) -> Result<f64>,
@@ -224,7 +236,7 @@ fn crossing(
 
 /// The factor between the radii at which [`loading_root`] samples its
 /// branch.
-const LOADING_STEP: f64 = 1.15;
+pub(super) const LOADING_STEP: f64 = 1.15;
 
 /// Where [`loading_root`] starts its scan, as a fraction of the stable
 /// root's radius (made smaller, four decades at a time, until the branch

@@ -4,6 +4,7 @@
 use crate::error::{Error, Result};
 
 use super::axisymmetric::{ContactState, LayeredParaboloid};
+use super::layered_jkr_unloading::{least_below, unloading_root};
 
 /// The exact displacement-controlled loading and unloading of a paraboloid
 /// on a coated half-space with adhesion hysteresis: the contact edge advances
@@ -89,8 +90,11 @@ impl LayeredJkrCycle {
 
     /// The unloading branch at `depth <= max_depth` (m): pinned at the
     /// peak's contact radius until the energy release rate reaches the
-    /// receding work of adhesion, then receding; `None` once the contact has
-    /// jumped off.
+    /// receding work of adhesion, then receding, the edge at the widest
+    /// receding equilibrium inside the peak's radius (where the receding
+    /// branch folds, the edge jumps inward at each fold; the branch's widest
+    /// equilibrium at that depth may lie beyond the peak, where an unloading
+    /// never goes); `None` once the contact has jumped off.
     ///
     /// # Errors
     /// As [`LayeredParaboloid::at_depth`].
@@ -101,21 +105,20 @@ impl LayeredJkrCycle {
         if depth >= release.depth {
             return self.receding.pinned(a, depth).map(Some);
         }
-        self.receding.at_depth(depth)
+        unloading_root(&self.receding, a, depth, false)
     }
 
     /// The least force of the unloading branch (displacement control): the
-    /// load-controlled pull-off of the receding work if its contact is
-    /// smaller than the peak's, else the pinned contact at its release.
+    /// least force of the receding branch over the contact radii up to the
+    /// peak's, or the pinned contact at its release where the least lies
+    /// there (a second, deeper least beyond the peak, on a film over a far
+    /// softer base, is never reached).
     ///
     /// # Errors
-    /// As [`LayeredParaboloid::pull_off`].
+    /// As [`LayeredParaboloid::pull_off`]; [`Error::Unsupported`] where the
+    /// receding branch folds inside the peak and its least force lies on
+    /// radii that the unloading jumps over.
     pub fn unloading_pull_off(&self) -> Result<ContactState> {
-        let pull_off = self.receding.pull_off()?.load_control;
-        if pull_off.contact_radius <= self.peak.contact_radius {
-            Ok(pull_off)
-        } else {
-            self.receding.at_contact_radius(self.peak.contact_radius)
-        }
+        least_below(&self.receding, self.peak.contact_radius, false, true)
     }
 }

@@ -36,6 +36,7 @@ mod hertz;
 mod jkr;
 mod layered_jkr;
 mod layered_jkr_cycle;
+mod layered_jkr_unloading;
 mod punch;
 mod sinusoid;
 

@@ -121,6 +121,25 @@
 //! mm (`tests/promise.rs`, finding 15). Scenes take the loading's state as
 //! their peak, and size their grids by it.
 //!
+//! ## The unloading's state
+//!
+//! Unloaded from its peak, a contact's edge stays pinned until the energy
+//! release rate reaches the receding work of adhesion, then recedes: as
+//! the depth falls the edge reaches exactly the radii inside the peak's
+//! whose receding depth lies below that of every radius between them and
+//! the peak, and jumps inward at each fold
+//! ([`LayeredJkrCycle::unloading`](crate::analytic::LayeredJkrCycle::unloading):
+//! the first radius, going inward from the peak, at which the receding
+//! depth reaches the target). The branch's largest-radius equilibrium at
+//! that depth may lie beyond the peak, where an unloading never goes: a
+//! paraboloid of 0.23 m with works of 6.3e-5 and 4.5e-3 J/m^2 on a stack
+//! as above, pressed 10 um, recedes to 2.78 mm at 1 um below its release,
+//! where the widest equilibrium has 21.6 mm (`tests/unloading_state.rs`).
+//! The least force of the unloading is sought over the radii up to the
+//! peak's (a second, deeper least beyond it is never reached) and, under
+//! displacement control, refused with [`Error::Unsupported`](crate::Error::Unsupported)
+//! where it lies on radii that a fold makes the edge jump over.
+//!
 //! ## Numerics
 //!
 //! `k(y)` is tabulated once per substrate by Chebyshev interpolation on

@@ -202,14 +202,22 @@ impl Scene {
                     // which the unloading never reaches (a cone on a film
                     // over a base 300 times softer came off at -1.5 mN,
                     // its reference the peak's +2.5 mN before).
-                    let least =
-                        least_of_unloading(&unloading, peak.map(|p| p.contact_radius), false);
-                    // Beyond the table: no pull-off reference.
+                    let least = least_of_unloading(
+                        &unloading,
+                        peak.map(|p| p.contact_radius),
+                        false,
+                        matches!(self.protocol, Protocol::Cycle { .. }),
+                    );
+                    // Beyond the table, or jumped over inside a fold of
+                    // the receding branch: no pull-off reference.
                     let pull_off = match least {
-                        Err(Error::InvalidParameter {
-                            name: "contact_radius",
-                            ..
-                        }) => return Ok(out),
+                        Err(
+                            Error::InvalidParameter {
+                                name: "contact_radius",
+                                ..
+                            }
+                            | Error::Unsupported { .. },
+                        ) => return Ok(out),
                         other => other?,
                     };
                     // A cone pulled off beyond its base: not a cone's.
@@ -387,8 +395,9 @@ impl HalfSpaceJkr {
 /// The state of least force (`depth` false) or depth of the exact
 /// `unloading` from a peak contact of `peak_radius` (m): below it, not a
 /// deeper one beyond it (a film on a much softer base,
-/// [`LayeredTip::least_below`]); where the peak makes no contact (`None`
-/// or 0), over every radius.
+/// [`LayeredTip::least_below`], which refuses a least force that a
+/// depth-controlled unloading (`displacement_control`) jumps over); where
+/// the peak makes no contact (`None` or 0), over every radius.
 ///
 /// # Errors
 /// As [`LayeredTip::pull_off`].
@@ -396,9 +405,10 @@ pub(super) fn least_of_unloading(
     unloading: &LayeredTip,
     peak_radius: Option<f64>,
     depth: bool,
+    displacement_control: bool,
 ) -> Result<ContactState> {
     match peak_radius.filter(|&a| a > 0.0) {
-        Some(a) => unloading.least_below(a, depth),
+        Some(a) => unloading.least_below(a, depth, displacement_control),
         None if depth => unloading.pull_off().map(|p| p.displacement_control),
         None => unloading.load_controlled_pull_off(),
     }

@@ -116,7 +116,7 @@ impl Scene {
             return self.base_jkr_radii(&substrate, curved, estimate);
         };
         let least = |depth| {
-            let state = least_of_unloading(&unloading, Some(peak.contact_radius), depth);
+            let state = least_of_unloading(&unloading, Some(peak.contact_radius), depth, false);
             Some(state.ok()?.contact_radius)
         };
         let mut smallest = least(false)?;
@@ -180,7 +180,7 @@ impl Scene {
         let substrate = self.substrate.build().ok()?;
         let estimate = self.contact_radius_estimate().ok()?;
         let (peak, unloading) = self.exact_unloading(&substrate, curved, estimate)??;
-        let least = least_of_unloading(&unloading, Some(peak.contact_radius), false);
+        let least = least_of_unloading(&unloading, Some(peak.contact_radius), false, false);
         Some(least.ok()?.force)
     }
 

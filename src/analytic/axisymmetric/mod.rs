@@ -44,8 +44,7 @@ mod tip_pressure;
 pub use curve::{before_jump_off, ForceCurve};
 pub use family::{ModulusFamily, MODULUS_NODES};
 
-pub(in crate::analytic) use paraboloid::golden_minimum;
-use paraboloid::minimise;
+pub(in crate::analytic) use paraboloid::{golden_minimum, minimise, MINIMISE_SCAN};
 pub use paraboloid::{ContactState, LayeredParaboloid, PullOff};
 pub use punch::LayeredFlatPunch;
 pub use tip::{LayeredTip, Tip};

@@ -127,13 +127,7 @@ impl LayeredParaboloid {
     /// [`Error::InvalidParameter`] without adhesion (no pull-off); others as
     /// [`LayeredParaboloid::at_contact_radius`].
     pub fn pull_off(&self) -> Result<PullOff> {
-        if self.work_of_adhesion == 0.0 {
-            return Err(Error::InvalidParameter {
-                name: "work_of_adhesion",
-                value: 0.0,
-                expected: "positive for a pull-off",
-            });
-        }
+        crate::error::work_for_pull_off(self.work_of_adhesion)?;
         let (lo, hi) = self.pull_off_range();
         let load = self.minimise(lo, hi, |s| s.force)?;
         let displacement = self.minimise(lo, hi, |s| s.depth)?;
@@ -172,8 +166,12 @@ impl LayeredParaboloid {
     }
 }
 
+/// The radii [`minimise`] scans, in equal ratios.
+pub(in crate::analytic) const MINIMISE_SCAN: usize = 48;
+
 /// The state of least `key` over contact radii in `[lo, hi]` (m): a
-/// logarithmic scan of 48 radii refined by golden-section search.
+/// logarithmic scan of [`MINIMISE_SCAN`] radii refined by golden-section
+/// search.
 ///
 /// # Errors
 /// [`Error::InvalidParameter`] naming `contact_radius` where the scan's
@@ -183,21 +181,20 @@ impl LayeredParaboloid {
 /// surface modulus's scale: a cone on a film over a base 300 times softer
 /// returned the table's edge, a "pull-off" at the peak's own force). The
 /// failures of `state`.
-pub(super) fn minimise(
+pub(in crate::analytic) fn minimise(
     lo: f64,
     hi: f64,
     state: impl Fn(f64) -> Result<ContactState>,
     key: impl Fn(&ContactState) -> f64,
 ) -> Result<ContactState> {
-    const SCAN: usize = 48;
-    let ratio = (hi / lo).powf(1.0 / (SCAN - 1) as f64);
-    let states: Vec<ContactState> = (0..SCAN)
+    let ratio = (hi / lo).powf(1.0 / (MINIMISE_SCAN - 1) as f64);
+    let states: Vec<ContactState> = (0..MINIMISE_SCAN)
         .map(|k| state((lo * ratio.powi(k as i32)).min(hi)))
         .collect::<Result<_>>()?;
-    let best = (0..SCAN)
+    let best = (0..MINIMISE_SCAN)
         .min_by(|&i, &j| key(&states[i]).total_cmp(&key(&states[j])))
         .unwrap_or(0);
-    if best == SCAN - 1 {
+    if best == MINIMISE_SCAN - 1 {
         return Err(Error::InvalidParameter {
             name: "contact_radius",
             value: hi,
@@ -209,7 +206,7 @@ pub(super) fn minimise(
     golden_minimum(
         (
             states[best.saturating_sub(1)].contact_radius,
-            states[(best + 1).min(SCAN - 1)].contact_radius,
+            states[(best + 1).min(MINIMISE_SCAN - 1)].contact_radius,
         ),
         state,
         key,

@@ -440,32 +440,6 @@ impl LayeredTip {
         minimise(lo, hi, |a| self.at_contact_radius(a), |s| s.force)
     }
 
-    /// The least force (`depth` false) or depth (`depth` true) of an
-    /// unloading from a contact of `peak_radius` (m): over the contact
-    /// radii up to it, the state at `peak_radius` itself where the least
-    /// lies there (a contact pinned at the peak lets go as it starts to
-    /// recede). A layered body may have a second, deeper minimum far
-    /// beyond the peak (a film on a much softer base: the base's own JKR
-    /// scale), which an unloading from the peak never reaches.
-    ///
-    /// # Errors
-    /// As [`pull_off`](Self::pull_off).
-    pub(crate) fn least_below(&self, peak_radius: f64, depth: bool) -> Result<ContactState> {
-        let (lo, hi) = self.range()?;
-        let top = hi.min(peak_radius);
-        if top <= lo {
-            return self.at_contact_radius(top);
-        }
-        let key = |s: &ContactState| if depth { s.depth } else { s.force };
-        match minimise(lo, top, |a| self.at_contact_radius(a), key) {
-            Err(Error::InvalidParameter {
-                name: "contact_radius",
-                ..
-            }) if top == peak_radius => self.at_contact_radius(top),
-            other => other,
-        }
-    }
-
     /// The pull-off of the tip held by a spring of stiffness `stiffness`
     /// (N/m, an AFM cantilever): the unloading branch is stable while
     /// `dF/dd > -k`, and the tip jumps off where `dF/dd = -k`, between the
@@ -528,14 +502,9 @@ impl LayeredTip {
         self.at_contact_radius(a)
     }
 
-    fn range(&self) -> Result<(f64, f64)> {
-        if self.work_of_adhesion == 0.0 {
-            return Err(Error::InvalidParameter {
-                name: "work_of_adhesion",
-                value: 0.0,
-                expected: "positive for a pull-off",
-            });
-        }
+    /// The contact radii a pull-off is sought over (m).
+    pub(in crate::analytic) fn range(&self) -> Result<(f64, f64)> {
+        crate::error::work_for_pull_off(self.work_of_adhesion)?;
         let (lo, hi) = self
             .tip
             .pull_off_radii(self.work_of_adhesion, self.body.contact_modulus);
