@@ -119,7 +119,7 @@ pub(super) fn least_below(
             ..
         }) if top == peak_radius => {
             // The scan's least sample is the peak's: the least lies there
-            // or within the scan's last step (a paraboloid's least force 3 %
+            // or within the scan's last step (a paraboloid's least force 4 %
             // inside the peak, 0.18 % below the peak's, was missed).
             let at_peak = tip.state(top)?;
             let step = (top / lo).powf(1.0 / (MINIMISE_SCAN - 1) as f64);
