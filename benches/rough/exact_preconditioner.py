@@ -25,6 +25,7 @@ import scipy.sparse.linalg as sparse_linalg
 
 from edge_extension import laplace as mean_sweeps
 from projected_cg import operator, pressure_space, spectra, surface
+from two_level import pcg_solve
 
 
 def exact_inverse(n, tol):
@@ -41,21 +42,9 @@ def exact_inverse(n, tol):
             full[W] = x
             return op(full)[W]
 
-        rhs = r[W]
-        x, res = np.zeros_like(rhs), rhs.copy()
-        z = restricted(M, res)
-        d, rz, norm = z.copy(), res @ z, np.linalg.norm(rhs)
-        for _ in range(1000):
-            kd = restricted(K, d)
-            alpha = rz / (d @ kd)
-            x += alpha * d
-            res -= alpha * kd
-            count[0] += 1
-            if np.linalg.norm(res) <= tol * norm:
-                break
-            z = restricted(M, res)
-            rz, rz_old = res @ z, rz
-            d = z + rz / rz_old * d
+        x, iterations = pcg_solve(lambda v: restricted(K, v), lambda v: restricted(M, v), r[W],
+                                  tol=tol, most=1000)
+        count[0] += iterations
         out = np.zeros((n, n))
         out[W] = x
         return out

@@ -32,6 +32,12 @@ from projected_cg import operator, pressure_space, spectra, surface
 def pcg(apply, precondition, rhs, tol=1e-8, x0=None, most=2000):
     """Iterations of preconditioned conjugate gradients to a relative
     residual of `tol`."""
+    return pcg_solve(apply, precondition, rhs, tol, x0, most)[1]
+
+
+def pcg_solve(apply, precondition, rhs, tol=1e-8, x0=None, most=2000):
+    """The solution and the iterations of preconditioned conjugate
+    gradients to a relative residual of `tol` (at most `most`)."""
     x = np.zeros_like(rhs) if x0 is None else x0.copy()
     r = rhs - apply(x)
     z = precondition(r)
@@ -42,11 +48,11 @@ def pcg(apply, precondition, rhs, tol=1e-8, x0=None, most=2000):
         x += alpha * d
         r -= alpha * ad
         if np.linalg.norm(r) <= tol * norm:
-            return it
+            return x, it
         z = precondition(r)
         rz, rz_old = r @ z, rz
         d = z + rz / rz_old * d
-    return most
+    return x, most
 
 
 class Restricted:
