@@ -278,32 +278,54 @@ fn loading_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option
             detail: format!("no radius down to {lo:e} m lies below the target {target:e}"),
         });
     }
-    // At most log(1 / LOADING_FLOOR^4) / log(LOADING_STEP) samples. A
-    // local maximum between samples may rise above the target where
-    // neither does (a target just below a fold's depth): where the samples
-    // turn down, the maximum between the last three is found and, if it
-    // reaches the target, the crossing lies below it.
-    // No maximum is sought between the start and the first sample (the
-    // start lies far below the target; an adhesive branch falls there).
+    first_rise(
+        tip,
+        |s| controlled(s, by_force),
+        target,
+        (lo, top),
+        Some(stable),
+    )
+}
+
+/// The first root of `key(state(a)) = target` going out in `a` from
+/// `start` (where `key` lies below `target`) to `top`, sampled in steps of
+/// [`LOADING_STEP`] (at most `log(top / start) / log(LOADING_STEP)`
+/// samples), then bisected. Where no sample below `top` reaches the target,
+/// `at_top` if given (the state at `top`, known to lie on the target), else
+/// the crossing before `top` if `top` reaches it, else `None`. A local maximum between samples may rise above the target where
+/// neither does (a target just below a fold's depth): where the samples
+/// turn down, the maximum between the last three is found (golden
+/// sections) and, if it reaches the target, the crossing lies below it.
+/// No maximum is sought between the start and the first sample (the start
+/// lies far below the target; an adhesive branch falls there).
+pub(in crate::analytic) fn first_rise(
+    tip: &impl Branch,
+    key: impl Fn(&ContactState) -> f64,
+    target: f64,
+    (start, top): (f64, f64),
+    at_top: Option<ContactState>,
+) -> Result<Option<ContactState>> {
+    let at = |a: f64| tip.state(a).map(|s| key(&s));
+    let mut lo = start;
     let mut before = (lo, f64::INFINITY);
-    let mut last = key(lo)?;
+    let mut last = at(lo)?;
     loop {
         let hi = lo * LOADING_STEP;
         if hi >= top {
-            return Ok(Some(stable));
+            return match at_top {
+                Some(state) => Ok(Some(state)),
+                None if at(top)? >= target => crossing(tip, (lo, top), &at, target).map(Some),
+                None => Ok(None),
+            };
         }
-        let value = key(hi)?;
+        let value = at(hi)?;
         if value >= target {
-            return crossing(tip, (lo, hi), &key, target).map(Some);
+            return crossing(tip, (lo, hi), &at, target).map(Some);
         }
         if value < last && last > before.1 {
-            let peak = golden_minimum(
-                (before.0, hi),
-                |a| tip.state(a),
-                |s| -controlled(s, by_force),
-            )?;
-            if controlled(&peak, by_force) >= target && peak.contact_radius > before.0 {
-                return crossing(tip, (before.0, peak.contact_radius), &key, target).map(Some);
+            let peak = golden_minimum((before.0, hi), |a| tip.state(a), |s| -key(s))?;
+            if key(&peak) >= target && peak.contact_radius > before.0 {
+                return crossing(tip, (before.0, peak.contact_radius), &at, target).map(Some);
             }
         }
         before = (lo, last);

@@ -34,6 +34,8 @@ pub struct LayeredJkrCycle {
     advancing: LayeredParaboloid,
     receding: LayeredParaboloid,
     peak: ContactState,
+    /// The deepest depth asked for (m).
+    max_depth: f64,
 }
 
 impl LayeredJkrCycle {
@@ -66,6 +68,7 @@ impl LayeredJkrCycle {
             advancing,
             receding,
             peak,
+            max_depth,
         })
     }
 
@@ -97,9 +100,19 @@ impl LayeredJkrCycle {
     /// never goes); `None` once the contact has jumped off.
     ///
     /// # Errors
-    /// As [`LayeredParaboloid::at_depth`].
+    /// [`Error::InvalidParameter`] for a depth beyond `max_depth` (the
+    /// unloading starts there; a pinned contact pressed deeper is no state
+    /// of the cycle: its edge would advance); others as
+    /// [`LayeredParaboloid::at_depth`].
     pub fn unloading(&self, depth: f64) -> Result<Option<ContactState>> {
         crate::solver::check_finite("depth", depth)?;
+        if depth > self.max_depth.max(self.peak.depth) {
+            return Err(Error::InvalidParameter {
+                name: "depth",
+                value: depth,
+                expected: "an unloading depth at most the cycle's max_depth",
+            });
+        }
         let a = self.peak.contact_radius;
         let release = self.receding.at_contact_radius(a)?;
         if depth >= release.depth {

@@ -80,10 +80,15 @@
 //! between kinks), so the Nystrom rule keeps its exponential convergence;
 //! the order is doubled until `Integral psi_g` and `psi_g(1)` change by
 //! less than `1e-10`. The JKR edge condition and the force are as for the
-//! paraboloid, and an AFM cantilever of stiffness `k` jumps off where
-//! `dF/dd = -k` and jumps in where `F + k d = 0`
+//! paraboloid, and an AFM cantilever of stiffness `k` jumps off at the
+//! least position of its base, `Z = d + F/k` (where `dF/dd = -k`), and
+//! jumps in at the first radius going out where `F + k d = 0`
 //! ([`LayeredTip::spring_pull_off`](crate::analytic::LayeredTip::spring_pull_off),
-//! [`spring_jump_in`](crate::analytic::LayeredTip::spring_jump_in)).
+//! [`spring_jump_in`](crate::analytic::LayeredTip::spring_jump_in)). Where
+//! the branch folds (a soft film over a stiffer layer over a far softer
+//! base) `Z` has several local minima; the pull-off is the least of them,
+//! as the load- and displacement-controlled pull-offs are the least force
+//! and depth over the radii.
 //!
 //! ## The disc of contact
 //!

@@ -19,6 +19,7 @@ use std::sync::OnceLock;
 use gauss_quad::legendre::GaussLegendre;
 
 use super::{gauss, minimise, Axisymmetric, ContactState, CosineKernel, Nystrom, PullOff};
+use crate::analytic::layered_jkr::first_rise;
 use crate::error::{non_negative_finite, positive_finite, Error, Result};
 
 /// Points of the piecewise Gauss-Legendre rule for `K g` and `Integral g`
@@ -32,6 +33,12 @@ pub(super) fn piece_rule() -> &'static GaussLegendre {
 
 /// Relative step of the central differences of the spring criteria.
 const SLOPE_STEP: f64 = 1e-5;
+
+/// The bracket about the golden sections' least `Z` (relative) that
+/// [`LayeredTip::spring_pull_off`] bisects on the slope's sign: wide
+/// against the sections' `4e-9` of their bracket, narrow against the
+/// distance between two local minima of a folding branch.
+const SPRING_BRACKET: f64 = 1e-3;
 
 /// The boundary in `[lo, hi]` between radii where `below` holds (at `lo`)
 /// and where it does not (at `hi`), by 60 bisections (1e-18 of the bracket).
@@ -441,23 +448,34 @@ impl LayeredTip {
     }
 
     /// The pull-off of the tip held by a spring of stiffness `stiffness`
-    /// (N/m, an AFM cantilever): the unloading branch is stable while
-    /// `dF/dd > -k`, and the tip jumps off where `dF/dd = -k`, between the
-    /// load-controlled pull-off (`k -> 0`) and the displacement-controlled
-    /// one (`k -> inf`). Found by bisection in the contact radius on
-    /// central differences of the exact states.
+    /// (N/m, an AFM cantilever): with the spring's base at `Z = d + F/k`,
+    /// the unloading follows the branch while `Z` falls with the contact
+    /// radius (`dF/dd > -k`) and the tip jumps off at the least `Z`, where
+    /// `dF/dd = -k`: between the load-controlled pull-off (`k -> 0`) and
+    /// the displacement-controlled one (`k -> inf`). The least `Z` over
+    /// the radii [`pull_off`](Self::pull_off) searches (a logarithmic scan
+    /// and golden sections, as there), its radius then refined by bisection
+    /// on central differences of the exact states. Where the branch folds
+    /// (a stiff layer over a far softer base) `Z` may have several local
+    /// minima, and this is the least of them, as `pull_off`'s are the
+    /// least force and depth: a bisection between those two pull-offs'
+    /// radii returned, before, a local minimum six times wider whose `Z`
+    /// lay 0.27 % above the least (`tests/tips.rs`).
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for a stiffness that is not positive and
     /// finite, or without adhesion; others as [`LayeredTip::pull_off`].
     pub fn spring_pull_off(&self, stiffness: f64) -> Result<ContactState> {
         let k = positive_finite("stiffness", stiffness)?;
-        let pull = self.pull_off()?;
-        let (lo, hi) = (
-            pull.displacement_control.contact_radius,
-            pull.load_control.contact_radius,
-        );
-        // F'(a) + k d'(a): negative at `lo` (d' = 0), positive at `hi` (F' = 0).
+        let (lo, hi) = self.range()?;
+        let least = minimise(
+            lo,
+            hi,
+            |a| self.at_contact_radius(a),
+            |s| s.depth + s.force / k,
+        )?;
+        // F'(a) + k d'(a) = k Z'(a): negative inside the least, positive
+        // outside it.
         let unstable = |a: f64| -> Result<bool> {
             let h = SLOPE_STEP * a;
             let (minus, plus) = (
@@ -466,40 +484,49 @@ impl LayeredTip {
             );
             Ok(plus.force - minus.force + k * (plus.depth - minus.depth) < 0.0)
         };
-        let a = bisect(lo, hi, unstable)?;
-        self.at_contact_radius(a)
+        let a = least.contact_radius;
+        let (inside, outside) = (a * (1.0 - SPRING_BRACKET), a * (1.0 + SPRING_BRACKET));
+        if outside > hi || !unstable(inside)? || unstable(outside)? {
+            // The golden sections' least, where the slope's sign does not
+            // bracket it (a minimum flat to the differences' rounding).
+            return Ok(least);
+        }
+        self.at_contact_radius(bisect(inside, outside, unstable)?)
     }
 
     /// Where the tip lands when a spring of stiffness `stiffness` (N/m)
     /// brings it to touch the surface: the state on the loading branch with
     /// `F + k d = 0` (the cantilever's base at the undeformed surface), the
-    /// JKR jump into contact.
+    /// JKR jump into contact: the first radius, going out from the
+    /// smallest a pull-off is sought at, where `F + k d` rises through 0
+    /// (as [`LayeredParaboloid::loading_at_depth`](super::LayeredParaboloid::loading_at_depth):
+    /// where the branch folds, the loading stops at the first such radius,
+    /// not a wider one beyond a fold).
     ///
     /// # Errors
     /// As [`LayeredTip::spring_pull_off`], and [`Error::NoConvergence`] if
     /// no contact radius within the tabulated range balances the spring.
     pub fn spring_jump_in(&self, stiffness: f64) -> Result<ContactState> {
         let k = positive_finite("stiffness", stiffness)?;
-        let pull = self.pull_off()?;
-        let lo = pull.displacement_control.contact_radius;
-        let limit = self.range()?.1.min(self.tip.max_contact_radius());
-        let short = |a: f64| -> Result<bool> {
-            let s = self.at_contact_radius(a)?;
-            Ok(s.force + k * s.depth < 0.0)
-        };
-        let mut hi = 2.0 * lo;
-        while short(hi.min(limit))? {
-            if hi >= limit {
-                return Err(Error::NoConvergence {
-                    method: "spring jump-in (no contact radius in range balances the spring)",
-                    iterations: 0,
-                    residual: k,
-                });
-            }
-            hi *= 2.0;
+        let (start, _) = self.range()?;
+        let limit = self
+            .body
+            .max_contact_radius()
+            .min(self.tip.max_contact_radius());
+        let spring = |s: &ContactState| s.force + k * s.depth;
+        // An adhesive branch starts below the surface with a pull: `F + k
+        // d < 0` at the smallest radius a pull-off is sought at.
+        if spring(&self.at_contact_radius(start)?) >= 0.0 {
+            return Err(Error::Internal {
+                what: "spring jump-in",
+                detail: format!("the branch balances the spring already at {start:e} m"),
+            });
         }
-        let a = bisect(lo, hi.min(limit), short)?;
-        self.at_contact_radius(a)
+        first_rise(self, spring, 0.0, (start, limit), None)?.ok_or(Error::NoConvergence {
+            method: "spring jump-in (no contact radius in range balances the spring)",
+            iterations: 0,
+            residual: k,
+        })
     }
 
     /// The contact radii a pull-off is sought over (m).
