@@ -20,13 +20,19 @@ B (I - A Q)`, `Q = Z E~^-1 Z^T`, symmetric positive definite for any
 symmetric positive definite `E~`; two more applications of `A` an
 iteration than the box `B` alone.
 
-Usage: python coarse_balancing.py B N [N ...]   (numpy, scipy, layered_contact)
+As the crate starts (`--crate`): the box with one sweep of the edge
+extension (`edge_extension.laplace(1, ...)`) in both, and a start from the
+problem on the grid twice coarser (the heights averaged over 2 x 2 cells,
+solved to `1e-3`, its pressures repeated on the fine cells).
+
+Usage: python coarse_balancing.py B N [N ...] [--crate]   (numpy, scipy, layered_contact)
 """
 
 import sys
 
 import numpy as np
 
+from edge_extension import laplace
 from projected_cg import operator, pressure_space, spectra, surface
 from two_level import Restricted, blocks, pcg
 
@@ -118,6 +124,39 @@ def linear(n, b, kernel, kb):
     return int(member.sum()), row
 
 
+def coarse_start(h):
+    """Pressures from the problem on the grid twice coarser (heights
+    averaged over 2 x 2 cells, solved to 1e-3), repeated on the fine cells."""
+    n = h.shape[0]
+    coarse = h.reshape(n // 2, 2, n // 2, 2).mean(axis=(1, 3))
+    p, _ = pressure_space(coarse, 1e-3)
+    return np.repeat(np.repeat(p, 2, axis=0), 2, axis=1)
+
+
+def crate_like(b, sizes):
+    """The box with the edge extension from a coarse start, alone and
+    inside balancing."""
+    print(f"blocks of {b}; the edge extension (one sweep) and a start from the grid twice "
+          "coarser, as the crate")
+    print("| N | constrained: box + extension | balancing, cheap E~ (neighbours exact) |")
+    print("|---|---|---|")
+    for n in sizes:
+        kernel, kb = cell_kernel(n), block_kernel(n, b)
+        stiffness, _ = spectra(n)
+        extended = laplace(1, 1.0, operator(stiffness))
+        h = surface(n)
+        start = coarse_start(h)
+        _, plain = pressure_space(h, 1e-8, precondition=extended, start=start)
+
+        def balanced(W, r):
+            ops = cheap_ops(W, b, 1, kernel, kb)
+            ops.B = lambda v: extended(W, ops.embed(v))[W]
+            return ops.embed(ops.balancing(r[W]))
+
+        _, two = pressure_space(h, 1e-8, precondition=balanced, start=start)
+        print(f"| {n} | {plain} | {two} |", flush=True)
+
+
 def main(b, sizes):
     print(f"blocks of {b}: linear PCG on the converged set (1e-8); constrained CG, cold (1e-8)")
     print("| N | contact cells | B | balancing, exact E | E~ diagonal exact | E~ near exact "
@@ -136,4 +175,8 @@ def main(b, sizes):
 
 
 if __name__ == "__main__":
-    main(int(sys.argv[1]), [int(a) for a in sys.argv[2:]] or [128, 256])
+    sizes = [int(a) for a in sys.argv[2:] if not a.startswith("--")] or [128, 256]
+    if "--crate" in sys.argv:
+        crate_like(int(sys.argv[1]), sizes)
+    else:
+        main(int(sys.argv[1]), sizes)

@@ -60,13 +60,14 @@ def operator(multiplier, single=False):
     return lambda x: np.fft.irfft2(np.fft.rfft2(x) * multiplier, s=x.shape)
 
 
-def pressure_space(h, tol, rule="fr", single=False, precondition=None):
+def pressure_space(h, tol, rule="fr", single=False, precondition=None, start=None):
     """Pressures and iterations of the constrained conjugate gradients;
     `precondition(W, r)`, if given, replaces the stiffness on the working
-    set `W` (`two_level.py`)."""
+    set `W` (`two_level.py`); `start`, if given, the first pressures
+    (`coarse_balancing.py`)."""
     stiffness, compliance = spectra(h.shape[0])
     K, M = operator(compliance), operator(stiffness, single)
-    p = np.full(h.shape, PBAR)
+    p = np.full(h.shape, PBAR) if start is None else start * (PBAR / start.mean())
     u, t, rz_old, z_old = K(p), np.zeros_like(h), 0.0, np.zeros_like(h)
     for it in range(1, 5001):
         depth = np.mean((h + u)[p > 0])
