@@ -292,12 +292,13 @@ fn loading_root(tip: &impl Branch, target: f64, by_force: bool) -> Result<Option
 /// [`LOADING_STEP`] (at most `log(top / start) / log(LOADING_STEP)`
 /// samples), then bisected. Where no sample below `top` reaches the target,
 /// `at_top` if given (the state at `top`, known to lie on the target), else
-/// the crossing before `top` if `top` reaches it, else `None`. A local maximum between samples may rise above the target where
-/// neither does (a target just below a fold's depth): where the samples
-/// turn down, the maximum between the last three is found (golden
-/// sections) and, if it reaches the target, the crossing lies below it.
-/// No maximum is sought between the start and the first sample (the start
-/// lies far below the target; an adhesive branch falls there).
+/// the crossing before `top` if `top` reaches it, else `None`. A local
+/// maximum between samples may rise above the target where neither does (a
+/// target just below a fold's depth): where the samples turn down, the
+/// maximum between the last three is found (golden sections) and, if it
+/// reaches the target, the crossing lies below it. No maximum is sought
+/// between the start and the first sample (the start lies far below the
+/// target; an adhesive branch falls there).
 pub(in crate::analytic) fn first_rise(
     tip: &impl Branch,
     key: impl Fn(&ContactState) -> f64,

@@ -136,8 +136,9 @@ def tip_pull_off(
     ``{"force", "depth", "contact_radius"}`` (N, m, m) under
     ``load_control`` and ``displacement_control`` and, on a cantilever of
     stiffness ``spring`` (N/m), where it jumps off (``spring_pull_off``,
+    the least position of the cantilever's base ``d + F/k``, where
     ``dF/dd = -k``) and where it lands when brought to touch
-    (``spring_jump_in``, ``F + k d = 0``)."""
+    (``spring_jump_in``, the first contact radius where ``F + k d = 0``)."""
     return _native.tip_pull_off(
         substrate, tip, radius, work_of_adhesion, half_angle=half_angle, spring=spring
     )

@@ -460,7 +460,7 @@ impl LayeredTip {
     /// minima, and this is the least of them, as `pull_off`'s are the
     /// least force and depth: a bisection between those two pull-offs'
     /// radii returned, before, a local minimum six times wider whose `Z`
-    /// lay 0.27 % above the least (`tests/tips.rs`).
+    /// lay 0.27 % above the least (`tests/cantilever_on_folds.rs`).
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for a stiffness that is not positive and
