@@ -112,7 +112,7 @@ pub(super) fn least_below(
     if top <= lo {
         return tip.state(top);
     }
-    let key = |s: &ContactState| if depth { s.depth } else { s.force };
+    let key = |s: &ContactState| controlled(s, !depth);
     let least = match minimise(lo, top, |a| tip.state(a), key) {
         Err(Error::InvalidParameter {
             name: "contact_radius",
