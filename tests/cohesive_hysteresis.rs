@@ -213,3 +213,63 @@ fn a_pinned_pull_off_is_flagged_and_a_receding_one_is_not() {
         .unwrap();
     assert!(curve.caveats.contains(&Caveat::CohesivePinnedPullOff));
 }
+
+/// The reference sweep's seed 156 at 16 cells across (its scene as the
+/// sweep shrank it): a sphere on a nearly incompressible 1 kPa film over a
+/// base 34 times stiffer, works 2.6e-4 and 1.8e-3 J/m^2.
+const TAIL_UNRESOLVED: &str = r#"
+[substrate]
+kind = "layer_on_elastic_base"
+youngs_modulus = 1e3
+poisson_ratio = 0.4999
+thickness = 3.8028840232949023e-3
+base_youngs_modulus = 3.3779141073700375e4
+base_poisson_ratio = 0
+[indenter]
+kind = "sphere"
+radius = 1e-1
+[adhesion]
+kind = "hysteresis"
+loading = 2.636743457951125e-4
+unloading = 1.8065579553231054e-3
+[protocol]
+kind = "cycle"
+max_depth = 7.707206228212584e-5
+steps = 4
+[resolution]
+cells_across = 16
+[solver]
+adhesion_method = "cohesive_zone"
+"#;
+
+/// Past its least force the unloading of [`TAIL_UNRESOLVED`] steps to
+/// -57.8 um, 3 % above where the exact contact lets go under displacement
+/// control, and there the zone's fixed point reaches no equilibrium, in
+/// 16 substeps either (the contact flips between four cells and none).
+/// Before 2026-12-04 (thirty-second session) the whole scene failed with
+/// `NoConvergence`; now the curve ends at the last equilibrium (-38.5 um,
+/// still in contact) with `Caveat::CohesiveUnloadingCutShort`, and its
+/// pull-off, found before, is the exact one's to the staircase of 16 cells
+/// (measured -1.03 %; the sweep allows 5 % at 16 cells). Should the fixed
+/// point one day reach that step, this test needs another scene.
+#[test]
+fn an_unloading_whose_tail_does_not_converge_ends_with_its_caveat() {
+    let scene = Scene::from_toml(TAIL_UNRESOLVED).unwrap();
+    let curve = scene.run(&mut |_| {}).unwrap();
+    assert!(curve.caveats.contains(&Caveat::CohesiveUnloadingCutShort));
+    let last = curve.steps.last().unwrap();
+    assert_eq!(last.phase, Phase::Unloading);
+    assert!(last.contact_area > 0.0 && last.depth < -3e-5, "{last:?}");
+    let exact = scene
+        .reference()
+        .unwrap()
+        .into_iter()
+        .find(|r| r.quantity == Quantity::PullOffForce)
+        .unwrap();
+    let error = curve.pull_off().unwrap().force / exact.value - 1.0;
+    assert!(error.abs() < 0.02, "{error}");
+    // A cycle whose unloading reaches contact loss carries no such caveat.
+    let curve = pinned_cycle(16).run(&mut |_| {}).unwrap();
+    assert!(!curve.caveats.contains(&Caveat::CohesiveUnloadingCutShort));
+    assert_eq!(curve.steps.last().unwrap().contact_area, 0.0);
+}

@@ -129,6 +129,18 @@ pub enum Caveat {
     /// hysteresis"). A finer grid narrows it; for an axisymmetric contact
     /// the energy balance is exact.
     CohesivePinnedPullOff,
+    /// A cycle's unloading through the cohesive zone ended before the
+    /// contact was lost: past the least force (searched between its steps),
+    /// the zone's fixed point reached no equilibrium at a later step from
+    /// the one before, even in 16 substeps. The curve ends at the last
+    /// equilibrium reached. Its pull-off is the least force of the steps it
+    /// has (a second, lower minimum further out would be missed); the depth
+    /// at which the contact is lost is not known. Seen where the contact had
+    /// shrunk to a few cells, narrower than the zone, near where
+    /// displacement control lets go (the reference sweep's seed 156 at 16
+    /// cells across: two cells; `BENCHMARKS.md`, "Seeds 143 to 166"). A
+    /// finer grid resolves the tail.
+    CohesiveUnloadingCutShort,
 }
 
 /// The least part of the peak's contact area that a contact still covers
@@ -365,6 +377,12 @@ impl std::fmt::Display for Caveat {
                  mostly too weak (-8.4, -3.7, -1.4 % at 16, 32, 64 cells across on a \
                  half-space; -19, -9.6, -6.3 % over a base 2000 times softer): refine the \
                  grid, or for an axisymmetric contact use the energy balance (exact)",
+            ),
+            Caveat::CohesiveUnloadingCutShort => f.write_str(
+                "unloading cut short through the cohesive zone: past the least force the \
+                 zone's fixed point reached no equilibrium at a later step, so the curve ends \
+                 before the contact is lost (its pull-off is the least force of the steps it \
+                 has; where the contact is lost is not known): refine the grid",
             ),
         }
     }

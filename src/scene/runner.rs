@@ -40,6 +40,9 @@ pub(super) struct Runner<'a> {
     /// The least force of the cohesive solves and the widest patch of its
     /// contact in cells across.
     least_cohesive: Option<(f64, f64)>,
+    /// Whether the cohesive unloading ended before the contact was lost
+    /// ([`Caveat::CohesiveUnloadingCutShort`](super::Caveat::CohesiveUnloadingCutShort)).
+    cut_short: bool,
 }
 
 impl<'a> Runner<'a> {
@@ -63,6 +66,7 @@ impl<'a> Runner<'a> {
                 && scene.boundary == Boundary::Isolated,
             cohesive,
             least_cohesive: None,
+            cut_short: false,
         })
     }
 
@@ -313,6 +317,9 @@ impl<'a> Runner<'a> {
         };
         if pinned && (soft_below || curve.came_off_pinned()) {
             curve.caveats.push(super::Caveat::CohesivePinnedPullOff);
+        }
+        if self.cut_short {
+            curve.caveats.push(super::Caveat::CohesiveUnloadingCutShort);
         }
         Ok(Outcome::Done(Box::new(curve)))
     }

@@ -83,6 +83,8 @@ impl Runner<'_> {
         };
         let mut lowest = recorded.force;
         let mut pending: Option<Probe<Kept>> = None;
+        // Whether the least force was searched between two steps.
+        let mut searched = false;
         let reach = self.pull_reach(max_depth);
         let limit = unloading_steps(max_depth, increment, reach);
         for _ in 0..limit {
@@ -92,7 +94,20 @@ impl Runner<'_> {
             increment = next;
             let above = depth;
             depth -= increment;
-            let solution = self.solve_after(Some(above), Control::Depth(depth))?;
+            let solution = match self.solve_after(Some(above), Control::Depth(depth)) {
+                // Past the least force, a step whose equilibrium the fixed
+                // point does not reach ends the curve at the last one, with
+                // `Caveat::CohesiveUnloadingCutShort`.
+                Err(Error::NoConvergence { .. }) if searched => {
+                    self.cut_short = true;
+                    let Some(last) = pending.take() else {
+                        return Ok(true);
+                    };
+                    let (_, solution) = last.kept;
+                    return Ok(solution.is_none_or(|s| self.record(s, Phase::Unloading, progress)));
+                }
+                other => other?,
+            };
             let lost = solution.contact_cells == 0;
             let current = Probe {
                 depth,
@@ -111,6 +126,7 @@ impl Runner<'_> {
                         return Ok(true);
                     }
                     lowest = lowest.min(least);
+                    searched = true;
                     self.warm = state.clone();
                     recorded = Probe {
                         depth,
