@@ -152,7 +152,18 @@ impl Scene {
                 (Some(works), AdhesionMethod::EnergyBalance) => {
                     energy::run(self, active, &*indenter, works, progress, observer)?
                 }
-                _ => Runner::new(self, active, &indenter, observer)?.run(progress)?,
+                (_, method) => {
+                    match Runner::new(self, active, &indenter, observer)?.run(progress) {
+                        // A cohesive zone that did not settle on the grid's
+                        // outer ring: a wider grid, as for a contact there.
+                        Err(Error::ContactReachesEdge { .. })
+                            if method == AdhesionMethod::CohesiveZone =>
+                        {
+                            Outcome::ReachedEdge
+                        }
+                        other => other?,
+                    }
+                }
             };
             match outcome {
                 Outcome::Done(mut curve) => {

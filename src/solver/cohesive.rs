@@ -179,8 +179,10 @@ impl ContactSolver {
     /// law's peak (where they did and left again, the solution is the
     /// closest round's, its `residual` saying how close; under force
     /// control, [`solve_force_cohesive`](Self::solve_force_cohesive),
-    /// never); as
-    /// [`ContactSolver::solve_depth`] otherwise.
+    /// never); [`Error::ContactReachesEdge`] where the fixed point (under
+    /// depth control) does not converge with its last round's zone or contact on the outer ring
+    /// of an isolated grid (the zone may want to spread beyond it: a scene
+    /// widens its grid); as [`ContactSolver::solve_depth`] otherwise.
     pub fn solve_depth_cohesive<I: Indenter + ?Sized>(
         &mut self,
         indenter: &I,
@@ -543,6 +545,24 @@ impl ContactSolver {
             // The rounds came within `CLOSE_ENOUGH` and left again.
             return self.cohesive_round_solution(round, iterations);
         }
+        // A zone that reached the outer ring of an isolated grid may have
+        // wanted to spread beyond it: the grid, not the fixed point, is
+        // what to change (a scene widens it).
+        let (rows, columns) = (grid.rows(), grid.columns());
+        // Under force control a fixed point that does not converge is how a
+        // force past the least one shows, whatever its zone.
+        let at_edge = !periodic
+            && matches!(control, Control::Depth(_))
+            && (0..n).any(|c| {
+                (contact[c] || mapped[c] != 0.0) && super::on_outer_ring(c, rows, columns)
+            });
+        if at_edge {
+            return Err(Error::ContactReachesEdge {
+                cells: contact.iter().filter(|k| **k).count(),
+                detail: "the cohesive zone's fixed point did not settle with its zone on the \
+                         grid's outer ring: use a wider grid",
+            });
+        }
         Err(Error::NoConvergence {
             method: "cohesive zone fixed point",
             iterations: max_rounds,
@@ -608,6 +628,40 @@ pub(super) mod tests {
         let range = 2.0 * (1e30 * 4.0 * grid.spacing() / 1e6).sqrt();
         assert!((law.range / range - 1.0).abs() < 1e-15);
         assert!((law.peak * range / 2e30 - 1.0).abs() < 1e-15);
+    }
+
+    /// The JKR sphere pressed to a contact of 1.5 pull-off radii on a grid
+    /// only 1.5 of them wide, its fixed point stopped after three rounds:
+    /// the zone lies on the grid's outer ring, so the error asks for a
+    /// wider grid (`ContactReachesEdge`, which a scene answers by widening
+    /// it) rather than more rounds; on the grid of four radii the same
+    /// three rounds end in `NoConvergence`. Before 2026-12-04 (thirty-second
+    /// session) both were `NoConvergence`, and the reference sweep's seed
+    /// 162 (a stack whose contact the exact sizing put inside 7 mm, its
+    /// zone spreading to the grid's edge at 7.9 mm) failed on a grid a
+    /// scene would have widened.
+    #[test]
+    fn a_zone_that_does_not_settle_on_the_outer_ring_asks_for_a_wider_grid() {
+        let rubber = Material::new(1e6, 0.48).unwrap();
+        let (radius, work) = (1e-2, 0.05);
+        let jkr = JkrSphere::new(&rubber, radius, work).unwrap();
+        let a = jkr.pull_off_contact_radius();
+        let body = Substrate::half_space(rubber);
+        let sphere = Sphere::new(radius).unwrap();
+        let zone = CohesiveZone::new(work, work).unwrap();
+        let depth = jkr.depth(1.5 * a);
+        for (width, at_edge) in [(1.5, true), (4.0, false)] {
+            let grid = Grid::square_of_side(24, width * a).unwrap();
+            let params = crate::solver::SolverParams::default();
+            let mut solver = ContactSolver::new(&body, &grid, Boundary::Isolated, params).unwrap();
+            let (control, limits) = (Control::Depth(depth), (3, &mut 0));
+            let error = solver
+                .cohesive_fixed_point(&sphere, control, depth, &zone, None, limits, &mut ())
+                .unwrap_err();
+            let reaches = matches!(error, Error::ContactReachesEdge { .. });
+            let stopped = matches!(error, Error::NoConvergence { iterations: 3, .. });
+            assert_eq!((reaches, stopped), (at_edge, !at_edge), "{width}: {error}");
+        }
     }
 
     /// The JKR sphere at its pull-off contact radius, loaded and unloaded
