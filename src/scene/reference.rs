@@ -45,7 +45,10 @@ impl Scene {
     ///
     /// * Flat punch: the stiffness; the force at the deepest step of a
     ///   depth-driven protocol; with adhesion the pull-off force at the
-    ///   unloading work of adhesion (Kendall's on a half-space). Without
+    ///   unloading work of adhesion (Kendall's on a half-space), its edge
+    ///   followed as it peels inward where that is stable
+    ///   ([`Axisymmetric::punch_pull_off`]: a stiff plate over a far softer
+    ///   base). Without
     ///   adhesion none where the bonded solution pulls somewhere on the
     ///   face ([`LayeredFlatPunch::holds_without_adhesion`]): the face then
     ///   lifts off there and the contact is not the face.
@@ -125,9 +128,20 @@ impl Scene {
                     });
                 }
                 if adhesive && receding > 0.0 {
+                    // Its edge peeling inward: the least force a
+                    // force-driven unloading reaches, or a depth-driven
+                    // one before its depth turns.
+                    let pull_off = exact.punch_pull_off(radius, receding)?;
+                    let (load, depth) = (pull_off.load_control, pull_off.displacement_control);
+                    let by_force = matches!(self.protocol.peak(), Reach::Force(_));
+                    let value = if by_force || load.contact_radius >= depth.contact_radius {
+                        load.force
+                    } else {
+                        depth.force
+                    };
                     out.push(Reference {
                         quantity: Quantity::PullOffForce,
-                        value: punch.pull_off_force(receding),
+                        value,
                         source,
                     });
                 }
