@@ -6,6 +6,7 @@
 //! rim's onset, 13.5 % weaker than the pull-off.
 
 use layered_contact::analytic::Axisymmetric;
+#[cfg(feature = "serde")]
 use layered_contact::scene::{Quantity, Scene};
 use layered_contact::substrate::Base;
 use layered_contact::{Material, Substrate};
@@ -27,6 +28,7 @@ fn plate_on_soft_base() -> Substrate {
     .unwrap()
 }
 
+#[cfg(feature = "serde")]
 fn scene(cells: usize, method: &str) -> Scene {
     Scene::from_toml(&format!(
         r#"
@@ -89,6 +91,7 @@ fn the_edge_peels_to_the_least_force_of_the_punches_within() {
 /// criterion along the peeling path (the cohesive zone's unloading of a
 /// punch) comes to it: measured +0.39 % at 32 cells across (-0.25 % at 16,
 /// +0.21 % at 64).
+#[cfg(feature = "serde")]
 #[test]
 fn the_peeling_path_of_the_bem_reaches_the_peeled_pull_off() {
     let scene = scene(32, "cohesive_zone");

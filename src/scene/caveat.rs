@@ -138,8 +138,9 @@ pub enum Caveat {
     /// at which the contact is lost is not known. Seen where the contact had
     /// shrunk to a few cells, narrower than the zone, near where
     /// displacement control lets go (the reference sweep's seed 156 at 16
-    /// cells across: two cells; `BENCHMARKS.md`, "Seeds 143 to 166"). A
-    /// finer grid resolves the tail.
+    /// cells across: two cells, its pull-off -1.03 % off the exact one;
+    /// `BENCHMARKS.md`, "Seeds 156, 159 and 162 settled"). A finer grid
+    /// resolves the tail.
     CohesiveUnloadingCutShort,
 }
 

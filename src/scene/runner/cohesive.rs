@@ -61,6 +61,9 @@ impl Runner<'_> {
     /// the nearest one above it) and solved at the parabola's vertex, so
     /// that [`Curve::pull_off`] is the minimum of the curve, not of the
     /// protocol's steps. Every equilibrium is recorded, by falling depth.
+    /// A step after that search whose equilibrium the fixed point does not
+    /// reach ends the curve at the last one, with
+    /// [`Caveat::CohesiveUnloadingCutShort`](super::super::Caveat::CohesiveUnloadingCutShort).
     ///
     /// [`Curve::pull_off`]: super::super::Curve::pull_off
     pub(in crate::scene) fn unload_cohesive(
