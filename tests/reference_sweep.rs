@@ -126,6 +126,9 @@ fn caveat_tolerance(caveat: &Caveat) -> f64 {
         // 0.9 to 25 % weak (BENCHMARKS.md, "The cohesive zone on contacts it
         // spans").
         Caveat::CohesiveZoneSpansContact => 0.3,
+        // +4.9 % at 16 cells (a punch on a plate over a 190 Pa base;
+        // BENCHMARKS.md, "Seeds 156, 159 and 162 settled").
+        Caveat::EnergyBalanceFlatStiffness => 0.1,
         _ => TOLERANCE,
     }
 }

@@ -300,6 +300,18 @@ impl AdhesiveBranches {
         self.nodes.last().map_or(0.0, |n| n.area)
     }
 
+    /// How much the stiffness changes with the contact at `area` (m^2):
+    /// `(A / k) dk/dA` from the fits of its sets (0.5 on a half-space,
+    /// where `k = 2 E* a`; near 0 on a stiff plate over a far softer base,
+    /// whose stiffness the base sets). NaN without two sets.
+    pub(crate) fn stiffness_area_slope(&self, area: f64) -> f64 {
+        if self.nodes.len() < 2 {
+            return f64::NAN;
+        }
+        let local = self.local(area);
+        area * local.slopes[0] / local.stiffness
+    }
+
     /// The segment `i` with `nodes[i].area <= area < nodes[i+1].area`
     /// (clamped to the ends).
     fn segment(&self, area: f64) -> usize {
