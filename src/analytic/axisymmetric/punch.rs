@@ -123,6 +123,12 @@ impl LayeredFlatPunch {
 /// sections.
 const PEEL_STEP: f64 = 0.02;
 
+/// How far inside the rim (as a fraction of the radius) a force or depth
+/// that rises over the scan's first step is read again, to tell a rim that
+/// lets go at once (Kendall's disc: both rise) from a least within that
+/// step.
+const NEAR_RIM: f64 = 1e-4;
+
 impl Axisymmetric {
     /// The pull-off of a flat punch of `radius` (m) bonded with
     /// `work_of_adhesion` (J/m^2), following its edge as it peels inward.
@@ -184,14 +190,14 @@ impl Axisymmetric {
                 let next = state(radius * (1.0 - k as f64 * PEEL_STEP))?;
                 if key(&next) >= key(&at) {
                     if at.contact_radius == radius {
-                        // Rising at once: the rim's state, unless the least
-                        // lies within the first step.
-                        let inside = golden_minimum((next.contact_radius, radius), state, key)?;
-                        return Ok(if key(&inside) < key(&rim) {
-                            inside
-                        } else {
-                            rim
-                        });
+                        // Rising at once: the rim's state, unless it falls
+                        // just inside the rim (then the least lies within
+                        // the first step).
+                        let near = state(radius * (1.0 - NEAR_RIM))?;
+                        if key(&near) >= key(&rim) {
+                            return Ok(rim);
+                        }
+                        return golden_minimum((next.contact_radius, radius), state, key);
                     }
                     return golden_minimum((next.contact_radius, above.contact_radius), state, key);
                 }
