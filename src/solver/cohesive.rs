@@ -180,9 +180,10 @@ impl ContactSolver {
     /// closest round's, its `residual` saying how close; under force
     /// control, [`solve_force_cohesive`](Self::solve_force_cohesive),
     /// never); [`Error::ContactReachesEdge`] where the fixed point (under
-    /// depth control) does not converge with its last round's zone or contact on the outer ring
-    /// of an isolated grid (the zone may want to spread beyond it: a scene
-    /// widens its grid); as [`ContactSolver::solve_depth`] otherwise.
+    /// depth control) does not converge with its last round's zone or
+    /// contact on the outer ring of an isolated grid (the zone may want to
+    /// spread beyond it: a scene widens its grid); as
+    /// [`ContactSolver::solve_depth`] otherwise.
     pub fn solve_depth_cohesive<I: Indenter + ?Sized>(
         &mut self,
         indenter: &I,

@@ -152,7 +152,7 @@ impl Axisymmetric {
     /// On the reference sweep's seed 159 (a 0.1 m punch on a 1 kPa layer
     /// 9.6 mm thick over a 724 kPa layer 28.8 mm thick over a base of 0.19
     /// Pa, 100 J/m^2) the rim lets go at -48.86 N and the least force is
-    /// -56.46 N at `c = 0.70 a`.
+    /// -56.47 N at `c = 0.71 a` (`tests/punch_peeling.rs`).
     ///
     /// ```
     /// use layered_contact::analytic::{Axisymmetric, JkrFlatPunch};
@@ -170,8 +170,8 @@ impl Axisymmetric {
     ///
     /// # Errors
     /// As [`Axisymmetric::flat_punch`] at `radius` or a smaller one;
-    /// [`Error::InvalidParameter`](crate::Error::InvalidParameter) for a negative or non-finite work of
-    /// adhesion.
+    /// [`Error::InvalidParameter`](crate::Error::InvalidParameter) for a
+    /// negative or non-finite work of adhesion.
     pub fn punch_pull_off(&self, radius: f64, work_of_adhesion: f64) -> Result<PullOff> {
         let work = non_negative_finite("work of adhesion", work_of_adhesion)?;
         let state = |c: f64| -> Result<ContactState> {
