@@ -113,7 +113,7 @@
 //!   terms, from fits of neighbouring sets: where the stiffness barely
 //!   changes with the contact (a punch on a stiff plate over a far softer
 //!   base, `(A / k) dk/dA` 0.0039 to 0.25 against 0.5 on a half-space) a
-//!   flat punch's pull-off came out 2 to 6 % off, not converging with the
+//!   flat punch's pull-off came out 0.5 to 6 % off, not converging with the
 //!   grid, where the peeling path by the local criterion (the cohesive
 //!   zone's unloading of a punch) converges like `1 / N`; such a curve
 //!   carries

@@ -147,7 +147,7 @@ pub enum Caveat {
     /// half-space; a stiff layer over a far softer body, whose stiffness
     /// the body below sets). The balance's release rate is the area
     /// derivative of that stiffness, from fits of neighbouring contact
-    /// sets, and its pull-off came out 2 to 6 % off (not converging with
+    /// sets, and its pull-off came out 0.5 to 6 % off (not converging with
     /// the grid) where the ratio was 0.25 or less: a punch on a stiff plate
     /// over bases of 0.19 Pa to 1.9 kPa, at 16 to 64 cells across
     /// (`BENCHMARKS.md`, "Seeds 156, 159 and 162 settled";
@@ -395,7 +395,7 @@ impl std::fmt::Display for Caveat {
             Caveat::EnergyBalanceFlatStiffness => f.write_str(
                 "energy balance on a punch whose stiffness barely changes with its contact (a \
                  stiff layer over a far softer body): the pull-off is the area derivative of \
-                 that stiffness and came out 2 to 6 % off on such bodies, not converging with \
+                 that stiffness and came out up to 6 % off on such bodies, not converging with \
                  the grid: use adhesion_method = \"cohesive_zone\" (its peeling path converges)",
             ),
             Caveat::CohesiveUnloadingCutShort => f.write_str(

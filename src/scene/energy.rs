@@ -102,7 +102,7 @@ pub(super) fn run(
 /// carries no [`Caveat::EnergyBalanceFlatStiffness`]. Measured
 /// (`examples/punch_peeling.rs`, `BENCHMARKS.md`, "Seeds 156, 159 and 162
 /// settled"): a punch on a stiff plate over bases 0.19 Pa to 190 kPa, the
-/// ratio 0.0039 to 0.92, the pull-off 2 to 6 % off at 16 to 64 cells
+/// ratio 0.0039 to 0.92, the pull-off 0.5 to 6 % off at 16 to 64 cells
 /// across where it is 0.25 or less, within 1.1 % where it is 0.57 or more;
 /// the branches' own ratio within 15 % of the exact one's.
 const PUNCH_STIFFNESS_SLOPE: f64 = 0.4;
