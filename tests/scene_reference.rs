@@ -302,8 +302,11 @@ fn a_sphere_reference_is_the_sphere_s_own() {
 /// and the cycle reported that disc's force as the pull-off, 78 % beyond
 /// the exact one. The exact onset is the pull-off here (the critical depth
 /// of a punch of radius `c` shrinks with `c` from 10.6 m to 9.2 m and on
-/// to 0). Now the contact comes off: the pull-off within 0.5 % of the
-/// exact one (0.38 % at 16 cells, 0.06 % at 32).
+/// to 0). Now the contact comes off: the pull-off within 1 % of the
+/// exact one. Since 2026-12-04 (thirty-third session) `auto` takes the
+/// peeling path here (the punch's `(A / k) dk/dA` at the face is below
+/// 0.4): +0.79, +0.39, +0.16 % at 16, 32, 64 cells across, where the energy
+/// balance gave +0.38, +0.06, +0.33 %, not converging.
 #[test]
 fn a_punch_pulled_past_its_jump_off_comes_off() {
     let scene = cycle_at_16(
@@ -324,7 +327,7 @@ fn a_punch_pulled_past_its_jump_off_comes_off() {
     let curve = scene.run(&mut |_| {}).unwrap();
     let pull_off = Quantity::PullOffForce.of(&curve).unwrap();
     assert!(
-        (pull_off / exact - 1.0).abs() < 0.005,
+        (pull_off / exact - 1.0).abs() < 0.01,
         "{pull_off} against {exact}"
     );
     // Beyond the exact critical depth (-10.57 m) nothing holds.

@@ -6,6 +6,7 @@ use crate::error::{Error, Result};
 use crate::indenter::Indenter;
 use crate::solver::{AdhesiveBranches, BranchPoint, ContactSolver, Observer, Reach, SolverParams};
 
+use super::method::PUNCH_STIFFNESS_SLOPE;
 use super::runner::Outcome;
 use super::{
     Caveat, Curve, IndenterSpec, Phase, Protocol, Scene, Step, MAX_PROTOCOL_STEPS, MAX_PULL_DEPTHS,
@@ -96,16 +97,6 @@ pub(super) fn run(
     }
     Ok(outcome)
 }
-
-/// The least `(A / k) dk/dA` at a punch's face (the contact's stiffness `k`
-/// against its area `A`; 0.5 on a half-space) whose energy-balance curve
-/// carries no [`Caveat::EnergyBalanceFlatStiffness`]. Measured
-/// (`examples/punch_peeling.rs`, `BENCHMARKS.md`, "Seeds 156, 159 and 162
-/// settled"): a punch on a stiff plate over bases 0.19 Pa to 190 kPa, the
-/// ratio 0.0039 to 0.92, the pull-off 0.5 to 6 % off at 16 to 64 cells
-/// across where it is 0.25 or less, within 1.1 % where it is 0.57 or more;
-/// the branches' own ratio within 15 % of the exact one's.
-const PUNCH_STIFFNESS_SLOPE: f64 = 0.4;
 
 fn done(
     solver: &ContactSolver,

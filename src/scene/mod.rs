@@ -40,6 +40,7 @@ mod curve;
 mod energy;
 #[cfg(feature = "serde")]
 mod file;
+mod method;
 mod reference;
 mod run;
 mod runner;
@@ -233,7 +234,8 @@ pub struct SolverSettings {
 ///
 /// [`Auto`](AdhesionMethod::Auto), the default, takes the method that is
 /// exact for the scene ([`Scene::resolved_adhesion_method`]): the energy
-/// balance where the contact sets are discs, the cohesive zone for every
+/// balance where the contact sets are discs (but for a punch whose
+/// stiffness barely changes with its contact), the cohesive zone for every
 /// other shape. `#[non_exhaustive]`: methods may be added
 /// in minor releases.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -247,11 +249,13 @@ pub enum AdhesionMethod {
     /// The method that converges to the JKR limit for the scene: the energy
     /// balance for an untilted flat punch, sphere or cone and any paraboloid
     /// on an isolated grid (their contact sets are discs: exact, and a whole
-    /// cycle for the price of one family of contact sets); the cohesive zone
-    /// for every other scene (tilted indenters, punches included, height
-    /// maps, rough surfaces, custom indenters, periodic grids), under
-    /// displacement or force control, a punch's unloading along its
-    /// peeling path by the local criterion.
+    /// cycle for the price of one family of contact sets), except a punch
+    /// on a layered body whose stiffness barely changes with its contact
+    /// ([`Scene::resolved_adhesion_method`]); the cohesive zone for every
+    /// other scene (tilted indenters, punches included, height maps, rough
+    /// surfaces, custom indenters, periodic grids), under displacement or
+    /// force control, a punch's unloading along its peeling path by the
+    /// local criterion.
     #[default]
     Auto,
     /// The energy (Griffith) balance over the contact edge along a family of
@@ -510,84 +514,6 @@ impl Scene {
             });
         }
         Ok(())
-    }
-
-    /// The adhesion method this scene runs: its
-    /// [`SolverSettings::adhesion_method`], with
-    /// [`Auto`](AdhesionMethod::Auto) resolved to the energy balance for an
-    /// untilted flat punch, sphere or cone and any paraboloid (a tilted one
-    /// is a paraboloid moved off the axis) on an isolated grid and for any
-    /// flat punch, and to the cohesive zone for every other scene, under
-    /// displacement or force control (never `Auto`).
-    ///
-    /// ```
-    /// use layered_contact::scene::{AdhesionMethod, IndenterSpec, Scene, Tilt};
-    ///
-    /// let sphere = Scene {
-    ///     indenter: IndenterSpec::Paraboloid { radius: 0.01 },
-    ///     ..Scene::default()
-    /// };
-    /// assert_eq!(sphere.resolved_adhesion_method(), AdhesionMethod::EnergyBalance);
-    /// let tilted = Scene {
-    ///     indenter: IndenterSpec::Cone { half_angle: 1.2, base_radius: 1e-3 },
-    ///     tilt: Some(Tilt { angle_x: 0.0, angle_y: 0.01 }),
-    ///     ..Scene::default()
-    /// };
-    /// assert_eq!(tilted.resolved_adhesion_method(), AdhesionMethod::CohesiveZone);
-    /// ```
-    pub fn resolved_adhesion_method(&self) -> AdhesionMethod {
-        if self.solver.adhesion_method != AdhesionMethod::Auto {
-            return self.solver.adhesion_method;
-        }
-        if self.contact_sets_are_discs() {
-            AdhesionMethod::EnergyBalance
-        } else {
-            AdhesionMethod::CohesiveZone
-        }
-    }
-
-    /// The adhesion method this scene's adhesive steps run
-    /// ([`resolved_adhesion_method`](Self::resolved_adhesion_method)), or
-    /// `None` for a scene without adhesion: what the tool prints and
-    /// Python's `Curve.adhesion_method` gives.
-    ///
-    /// ```
-    /// use layered_contact::scene::{Adhesion, AdhesionMethod, Scene};
-    ///
-    /// assert_eq!(Scene::default().adhesion_method_run(), None);
-    /// let sticky = Scene {
-    ///     adhesion: Adhesion::Constant { work_of_adhesion: 0.05 },
-    ///     ..Scene::default()
-    /// };
-    /// assert_eq!(sticky.adhesion_method_run(), Some(AdhesionMethod::EnergyBalance));
-    /// ```
-    pub fn adhesion_method_run(&self) -> Option<AdhesionMethod> {
-        self.adhesion
-            .works()
-            .map(|_| self.resolved_adhesion_method())
-    }
-
-    /// Whether the indenter's level sets are discs on an isolated grid, where
-    /// the energy balance releases evenly along the edge and is exact: an
-    /// untilted sphere, paraboloid, cone or flat punch, and a tilted
-    /// paraboloid (`r^2 / 2R + x tan(t)` is the paraboloid about `x = -R
-    /// tan(t)`, lowered by `R tan(t)^2 / 2`).
-    pub(crate) fn contact_sets_are_discs(&self) -> bool {
-        let untilted = self.untilted();
-        self.boundary == Boundary::Isolated
-            && match self.indenter {
-                IndenterSpec::Paraboloid { .. } => true,
-                IndenterSpec::Sphere { .. }
-                | IndenterSpec::Cone { .. }
-                | IndenterSpec::FlatPunch { .. } => untilted,
-                _ => false,
-            }
-    }
-
-    /// Whether the scene has no tilt, or a tilt of zero angles.
-    pub(crate) fn untilted(&self) -> bool {
-        self.tilt
-            .is_none_or(|t| t.angle_x == 0.0 && t.angle_y == 0.0)
     }
 
     /// Makes a relative height-map path relative to `folder` (the folder of

@@ -306,9 +306,8 @@ impl<'a> Runner<'a> {
                 (Some(_), Some(zone)) => super::caveat::cohesive(
                     &zone,
                     substrate,
-                    self.solver.grid().spacing(),
-                    peak_radius,
-                    &self.scene.indenter,
+                    (self.solver.grid().spacing(), peak_radius),
+                    (&self.scene.indenter, self.scene.untilted()),
                     self.least_cohesive.map(|(_, across)| across),
                 ),
                 _ => Vec::new(),
