@@ -12,9 +12,16 @@
 //! cohesive zone's unloading of a punch) against the exact pull-off, at
 //! the cells across the punch given (default 32).
 //!
-//! `cargo run --release --example punch_peeling -- 16 32 64`
+//! `cargo run --release --example punch_peeling -- 16 32 64`; with
+//! `films` first (`-- films 16 32 64 128`) the same two methods on a 3.5
+//! mm punch (`dgamma` 0.0175 advancing, 0.326 J/m^2 receding) on a 0.324
+//! MPa half-space and on layers of it on a rigid base (`nu` 0.3 and 0.48,
+//! `a / h` 0.35 to 8), each row's `r` first.
 use layered_contact::analytic::Axisymmetric;
-use layered_contact::scene::Quantity;
+use layered_contact::scene::{
+    Adhesion, AdhesionMethod, IndenterSpec, Protocol, Quantity, Resolution, Scene, SolverSettings,
+    SubstrateSpec,
+};
 use layered_contact::Result;
 
 #[path = "support/punch_plate.rs"]
@@ -27,6 +34,9 @@ fn main() -> Result<()> {
         .filter_map(|a| a.parse().ok())
         .collect();
     let cells = if cells.is_empty() { vec![32] } else { cells };
+    if std::env::args().nth(1).as_deref() == Some("films") {
+        return films(&cells);
+    }
     println!("base Pa   r       c/a    F/rim   auto           N    energy balance  peeling path");
     for base in [SEED_159_BASE, 1.9, 1.9e1, 1.9e2, 1.9e3, 1.9e4, 1.9e5] {
         let body = body(base)?;
@@ -39,18 +49,7 @@ fn main() -> Result<()> {
         for &n in &cells {
             let mut errors = Vec::new();
             for method in ["energy_balance", "cohesive_zone"] {
-                let scene = scene(base, n, method)?;
-                let reference = scene.reference()?.into_iter();
-                let mut exact = reference.filter(|r| r.quantity == Quantity::PullOffForce);
-                // A typed refusal is printed as such.
-                let error = match (exact.next(), scene.run(&mut |_| {})) {
-                    (Some(e), Ok(curve)) => curve.pull_off().map_or("-".into(), |p| {
-                        format!("{:+.3} %", 100.0 * (p.force / e.value - 1.0))
-                    }),
-                    (_, Err(refused)) => format!("refused: {refused:?}").chars().take(40).collect(),
-                    _ => "-".into(),
-                };
-                errors.push(error);
+                errors.push(pull_off_error(&scene(base, n, method)?)?);
             }
             let auto = scene(base, n, "auto")?.resolved_adhesion_method();
             println!(
@@ -61,6 +60,81 @@ fn main() -> Result<()> {
                 errors[0],
                 errors[1]
             );
+        }
+    }
+    Ok(())
+}
+
+/// The pull-off error (per cent) of `scene` against its exact one, or what
+/// refused it.
+fn pull_off_error(scene: &Scene) -> Result<String> {
+    let reference = scene.reference()?.into_iter();
+    let mut exact = reference.filter(|r| r.quantity == Quantity::PullOffForce);
+    Ok(match (exact.next(), scene.run(&mut |_| {})) {
+        (Some(e), Ok(curve)) => curve.pull_off().map_or("-".into(), |p| {
+            format!("{:+.3} %", 100.0 * (p.force / e.value - 1.0))
+        }),
+        (_, Err(refused)) => format!("refused: {refused:?}").chars().take(24).collect(),
+        _ => "-".into(),
+    })
+}
+
+/// A punch on a half-space and on layers on a rigid base: `r`, then the
+/// energy balance's and the peeling path's pull-off errors at `cells`.
+fn films(cells: &[usize]) -> Result<()> {
+    let a = 3.5e-3;
+    let mut bodies = vec![(
+        "half-space".to_string(),
+        SubstrateSpec::HalfSpace {
+            youngs_modulus: 0.324e6,
+            poisson_ratio: 0.48,
+        },
+    )];
+    for nu in [0.3, 0.48] {
+        for ah in [0.35, 1.0, 2.0, 4.0, 8.0] {
+            bodies.push((
+                format!("nu {nu} a/h {ah}"),
+                SubstrateSpec::LayerOnRigidBase {
+                    youngs_modulus: 0.324e6,
+                    poisson_ratio: nu,
+                    thickness: a / ah,
+                },
+            ));
+        }
+    }
+    println!("body             r      N    energy balance  peeling path");
+    for (name, substrate) in bodies {
+        let exact = Axisymmetric::up_to_contact_radius(&substrate.build()?, a)?;
+        let punch = exact.flat_punch(a)?;
+        let r =
+            2.0 * std::f64::consts::PI * a * a * punch.energy_release_rate(1.0) / punch.stiffness();
+        for &n in cells {
+            let mut errors = Vec::new();
+            for method in [AdhesionMethod::EnergyBalance, AdhesionMethod::CohesiveZone] {
+                let scene = Scene {
+                    substrate: substrate.clone(),
+                    indenter: IndenterSpec::FlatPunch { radius: a },
+                    adhesion: Adhesion::Hysteresis {
+                        loading: 0.0175,
+                        unloading: 0.326,
+                    },
+                    protocol: Protocol::Cycle {
+                        max_depth: 2e-5,
+                        steps: 4,
+                    },
+                    resolution: Resolution {
+                        cells_across: n,
+                        margin: 0.0,
+                    },
+                    solver: SolverSettings {
+                        adhesion_method: method,
+                        ..Default::default()
+                    },
+                    ..Scene::default()
+                };
+                errors.push(pull_off_error(&scene)?);
+            }
+            println!("{name:<16} {r:<6.3} {n:<4} {:<15} {}", errors[0], errors[1]);
         }
     }
     Ok(())
