@@ -22,12 +22,11 @@ use crate::grid::Boundary;
 pub(super) const PUNCH_STIFFNESS_SLOPE: f64 = 0.4;
 
 /// The widest punch, in top-layer thicknesses, whose stiffness slope `auto`
-/// reads from the exact solution (as [`Scene::reference`] does; measured
-/// 0.05 s at 10 thicknesses on the plate of `examples/punch_peeling.rs`,
-/// 0.04 s at 50 on one layer, 0.88 s at 100 and 7.4 s at 200 on the
-/// plate, `BENCHMARKS.md`, "`auto` peels a punch whose stiffness barely
-/// changes"); a wider one keeps the energy balance, its curve flagged by
-/// the branches' own slope.
+/// reads from the exact solution, as [`Scene::reference`] does (its
+/// Nystrom order grows like `8 a/h`: 0.05 s at 10 thicknesses on the plate
+/// of `examples/punch_peeling.rs`, which prints it; `BENCHMARKS.md`,
+/// "`auto` peels a punch whose stiffness barely changes"); a wider one
+/// keeps the energy balance, its curve flagged by the branches' own slope.
 const SLOPE_MAX_EPS: f64 = 50.0;
 
 thread_local! {
