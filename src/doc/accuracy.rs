@@ -35,6 +35,7 @@
 //! | JKR sphere pull-off, energy balance (default) | 0.0005-0.07 % (0.3 % or less at 16 cells) | staircase noise, up to 0.25 % below 64 cells |
 //! | JKR sphere pull-off, mesh-dependent criterion | 0.02-4.2 % | about `3/N` on a half-space, irregular on layers |
 //! | Kendall pull-off (flat punch, energy balance) | 0.02 % | staircase noise below 0.15 % |
+//! | a punch's pull-off under hysteresis (`dgamma` 0.0175 / 0.326 J/m^2) on a half-space and on films on a rigid base, `a/h` 0.35 to 8 (`examples/punch_peeling.rs -- films`; `BENCHMARKS.md`, "`auto` peels a punch whose stiffness barely changes") | energy balance -0.35 to +0.08 %, the peeling path +0.02 to +0.09 % | the balance stalls (-0.08 to -0.39 % at 128 cells) and refused 3 of its 44 runs at 16 and 32 cells; the peeling path +0.66 to +0.89, +0.41 to +0.45 % at 16, 32 cells, -0.06 to -0.13 % at 128: crossing zero, not a power of `1/N` |
 //! | Kendall pull-off on a layer, the cohesive zone and the peeling path (`punch_jkr_layer_pull_off/peeling_path`) | 0.081 % | 0.67, 0.43 % at 16, 32 cells, 0.070 / 0.036 % at 128 / 256 (the disc's edge by its angular modes); Richardson of 128 and 256: `1.7e-5` |
 //!
 //! The row of the incompressible layer is `layered-contact run
