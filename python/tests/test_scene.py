@@ -332,6 +332,35 @@ def test_a_tilted_punch_comes_off_by_the_local_criterion():
     assert balance.pull_off["force"] / onset > 1.05
 
 
+def test_auto_peels_a_punch_whose_stiffness_barely_changes():
+    # A 0.1 m punch on 1 kPa over a stiff plate over a 0.19 Pa base (the
+    # reference sweep's seed 159): the bonded punch's (A / k) dk/dA is
+    # 0.0039 at its face (0.5 on a half-space), so the automatic method
+    # peels it by the local criterion (+0.39 % of the exact pull-off at 32
+    # cells across, tests/punch_peeling.rs) where the energy balance is
+    # -5.95 % off, flagged.
+    layers = [
+        {"youngs_modulus": 1e3, "poisson_ratio": 0.45, "thickness": 9.624654318820577e-3},
+        {"youngs_modulus": 7.238902357342152e5, "poisson_ratio": 0, "thickness": 2.8840133077183354e-2},
+    ]
+    scene = {
+        "substrate": {"kind": "stack", "layers": layers,
+                      "base": {"youngs_modulus": 0.19, "poisson_ratio": 0}},
+        "indenter": {"kind": "flat_punch", "radius": 0.1},
+        "adhesion": {"kind": "constant", "work_of_adhesion": 100.0},
+        "protocol": {"kind": "cycle", "max_depth": 5e-6, "steps": 4},
+        "resolution": {"cells_across": 32},
+    }
+    exact = lc.scene_reference(scene)["pull_off_force"]
+    curve = lc.run_scene(scene)
+    assert curve.adhesion_method == "cohesive_zone" and curve.caveats == []
+    assert curve.pull_off["force"] / exact - 1 == pytest.approx(0.0039, abs=0.006)
+    balance = lc.run_scene(dict(scene, solver={"adhesion_method": "energy_balance"}))
+    assert balance.adhesion_method == "energy_balance"
+    assert any("stiffness barely changes" in c for c in balance.caveats)
+    assert abs(balance.pull_off["force"] / exact - 1) > 0.02
+
+
 def test_zone_scales_mark_a_zone_stiffer_than_the_contact():
     """The sweep's seed 74 (a paraboloid on a 57 GPa layer 24.1 um thick
     resting on a base 3850 times softer, 16 cells across): the two-cell zone
