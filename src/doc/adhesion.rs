@@ -251,7 +251,9 @@
 //! -0.5 % the window left on discs (the accuracy harness's punch on a
 //! layer: 0.67, 0.43, 0.081, 0.070, 0.036 % at 16 to 256 cells; with the
 //! window 0.14, 0.015, 0.25, 0.59, 0.55 %), where the energy balance, exact
-//! for a disc, stays the automatic method for an untilted punch; a pull-off held by a remnant of less than a
+//! for a disc, stays the automatic method for an untilted punch (but for
+//! one whose stiffness barely changes with its contact: "Which method a
+//! scene takes" below); a pull-off held by a remnant of less than a
 //! sixteenth of the start's cells or of 64 cells is refused as unresolved
 //! ([`Error::Unsupported`](crate::Error::Unsupported)). A disc tilted by a tenth or a quarter of
 //! Kendall's critical depth across its radius starts to detach at the
