@@ -44,6 +44,10 @@ fn main() -> Result<()> {
         let body = body(base)?;
         let exact = Axisymmetric::new(&body, 1.05 * RADIUS / TOP)?;
         let rim = exact.flat_punch(RADIUS)?;
+        // `r` by a difference over 1 % of the radius, as the tables in
+        // `BENCHMARKS.md` have it: 0.9222 on the stiffest base where the
+        // derivative `auto` reads (`area_slope`) is 0.9254, 0.0039 both on
+        // the softest.
         let inner = exact.flat_punch(0.99 * RADIUS)?;
         let slope = (rim.stiffness() - inner.stiffness()) / (0.01 * RADIUS);
         let r = slope * RADIUS / (2.0 * rim.stiffness());
@@ -110,9 +114,7 @@ fn films(cells: &[usize]) -> Result<()> {
     println!("body             r      N    energy balance  peeling path");
     for (name, substrate) in bodies {
         let exact = Axisymmetric::up_to_contact_radius(&substrate.build()?, a)?;
-        let punch = exact.flat_punch(a)?;
-        let r =
-            2.0 * std::f64::consts::PI * a * a * punch.energy_release_rate(1.0) / punch.stiffness();
+        let r = exact.flat_punch(a)?.area_slope();
         for &n in cells {
             let mut errors = Vec::new();
             for method in [AdhesionMethod::EnergyBalance, AdhesionMethod::CohesiveZone] {

@@ -166,16 +166,12 @@ impl Scene {
 }
 
 /// `(A / k) dk/dA` of the bonded flat punch of `radius` on `substrate` at
-/// its face, exactly: `dk/dA = 2 G / d^2` (the energy release rate at the
-/// rim of the punch held at depth `d`), so the ratio is `2 pi a^2 G(1) /
-/// k` (0.5 on a half-space: `k = 2 a E*`, `G(1) = E* / (2 pi a)`).
+/// its face, exactly ([`LayeredFlatPunch::area_slope`](crate::analytic::LayeredFlatPunch::area_slope)).
 /// `None` where the exact solution fails or gives a value that is not
 /// finite and positive.
 fn punch_stiffness_slope(substrate: &crate::Substrate, radius: f64) -> Option<f64> {
     let exact = Axisymmetric::up_to_contact_radius(substrate, radius).ok()?;
-    let punch = exact.flat_punch(radius).ok()?;
-    let slope = 2.0 * std::f64::consts::PI * radius * radius * punch.energy_release_rate(1.0)
-        / punch.stiffness();
+    let slope = exact.flat_punch(radius).ok()?.area_slope();
     (slope.is_finite() && slope > 0.0).then_some(slope)
 }
 

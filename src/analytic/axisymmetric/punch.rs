@@ -88,6 +88,25 @@ impl LayeredFlatPunch {
         self.stress_intensity_factor(depth).powi(2) / (2.0 * self.contact_modulus)
     }
 
+    /// How much the bonded stiffness changes with the contact at the face,
+    /// `(A / k) dk/dA` (`A = pi a^2`): `dk/dA = 2 G / d^2` (the release rate
+    /// of the rim held at depth `d`), so `2 pi a^2 G(1) / k`. 0.5 on a
+    /// half-space (`k = 2 a E*`, `G(1) = E* / (2 pi a)`); near 0 on a stiff
+    /// plate over a far softer base, whose stiffness the base sets.
+    ///
+    /// ```
+    /// use layered_contact::analytic::Axisymmetric;
+    /// use layered_contact::{Material, Substrate};
+    ///
+    /// let body = Substrate::half_space(Material::new(1e6, 0.5)?);
+    /// let punch = Axisymmetric::new(&body, 1.0)?.flat_punch(1e-3)?;
+    /// assert!((punch.area_slope() - 0.5).abs() < 1e-12);
+    /// Ok::<(), layered_contact::Error>(())
+    /// ```
+    pub fn area_slope(&self) -> f64 {
+        2.0 * PI * self.radius * self.radius * self.energy_release_rate(1.0) / self.stiffness()
+    }
+
     /// The depth at which a punch stuck with `work_of_adhesion` detaches,
     /// `-sqrt(2 pi a dgamma / E1*) / psi(1)`, m.
     pub fn critical_depth(&self, work_of_adhesion: f64) -> f64 {
