@@ -8,10 +8,13 @@
 
 use layered_contact::analytic::{Axisymmetric, LayeredJkrCycle};
 use layered_contact::scene::{
-    Adhesion, AdhesionMethod, Caveat, Curve, IndenterSpec, Phase, Protocol, Quantity, Resolution,
-    Scene, SolverSettings, SubstrateSpec,
+    Adhesion, AdhesionMethod, Caveat, IndenterSpec, Phase, Protocol, Quantity, Resolution, Scene,
+    SolverSettings, SubstrateSpec,
 };
 use layered_contact::{Material, Substrate};
+
+mod common;
+use common::pull_off_error;
 
 const RADIUS: f64 = 0.1;
 const MODULUS: f64 = 1e3;
@@ -48,13 +51,6 @@ fn pinned_cycle(cells: usize) -> Scene {
         },
         ..Scene::default()
     }
-}
-
-/// The relative error of `curve`'s pull-off against `scene`'s exact one.
-fn pull_off_error(scene: &Scene, curve: &Curve) -> f64 {
-    let exact = scene.reference().unwrap().into_iter();
-    let exact = exact.filter(|r| r.quantity == Quantity::PullOffForce);
-    curve.pull_off().unwrap().force / exact.map(|r| r.value).next().unwrap() - 1.0
 }
 
 /// The exact cycle of [`pinned_cycle`]'s paraboloid on its half-space.

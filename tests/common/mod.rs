@@ -221,3 +221,23 @@ pub fn fresh_displacement(
         .fold(0.0f64, |m, (u, v)| m.max((u - v).abs()));
     (fresh, worst, largest)
 }
+
+/// The scene's exact pull-off force (N), from [`Scene::reference`](layered_contact::scene::Scene::reference).
+#[allow(dead_code)]
+pub fn exact_pull_off(scene: &layered_contact::scene::Scene) -> f64 {
+    let exact = scene.reference().unwrap().into_iter();
+    exact
+        .filter(|r| r.quantity == layered_contact::scene::Quantity::PullOffForce)
+        .map(|r| r.value)
+        .next()
+        .unwrap()
+}
+
+/// The relative error of `curve`'s pull-off against `scene`'s exact one.
+#[allow(dead_code)]
+pub fn pull_off_error(
+    scene: &layered_contact::scene::Scene,
+    curve: &layered_contact::scene::Curve,
+) -> f64 {
+    curve.pull_off().unwrap().force / exact_pull_off(scene) - 1.0
+}
