@@ -634,9 +634,11 @@ fn run_says_how_long_the_zone_is_against_the_layer() {
 /// an error (the loading root beyond a local maximum of the branch, see
 /// `tests/tips.rs`), and the tool then failed after printing its results.
 /// Now the run compares with them: peak force 162.43 N and pull-off
-/// -1467.6 N exact, the cohesive zone at 16 cells +0.19 % and -12.0 % (on
+/// -1467.6 N exact, the cohesive zone at 16 cells +0.19 % and -9.5 % (on
 /// the grid sized from the exact peak; the pinned pull-off's caveat: too
-/// weak by up to tens of per cents at 16 cells over a far softer base).
+/// weak by up to tens of per cents at 16 cells over a far softer base;
+/// -12.0 % until 2026-12-04, when the zone's cells at the far side of the
+/// band where the edge's curvature is read took a spurious one).
 #[test]
 fn run_compares_a_cone_over_a_far_softer_base_with_its_exact_values() {
     let dir = folder("no_reference");
@@ -672,7 +674,7 @@ fn run_compares_a_cone_over_a_far_softer_base_with_its_exact_values() {
         .and_then(|e| e.split(' ').next())
         .and_then(|e| e.parse().ok())
         .unwrap_or_else(|| panic!("{stdout}"));
-    assert!((-20.0..-10.0).contains(&error), "{error}");
+    assert!((-15.0..-5.0).contains(&error), "{error}");
 }
 
 /// A cycle of four steps to `max_depth` (m) through the cohesive zone, 16

@@ -114,8 +114,10 @@ fn scenes_report_a_zone_wider_than_the_pull_off_contact() {
     // hysteresis the pinned contact is wider than the zone on 32 cells
     // since 2026-12-03). On 32 cells a side the zone (four cells, 40 um)
     // is wider than every patch at the pull-off; on 64 (20 um) it is not,
-    // and the force is three times weaker: measured -0.3407 mN and
-    // -0.1132 mN.
+    // and the force is nearly three times weaker: measured -0.3078 mN and
+    // -0.1068 mN (-0.3407 and -0.1132 mN until 2026-12-04, when the zone's
+    // cells at the far side of the band where the edge's curvature is read
+    // took a spurious one, and each solve read it up to eight times).
     let film = |cells| {
         let mut scene = rough_film(cells);
         scene.adhesion = Adhesion::Constant {
@@ -136,7 +138,7 @@ fn scenes_report_a_zone_wider_than_the_pull_off_contact() {
         coarse.pull_off().unwrap().force,
         fine.pull_off().unwrap().force,
     );
-    assert!((f32 / f64 - 3.01).abs() < 0.05, "{f32} {f64}");
+    assert!((f32 / f64 - 2.88).abs() < 0.05, "{f32} {f64}");
 }
 
 #[test]
