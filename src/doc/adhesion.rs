@@ -557,7 +557,17 @@
 //! uncorrected +9.3 % at 16 cells instead of -6.7 %), and `c kappa l` is held
 //! within `[-0.5, 0.5]`: on patches smaller than the zone (a rough
 //! surface's smallest contacts) the correction is outside its asymptotic
-//! range and only bounded.
+//! range and only bounded. Rereads stop once one changes the law by no
+//! less than the one before it (a contact ragged at the cell's scale reads
+//! another law each time it moves a cell). The level sets are read as the
+//! edge's within about 2.3 smoothing widths of it; between there and the
+//! Gaussian's reach (three widths) the cells out of contact take the
+//! curvature of the nearest cells within, where the truncated smoothing
+//! read spurious curvatures at the clamps (a zone wider than its design,
+//! as on an incompressible layer over a far stiffer base, then had its law
+//! jump as its contact moved a cell, and a fixed point wandered for
+//! thousands of CG iterations: `BENCHMARKS.md`, "A law that jumped at the
+//! zone's far side").
 //!
 //! The zone's width. Since the error is a function of `l / a`, a narrower
 //! zone is a finer grid for it, until the lattice traps the few cells that

@@ -172,8 +172,10 @@ impl CohesiveZone {
     /// (their change below 1e-3 of the law's peak) and from the converged
     /// contact, the fixed point resumed whenever the factors (as their
     /// square roots, weighted by the tensions they scale) moved by more
-    /// than 2e-3 (at most eight times a solve): a long step that moves the
-    /// edge by many cells gets the curvature of the contact it reaches.
+    /// than 2e-3 (at most eight times a solve, and no more once a read
+    /// changes them by no less than the read before it): a long step that
+    /// moves the edge by many cells gets the curvature of the contact it
+    /// reaches.
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] outside `[0, 1]`.
