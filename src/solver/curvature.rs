@@ -24,8 +24,7 @@ const TRUSTED: f64 = 0.03;
 /// whose contact cells are `contact`, smoothed over `width` cells (the
 /// Gaussian's standard deviation), carried outward from the band it is read
 /// in ([`TRUSTED`]) to the smoothing's reach; `periodic` wraps the grid,
-/// else the
-/// contact is zero beyond it.
+/// else the contact is zero beyond it.
 pub(super) fn edge_curvature(
     contact: &[bool],
     rows: usize,
@@ -151,11 +150,14 @@ pub(super) fn edge_curvature(
 /// 1.5 five to seven cells out), and a cohesive zone that reached there
 /// read a law that jumped between its clamps as the contact moved by a
 /// cell. Beyond the Gaussian's reach the curvature stays zero, as before:
-/// carrying the edge's value on to every cell (tapered over three widths or not)
-/// moved the pull-offs of cases at the method's limits by per cents (a
-/// stiff film over a far softer base from +1.69 / +0.48 % to -2.82 / -1.99
-/// % at 8 / 12 cells across, `tests/scene_cohesive.rs`; the plate of
-/// `tests/scene_cohesive_soft_below.rs` at 32 cells no longer converged).
+/// carrying the edge's value on to every cell moved the pull-offs of cases
+/// at the method's limits by per cents (a stiff film over a far softer
+/// base from +1.69 / +0.48 % to -2.82 / -1.99 % at 8 / 12 cells across,
+/// `tests/scene_cohesive.rs`), and tapering it to zero over three widths
+/// left `tests/scene_cohesive_soft_below.rs`' plate at 32 cells without
+/// convergence. Contact cells keep their own values (dropping their
+/// differences to neighbours without a normal stalled Johnson's sinusoid
+/// along the grid with a zone of 16 cells, `tests/cohesive.rs`).
 fn extend_into(
     curvature: &mut [f64],
     trusted: &[bool],
