@@ -464,14 +464,15 @@ impl ContactSolver {
                     pull += t.abs();
                 }
                 let ratio = moved / pull.max(f64::MIN_POSITIVE);
-                if moved > ROOT_TOLERANCE * pull && ratio >= last_moved {
+                let changed = moved > ROOT_TOLERANCE * pull;
+                if changed && ratio >= last_moved {
                     // A read that changes the law by no less than the last
                     // one does not converge it: a contact ragged at the
                     // cell's scale (specks and holes whose curvatures sit
                     // at the clamps) reads another law each time it moves
                     // a cell. Keep the last law and read no more.
                     rereads = MAX_REREADS;
-                } else if moved > ROOT_TOLERANCE * pull {
+                } else if changed {
                     last_moved = ratio;
                     roots = fresh;
                     rereads += 1;

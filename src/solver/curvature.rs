@@ -38,13 +38,7 @@ pub(super) fn edge_curvature(
         .collect();
     let total: f64 = weights.iter().sum();
     let weights: Vec<f64> = weights.iter().map(|w| w / total).collect();
-    let at = |i: isize, n: usize| -> Option<usize> {
-        if periodic {
-            Some(i.rem_euclid(n as isize) as usize)
-        } else {
-            (0..n as isize).contains(&i).then_some(i as usize)
-        }
-    };
+    let at = |i: isize, n: usize| wrap(i, n, periodic);
     // Separable smoothing: along the rows, then along the columns.
     let mut along = vec![0.0; rows * columns];
     for r in 0..rows {
@@ -89,8 +83,8 @@ pub(super) fn edge_curvature(
             let cell = r as usize * columns + c as usize;
             if size > FLAT {
                 normal[cell] = (-gx / size, -gy / size);
+                trusted[cell] = size * width >= TRUSTED;
             }
-            trusted[cell] = size * width >= TRUSTED;
         }
     }
     let component = |r: isize, c: isize, x: bool| -> Option<f64> {
@@ -113,7 +107,6 @@ pub(super) fn edge_curvature(
         for c in 0..columns as isize {
             let cell = r as usize * columns + c as usize;
             if normal[cell] == (0.0, 0.0) {
-                trusted[cell] = false;
                 continue;
             }
             let parts = (
@@ -139,6 +132,16 @@ pub(super) fn edge_curvature(
         .collect();
     extend_into(&mut curvature, &trusted, &fringe, (rows, columns), periodic);
     curvature
+}
+
+/// Index `i` along an axis of `n` cells: wrapped on a periodic grid, else
+/// `None` beyond it.
+fn wrap(i: isize, n: usize, periodic: bool) -> Option<usize> {
+    if periodic {
+        Some(i.rem_euclid(n as isize) as usize)
+    } else {
+        (0..n as isize).contains(&i).then_some(i as usize)
+    }
 }
 
 /// The `fringe` cells take the curvature of the nearest `trusted` cells
@@ -176,15 +179,8 @@ fn extend_into(
     }
     let neighbours = |cell: usize| -> [Option<usize>; 4] {
         let (r, c) = ((cell / columns) as isize, (cell % columns) as isize);
-        let at = |r: isize, c: isize| -> Option<usize> {
-            let (r, c) = if periodic {
-                (r.rem_euclid(rows as isize), c.rem_euclid(columns as isize))
-            } else if (0..rows as isize).contains(&r) && (0..columns as isize).contains(&c) {
-                (r, c)
-            } else {
-                return None;
-            };
-            Some(r as usize * columns + c as usize)
+        let at = |r: isize, c: isize| {
+            Some(wrap(r, rows, periodic)? * columns + wrap(c, columns, periodic)?)
         };
         [at(r + 1, c), at(r - 1, c), at(r, c + 1), at(r, c - 1)]
     };
