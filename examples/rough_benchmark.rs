@@ -6,8 +6,12 @@
 //! contact).
 //!
 //! ```text
-//! cargo run --release --example rough_benchmark -- [isolated|periodic|peers] [--refine] N [N ...]
+//! cargo run --release --example rough_benchmark -- [isolated|periodic|peers|stack] [--refine] [--blocks B] N [N ...]
 //! ```
+//!
+//! `stack` presses the same surface, isolated, into a stack instead: a
+//! 20 um coating (E = 5 MPa, nu = 0.3) on the same rubber film over a
+//! softer elastic base (E = 0.2 MPa, nu = 0.45).
 //!
 //! `peers` solves the problem of `benches/peers/rough.py` instead (the
 //! same surface on a periodic half-space of `E* = 1` over a unit square,
@@ -16,6 +20,8 @@
 //! With `--refine` the cut-off stays at 31.25 um (16 cells of a 512 grid)
 //! whatever N: the same roughness on finer and finer grids, which shows
 //! whether the solver's iterations depend on the grid or on the surface.
+//! With `--blocks B` the solves use the two-level preconditioner over
+//! blocks of `B x B` cells (`ContactSolver::set_coarse_blocks`).
 //!
 //! Prints one CSV line per grid: N, boundary, seconds to build the solver,
 //! to synthesise the surface and to solve, iterations (and those of the
@@ -32,7 +38,7 @@ use std::time::Instant;
 
 use layered_contact::solver::{ContactSolver, IterationInfo, SolverParams};
 use layered_contact::topography::{Amplitude, SelfAffine};
-use layered_contact::{Boundary, Grid, Material, Substrate};
+use layered_contact::{Base, Boundary, Grid, Material, Substrate};
 
 #[path = "support/memory.rs"]
 mod memory;
@@ -42,12 +48,13 @@ fn main() -> Result<(), layered_contact::Error> {
     // The peers' problem of `benches/peers/rough.py`: the same surface on a
     // periodic half-space of E* = 1 over a unit square, mean pressure 0.01.
     let peers = args.peek().map(String::as_str) == Some("peers");
+    let stack = args.peek().map(String::as_str) == Some("stack");
     let boundary = match args.peek().map(String::as_str) {
         Some("periodic" | "peers") => {
             args.next();
             Boundary::Periodic
         }
-        Some("isolated") => {
+        Some("isolated" | "stack") => {
             args.next();
             Boundary::Isolated
         }
@@ -57,10 +64,22 @@ fn main() -> Result<(), layered_contact::Error> {
     if refine {
         args.next();
     }
+    // `--blocks B`: the two-level preconditioner over blocks of B cells.
+    let blocks = if args.peek().map(String::as_str) == Some("--blocks") {
+        args.next();
+        args.next().and_then(|b| b.parse::<usize>().ok())
+    } else {
+        None
+    };
     let sizes: Vec<usize> = args.filter_map(|a| a.parse().ok()).collect();
     // Side (m), body and nominal pressure (Pa).
     let (side, film, pressure) = if peers {
         (1.0, Substrate::half_space(Material::new(1.0, 0.0)?), 0.01)
+    } else if stack {
+        let (coat, rubber) = (Material::new(5e6, 0.3)?, Material::new(1e6, 0.49)?);
+        let base = Base::Elastic(Material::new(2e5, 0.45)?);
+        let body = Substrate::stack(&[(coat, 2e-5), (rubber, 1e-4)], base)?;
+        (1e-3, body, 5e3)
     } else {
         let film = Substrate::layer_on_rigid_base(Material::new(1e6, 0.49)?, 1e-4)?;
         (1e-3, film, 5e3)
@@ -89,6 +108,7 @@ fn main() -> Result<(), layered_contact::Error> {
             ..SolverParams::default()
         };
         let mut solver = ContactSolver::new(&film, &grid, boundary, params)?;
+        solver.set_coarse_blocks(blocks)?;
         let build = start.elapsed().as_secs_f64();
         let start = Instant::now();
         let mut trace: Vec<(f64, usize)> = Vec::new();

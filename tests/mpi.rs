@@ -333,6 +333,14 @@ fn ranks_main() -> Result<(), String> {
         let mut split =
             ContactSolver::distributed(&case.body, &case.grid, case.boundary, params, &ranks)
                 .map_err(text)?;
+        // The two-level preconditioner is refused on a split solver (its
+        // coarse space is built on one process), and leaves it as it was.
+        let refused = split.set_coarse_blocks(Some(2));
+        if !matches!(refused, Err(layered_contact::Error::Unsupported { .. }))
+            || split.coarse_blocks().is_some()
+        {
+            failures.push(format!("coarse blocks on a split solver: {refused:?}"));
+        }
         let rows = split.local_rows();
         let columns = case.grid.columns();
         let (mut warm_serial, mut warm_split) = (None, None);

@@ -279,6 +279,20 @@
 //! tamaas) in `BENCHMARKS.md`, "Speed: rough contacts on large grids" and
 //! "Rough contacts beside tamaas".
 //!
+//! The box serves a contact of one scale of patches well and one of many
+//! scales worse: once the set has settled, the residual's rate slows with
+//! every doubling of a rough surface's grid. A coarse correction over the
+//! working set's cells of `16 x 16` blocks, inside which the box acts
+//! (two-level balancing, Mandel 1993, Commun. Numer. Meth. Eng. 9, 233;
+//! the coarse matrix from the grid of blocks:
+//! [`ContactSolver::set_coarse_blocks`](crate::solver::ContactSolver::set_coarse_blocks)),
+//! holds that rate and makes the count grow like `log N`, for two more
+//! applications of the compliance and two solves on the grid of blocks an
+//! iteration. It is not the default: on the grids of this machine it saves
+//! iterations, not time (`BENCHMARKS.md`, "A two-level preconditioner for
+//! rough contacts", has the counts, times and memory from 512^2 to
+//! 8192^2).
+//!
 //! ### Rough contacts: the contact area and the kernel
 //!
 //! The same seeded self-affine surface (Hurst 0.8, rms slope 0.1, roll-off

@@ -12,6 +12,7 @@
 
 mod cell;
 mod convolution;
+mod even_convolution;
 mod fourier;
 mod influence;
 mod inverse;
@@ -19,6 +20,7 @@ mod operator;
 mod radial;
 
 pub(crate) use convolution::wavenumber;
+pub(crate) use even_convolution::EvenConvolution;
 pub use fourier::FourierCompliance;
 pub use influence::{InfluenceCoefficients, MAX_TAIL_ERROR};
 pub(crate) use inverse::{BoxInverse, Residual};

@@ -168,7 +168,7 @@ impl ContactSolver {
         }
         let left = budget - *spent;
         let saved = std::mem::replace(&mut self.params.max_iterations, left);
-        let solved = self.clamped_cg(member, target, x);
+        let solved = self.clamped_cg_with(member, target, x, true);
         self.params.max_iterations = saved;
         match solved {
             Ok((iterations, _)) => {

@@ -292,6 +292,19 @@ impl ContactSolver {
         target: &[f64],
         pressure: &mut [f64],
     ) -> Result<(usize, f64)> {
+        self.clamped_cg_with(attached, target, pressure, false)
+    }
+
+    /// [`clamped_cg`](Self::clamped_cg), preconditioned as the constrained
+    /// conjugate gradients are if `two_level` (the two-level preconditioner
+    /// if it is on: [`ContactSolver::set_coarse_blocks`]), else by the box.
+    pub(super) fn clamped_cg_with(
+        &mut self,
+        attached: &[bool],
+        target: &[f64],
+        pressure: &mut [f64],
+        two_level: bool,
+    ) -> Result<(usize, f64)> {
         let n = pressure.len();
         let tolerance = self.params.tolerance;
         let ws = &mut self.workspace;
@@ -330,7 +343,7 @@ impl ContactSolver {
         let set = attached.iter().enumerate().filter(|(_, on)| **on);
         let bounds = super::passes::bounds_of(set.map(|(c, _)| c), columns);
         let (bounds, gap_max) = self.whole_bounds(bounds, gap_max);
-        let mut rz = self.precondition_working_set(bounds, 0.0, gap_max)?.1;
+        let mut rz = self.clamped_preconditioner(two_level, bounds, gap_max)?.1;
         rz = self.summed(rz);
         let ws = &mut self.workspace;
         // Only the attached cells of the box's `response` are read.
@@ -374,7 +387,7 @@ impl ContactSolver {
             }
             r_norm = self.summed(r_norm);
             let gap_max = self.max_over_ranks(gap_max);
-            let rz_new = self.precondition_working_set(bounds, 0.0, gap_max)?.1;
+            let rz_new = self.clamped_preconditioner(two_level, bounds, gap_max)?.1;
             let rz_new = self.summed(rz_new);
             let beta = rz_new / rz;
             rz = rz_new;
@@ -390,6 +403,23 @@ impl ContactSolver {
         let ws = &mut self.workspace;
         self.operator.apply(pressure, &mut ws.displacement)?;
         Ok((iterations, r_norm.sqrt() / b_norm))
+    }
+}
+
+impl ContactSolver {
+    /// The clamped solve's preconditioned residual: as the constrained
+    /// conjugate gradients' if `two_level`, else the box's.
+    fn clamped_preconditioner(
+        &mut self,
+        two_level: bool,
+        bounds: Option<super::passes::Bounds>,
+        gap_max: f64,
+    ) -> Result<(f64, f64)> {
+        if two_level {
+            self.precondition_step(bounds, 0.0, gap_max)
+        } else {
+            self.precondition_working_set(bounds, 0.0, gap_max)
+        }
     }
 }
 

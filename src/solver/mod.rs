@@ -38,7 +38,11 @@
 //! solved on the grid of half the cells (twice their size), recursively; a
 //! warm start is corrected there first (Brandt's full approximation
 //! scheme). [`SolverParams::precondition`] and
-//! [`SolverParams::multiresolution`] turn either off.
+//! [`SolverParams::multiresolution`] turn either off. On rough contacts,
+//! whose box-preconditioned count grows with every doubling of the grid,
+//! [`ContactSolver::set_coarse_blocks`] adds a coarse correction over
+//! blocks of cells (two-level balancing, Mandel 1993) whose count grows
+//! like `log N`, at about twice the cost an iteration.
 //!
 //! Each solve may start from the [`WarmStart`] of the previous one. For
 //! non-adhesive contact that only saves work (on the Hertz benchmark at
@@ -57,7 +61,9 @@
 mod active_set;
 mod adhesive;
 mod anderson;
+mod balancing;
 mod cg_ends;
+mod coarse_space;
 mod cohesive;
 mod cohesive_area;
 mod cohesive_bonding;
@@ -166,6 +172,9 @@ pub struct ContactSolver {
     /// while cells still overlap the indenter (the finer solve takes them
     /// in).
     start_level: bool,
+    /// The two-level preconditioner, if it is on
+    /// ([`ContactSolver::set_coarse_blocks`]).
+    balancing: Option<Box<balancing::Balancing>>,
 }
 
 /// A check that a long computation should stop (Ctrl-C), asked after every
@@ -244,6 +253,7 @@ impl ContactSolver {
             workspace: Workspace::new(n)?,
             interrupt: None,
             start_level: false,
+            balancing: None,
         })
     }
 

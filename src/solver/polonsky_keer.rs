@@ -460,7 +460,7 @@ impl ContactSolver {
             // z = P M^-1 P r in `response`, r = gap - shift; under force
             // control projected too (its mean taken out of the direction;
             // the product r.z is unchanged as r has zero sum).
-            let (z_sum, rz) = self.precondition_working_set(set.bounds, shift, set.gap_max)?;
+            let (z_sum, rz) = self.precondition_step(set.bounds, shift, set.gap_max)?;
             let mut sums = [z_sum, rz];
             self.sum_over_ranks(&mut sums);
             let [z_sum, rz] = sums;
