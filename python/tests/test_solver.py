@@ -145,3 +145,26 @@ def test_interface_curve_follows_westergaard():
     assert len(curve["gaps"]) == 3 and curve["gaps"][0].shape == (n, 8)
     with pytest.raises(lc.InvalidInputError, match="increasing"):
         lc.interface_curve(solver, lc.Indenter.height_map(heights, spacing), [2e3, 1e3])
+
+
+def test_two_level_preconditioner_on_a_rough_contact():
+    """`coarse_blocks` (the crate's `ContactSolver::set_coarse_blocks`): the
+    problem of `benches/peers/rough.py` at 256^2 (a seeded rough surface on a
+    periodic half-space of E* = 1, mean pressure 0.01, about a fifth in
+    contact) solves to the box's pressures (within 1e-6 of the largest at
+    the default tolerance 1e-8) in fewer fine iterations (measured 21 with
+    the box, 15 with blocks of 16); blocks that do not divide a periodic
+    grid are refused, naming them."""
+    n = 256
+    heights = lc.rough_surface_heights(
+        hurst=0.8, long_cutoff=0.25, short_cutoff=4.0 / n, seed=1, cells=n,
+        spacing=1.0 / n, rms_slope=0.1)
+    surface = lc.Indenter.height_map(heights.max() - heights, 1.0 / n)
+    body = lc.Substrate.half_space(lc.Material(1.0, 0.0))
+    boxed = lc.ContactSolver(body, n, n, 1.0 / n, periodic=True).solve_force(surface, 0.01)
+    solver = lc.ContactSolver(body, n, n, 1.0 / n, periodic=True, coarse_blocks=16)
+    two = solver.solve_force(surface, 0.01)
+    assert np.max(np.abs(two.pressure - boxed.pressure)) <= 1e-6 * boxed.pressure.max()
+    assert two.iterations + 4 <= boxed.iterations
+    with pytest.raises(lc.InvalidInputError, match="coarse blocks"):
+        lc.ContactSolver(body, n, n, 1.0 / n, periodic=True, coarse_blocks=12)
