@@ -293,8 +293,9 @@ fn two_level_preconditioner_holds_the_rough_count() {
 }
 
 /// Blocks the two-level preconditioner cannot use are refused, naming the
-/// value: one cell, more than a quarter of the grid's side, and a side
-/// that does not divide a periodic grid's; `None` turns it off again.
+/// value: one cell, more than a quarter of the grid's side (also one whose
+/// quadruple overflows), and a side that does not divide a periodic
+/// grid's; `None` turns it off again.
 #[test]
 fn two_level_preconditioner_refuses_blocks_it_cannot_use() {
     let grid = Grid::new(96, 80, 1e-5).unwrap();
@@ -302,6 +303,7 @@ fn two_level_preconditioner_refuses_blocks_it_cannot_use() {
     for (boundary, blocks) in [
         (Boundary::Isolated, 1),
         (Boundary::Isolated, 21),
+        (Boundary::Isolated, usize::MAX / 4 + 1),
         (Boundary::Periodic, 12),
     ] {
         let mut solver =

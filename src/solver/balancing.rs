@@ -94,7 +94,7 @@ impl ContactSolver {
         }
         let grid = *self.grid();
         let (rows, columns) = (grid.rows(), grid.columns());
-        if side < 2 || 4 * side > rows.min(columns) {
+        if side < 2 || side > rows.min(columns) / 4 {
             return Err(Error::InvalidParameter {
                 name: "coarse blocks (cells a side)",
                 value: side as f64,
