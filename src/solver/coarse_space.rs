@@ -33,9 +33,11 @@ use crate::kernel::EvenConvolution;
 const COARSE_TOLERANCE: f64 = 1e-6;
 
 /// The most inner iterations of a coarse solve (it stops there, inexact):
-/// Jacobi-preconditioned conjugate gradients on the blocks took 25 to 60
-/// on the rough films and half-spaces, up to this bound on a coated stack
-/// over a soft base, whose coarse matrix is ill-conditioned (2026-12-04).
+/// Jacobi-preconditioned conjugate gradients on the blocks took 27 to 48
+/// (to `1e-10`) on the rough films and half-spaces of
+/// `examples/rough_benchmark.rs` up to 2048^2, and more than 100 (to
+/// `1e-6`) on its coated stack over a soft base, whose coarse matrix is
+/// ill-conditioned (2026-12-04).
 const COARSE_ITERATIONS: usize = 200;
 
 /// `out = E~ v`: `n_I (Kb * (n v))_I / b^4` plus each block's own pairs
