@@ -42,8 +42,8 @@ impl ContactSolver {
     /// preconditioner over blocks of `blocks x blocks` cells (`None`: the
     /// box inverse alone, the default). On rough contacts the iterations
     /// then grow like `log N` instead of by a quarter to a third each
-    /// doubling of the grid, but each costs 2 to 3 times as much (two more
-    /// applications of the compliance and two solves on the grid of
+    /// doubling of the grid, but each costs 1.6 to 2.8 times as much (two
+    /// more applications of the compliance and two solves on the grid of
     /// blocks) and the solver holds two more vectors (16 bytes a cell): on
     /// the rough films and half-spaces of `BENCHMARKS.md` ("A two-level
     /// preconditioner for rough contacts", blocks of 16 from 512^2 to

@@ -364,8 +364,8 @@ mod tests {
     /// the response to each member cell. On a film, isolated (32 x 28
     /// cells) and periodic (32 x 24), blocks of 4, over a seeded set of
     /// about 40 % of the cells. Agreement within 1e-12 of the largest
-    /// entry (the FFTs' rounding; the far part's zero-padding halved, a
-    /// wrong mirror, moves entries by 1e-3 to 1e-1 of it).
+    /// entry (the FFTs' rounding; the grid of blocks padded by one block
+    /// instead of doubled puts them 8.8e-3 of it apart).
     #[test]
     fn coarse_matrix_matches_dense_sums() {
         let film = Substrate::layer_on_rigid_base(Material::new(1e6, 0.45).unwrap(), 2e-5).unwrap();
