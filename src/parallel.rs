@@ -75,3 +75,18 @@ pub(crate) fn for_each_row_with<T: Send, S>(
         .enumerate()
         .for_each(|(i, row)| f(&mut scratch, i, row));
 }
+
+/// `f(row index)` for `rows` rows of `width` values each (read-only work:
+/// the closure reads what it needs); the results in row order.
+pub(crate) fn map_row_indices<R: Send>(
+    rows: usize,
+    width: usize,
+    f: impl Fn(usize) -> R + Sync + Send,
+) -> Vec<R> {
+    #[cfg(feature = "parallel")]
+    if rows.saturating_mul(width) >= MIN_PARALLEL_VALUES {
+        return (0..rows).into_par_iter().map(f).collect();
+    }
+    let _ = width;
+    (0..rows).map(f).collect()
+}

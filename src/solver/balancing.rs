@@ -27,13 +27,16 @@ use super::coarse_space::CoarseSpace;
 use super::passes::Bounds;
 use super::ContactSolver;
 
-/// The two-level preconditioner's state: its coarse space and two
-/// vectors of a value a cell.
+/// The two-level preconditioner's state: its coarse space and the two
+/// coarse solutions of an application (one value a block). It holds no
+/// vector of a value a cell: the compliance's two applications load their
+/// fields row by row and hand back what is needed of the responses, and
+/// the box's residual lives in the workspace's `previous` (free until the
+/// step writes the old pressures).
 pub(super) struct Balancing {
     space: CoarseSpace,
-    field: Vec<f64>,
-    response: Vec<f64>,
-    coarse: Vec<f64>,
+    first: Vec<f64>,
+    second: Vec<f64>,
 }
 
 impl ContactSolver {
@@ -44,7 +47,7 @@ impl ContactSolver {
     /// then grow like `log N` instead of by a quarter to a third each
     /// doubling of the grid, but each costs 1.6 to 2.8 times as much (two
     /// more applications of the compliance and two solves on the grid of
-    /// blocks) and the solver holds two more vectors (16 bytes a cell): on
+    /// blocks): on
     /// the rough films and half-spaces of `BENCHMARKS.md` ("A two-level
     /// preconditioner for rough contacts", blocks of 16 from 512^2 to
     /// 8192^2) the solves took 1.08 to 2.2 times the box's time, and on a
@@ -109,27 +112,36 @@ impl ContactSolver {
                 expected: "a divisor of both sides of a periodic grid",
             });
         }
-        let n = rows * columns;
-        let mut field = crate::error::zeroed(n, "the two-level preconditioner's vectors")?;
-        let mut response = crate::error::zeroed(n, "the two-level preconditioner's vectors")?;
         // The responses to a unit load on cell (0, 0) and on the block at
-        // the origin (on an isolated grid the kernel is read at
-        // non-negative offsets and mirrored).
-        field[0] = 1.0;
-        self.operator.apply(&field, &mut response)?;
-        let point = response.clone();
-        field[0] = 0.0;
-        for i in 0..side {
-            field[i * columns..i * columns + side].fill(1.0);
-        }
-        self.operator.apply(&field, &mut response)?;
-        let space = CoarseSpace::new(side, (rows, columns), periodic, &point, &response)?;
-        let coarse = vec![0.0; space.len()];
+        // the origin, in the workspace's scratch vectors.
+        let n = rows * columns;
+        let ws = &mut self.workspace;
+        let (mut field, mut response) = (
+            std::mem::take(&mut ws.previous),
+            std::mem::take(&mut ws.response),
+        );
+        let responses = (|| {
+            super::workspace::fit(&mut field, n)?;
+            super::workspace::fit(&mut response, n)?;
+            field.fill(0.0);
+            field[0] = 1.0;
+            self.operator.apply(&field, &mut response)?;
+            let near = super::coarse_space::near_kernel(&response, side, (rows, columns), periodic);
+            field[0] = 0.0;
+            for i in 0..side {
+                field[i * columns..i * columns + side].fill(1.0);
+            }
+            self.operator.apply(&field, &mut response)?;
+            CoarseSpace::new(side, (rows, columns), periodic, near, &response)
+        })();
+        let ws = &mut self.workspace;
+        (ws.previous, ws.response) = (field, response);
+        let space = responses?;
+        let blocks = space.len();
         self.balancing = Some(Box::new(Balancing {
             space,
-            field,
-            response,
-            coarse,
+            first: vec![0.0; blocks],
+            second: vec![0.0; blocks],
         }));
         Ok(())
     }
@@ -166,7 +178,9 @@ impl ContactSolver {
 
     /// `z = Q r + y - Q A y`, `y = B (r - A Q r)`, `r = gap - shift` on the
     /// working set, into the workspace's `response`; returns `(sum z, sum z
-    /// r)` over the working set as the box does.
+    /// r)` over the working set as the box does. The two applications of
+    /// the compliance in single precision, as the box's: they only shape
+    /// the search direction.
     fn balanced(
         &mut self,
         balancing: &mut Balancing,
@@ -175,63 +189,111 @@ impl ContactSolver {
     ) -> Result<(f64, f64)> {
         let Balancing {
             space,
-            field,
-            response,
-            coarse,
+            first,
+            second,
         } = balancing;
-        let working = &self.workspace.working;
-        space.update(working);
-        // c1 = E~^-1 Z^T r; field = Z c1.
-        let gap = &self.workspace.gap;
-        coarse.fill(0.0);
-        space.runs(|block, cells| {
-            for c in cells.filter(|c| working[*c]) {
-                coarse[block] += gap[c] - shift;
-            }
+        let (rows, columns) = (self.grid().rows(), self.grid().columns());
+        let ws = &mut self.workspace;
+        space.update(&ws.working);
+        // c1 = E~^-1 Z^T r.
+        let (gap, working, space_at) = (&ws.gap, &ws.working, &*space);
+        let parts = crate::parallel::map_row_indices(rows, columns, |i| {
+            let cells = i * columns..(i + 1) * columns;
+            let (gap, member) = (&gap[cells.clone()], &working[cells]);
+            space_at.row_sums(i, member, |j| gap[j] - shift)
         });
-        space.solve(coarse)?;
-        space.runs(|block, cells| {
-            for c in cells {
-                field[c] = if working[c] { coarse[block] } else { 0.0 };
-            }
-        });
-        // s = r - A Z c1 on the set, handed to the box as its residual.
-        self.operator.apply(field, response)?;
-        let mut s_max = 0.0_f64;
-        for ((s, g), w) in response.iter_mut().zip(&self.workspace.gap).zip(working) {
-            *s = if *w { g - shift - *s } else { 0.0 };
-            s_max = s_max.max(s.abs());
-        }
-        std::mem::swap(&mut self.workspace.gap, response);
+        space.gather(&parts, first);
+        space.solve(first)?;
+        let largest = first.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
+        // s = r - A Z c1 on the set, into `previous`.
+        let (gap, working, space_at) = (&ws.gap, &ws.working, &*space);
+        let coarse = &*first;
+        let maxima = self.operator.apply_rows_single(
+            largest,
+            |i, line, scale| {
+                let member = &working[i * columns..(i + 1) * columns];
+                for (block, range) in space_at.row_runs(i) {
+                    let value = (coarse[block] * scale) as f32;
+                    for (x, w) in line[range.clone()].iter_mut().zip(&member[range]) {
+                        *x = if *w { value } else { 0.0 };
+                    }
+                }
+            },
+            ws.previous.chunks_exact_mut(columns).collect(),
+            |i, s, kx, unscale| {
+                let cells = i * columns..(i + 1) * columns;
+                let mut largest = 0.0_f64;
+                let inputs = gap[cells.clone()].iter().zip(&working[cells]);
+                for ((s, kx), (g, w)) in s.iter_mut().zip(kx).zip(inputs) {
+                    *s = if *w {
+                        g - shift - f64::from(*kx) * unscale
+                    } else {
+                        0.0
+                    };
+                    largest = largest.max(s.abs());
+                }
+                largest
+            },
+        )?;
+        let s_max = maxima.into_iter().fold(0.0, f64::max);
+        // y = B s in `response`, zero off the set.
+        std::mem::swap(&mut ws.gap, &mut ws.previous);
         let boxed = self.precondition_working_set(bounds, 0.0, s_max);
-        std::mem::swap(&mut self.workspace.gap, response);
+        let ws = &mut self.workspace;
+        std::mem::swap(&mut ws.gap, &mut ws.previous);
         boxed?;
-        // y = B s in the workspace's `response` (zero off the set); A y.
-        let ws = &mut self.workspace;
-        for (y, w) in ws.response.iter_mut().zip(&ws.working) {
-            if !*w {
-                *y = 0.0;
+        let working = &ws.working;
+        let maxima = crate::parallel::map_rows(&mut ws.response, columns, |i, y| {
+            let member = &working[i * columns..(i + 1) * columns];
+            let mut largest = 0.0_f64;
+            for (y, w) in y.iter_mut().zip(member) {
+                if !*w {
+                    *y = 0.0;
+                }
+                largest = largest.max(y.abs());
             }
-        }
-        self.operator.apply(&self.workspace.response, response)?;
+            largest
+        });
+        let y_max = maxima.into_iter().fold(0.0, f64::max);
+        // Z^T A y, each row's part of each block's sum.
+        let (y, working) = (&ws.response, &ws.working);
+        let parts = self.operator.apply_rows_single(
+            y_max,
+            |i, line, scale| {
+                for (x, y) in line.iter_mut().zip(&y[i * columns..(i + 1) * columns]) {
+                    *x = (y * scale) as f32;
+                }
+            },
+            vec![(); rows],
+            |i, (), ky, unscale| {
+                let member = &working[i * columns..(i + 1) * columns];
+                space_at.row_sums(i, member, |j| f64::from(ky[j]) * unscale)
+            },
+        )?;
         // c2 = E~^-1 Z^T A y; z = Z c1 + y - Z c2.
+        space.gather(&parts, second);
+        space.solve(second)?;
         let ws = &mut self.workspace;
-        coarse.fill(0.0);
-        space.runs(|block, cells| {
-            for c in cells.filter(|c| ws.working[*c]) {
-                coarse[block] += response[c];
+        let (gap, working, space_at) = (&ws.gap, &ws.working, &*space);
+        let (first, second) = (&*first, &*second);
+        let sums = crate::parallel::map_rows(&mut ws.response, columns, |i, row| {
+            let cells = i * columns..(i + 1) * columns;
+            let (gap, member) = (&gap[cells.clone()], &working[cells]);
+            let (mut z_sum, mut rz) = (0.0, 0.0);
+            for (block, range) in space_at.row_runs(i) {
+                let correction = first[block] - second[block];
+                for j in range.filter(|j| member[*j]) {
+                    let z = correction + row[j];
+                    row[j] = z;
+                    z_sum += z;
+                    rz += z * (gap[j] - shift);
+                }
             }
+            (z_sum, rz)
         });
-        space.solve(coarse)?;
-        let (mut z_sum, mut rz) = (0.0, 0.0);
-        space.runs(|block, cells| {
-            for c in cells.filter(|c| ws.working[*c]) {
-                let z = field[c] + ws.response[c] - coarse[block];
-                ws.response[c] = z;
-                z_sum += z;
-                rz += z * (ws.gap[c] - shift);
-            }
-        });
+        let (z_sum, rz) = sums
+            .into_iter()
+            .fold((0.0, 0.0), |(a, b), (c, d)| (a + c, b + d));
         Ok((z_sum, rz))
     }
 }

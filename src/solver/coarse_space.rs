@@ -87,6 +87,35 @@ fn own_pairs(near: &[f64], side: usize, members: &[(usize, usize)]) -> f64 {
     2.0 * sum
 }
 
+/// `k(di, dj)`, the compliance between cells `(di, dj)` apart for `|di|,
+/// |dj| < side`, on `(2 side - 1)^2` offsets, from the response `point` to
+/// a unit load on cell `(0, 0)` of a grid of `(rows, columns)` cells (on an
+/// isolated grid read at non-negative offsets and mirrored).
+pub(super) fn near_kernel(
+    point: &[f64],
+    side: usize,
+    (rows, columns): (usize, usize),
+    periodic: bool,
+) -> Vec<f64> {
+    let width = 2 * side - 1;
+    let reach = side as isize - 1;
+    let mut near = vec![0.0; width * width];
+    for di in -reach..=reach {
+        for dj in -reach..=reach {
+            let (i, j) = if periodic {
+                (
+                    di.rem_euclid(rows as isize) as usize,
+                    dj.rem_euclid(columns as isize) as usize,
+                )
+            } else {
+                (di.unsigned_abs(), dj.unsigned_abs())
+            };
+            near[(di + reach) as usize * width + (dj + reach) as usize] = point[i * columns + j];
+        }
+    }
+    near
+}
+
 /// A block's part of the working set: a signature of its member cells
 /// (count, sum and sum of squares of their indices; its pairs are summed
 /// again only when it changes), their count and their own pairs' sum.
@@ -121,42 +150,25 @@ pub(super) struct CoarseSpace {
 
 impl CoarseSpace {
     /// The coarse space of blocks of `side` cells on a grid of `cells`
-    /// (rows, columns), from the compliance's response `point` to a unit
-    /// load on cell `(0, 0)` and `block` to a unit load on each cell of the
-    /// block at the origin.
+    /// (rows, columns), from the kernel `near` between cells less than a
+    /// block apart ([`near_kernel`]) and the compliance's response `block`
+    /// to a unit load on each cell of the block at the origin.
     ///
     /// # Errors
-    /// [`Error::Internal`] if the responses are not finite.
+    /// [`Error::Internal`] if the kernel or the response is not finite.
     pub(super) fn new(
         side: usize,
         cells: (usize, usize),
         periodic: bool,
-        point: &[f64],
+        near: Vec<f64>,
         block: &[f64],
     ) -> Result<Self> {
         let (rows, columns) = cells;
-        if !point.iter().chain(block).all(|v| v.is_finite()) {
+        if !near.iter().chain(block).all(|v| v.is_finite()) {
             return Err(Error::Internal {
                 what: "two-level preconditioner",
                 detail: "the compliance's response to a block is not finite".into(),
             });
-        }
-        let width = 2 * side - 1;
-        let reach = side as isize - 1;
-        let mut near = vec![0.0; width * width];
-        for di in -reach..=reach {
-            for dj in -reach..=reach {
-                let (i, j) = if periodic {
-                    (
-                        di.rem_euclid(rows as isize) as usize,
-                        dj.rem_euclid(columns as isize) as usize,
-                    )
-                } else {
-                    (di.unsigned_abs(), dj.unsigned_abs())
-                };
-                near[(di + reach) as usize * width + (dj + reach) as usize] =
-                    point[i * columns + j];
-            }
         }
         let blocks = (rows.div_ceil(side), columns.div_ceil(side));
         let m = blocks.0 * blocks.1;
@@ -196,17 +208,41 @@ impl CoarseSpace {
         self.states.len()
     }
 
-    /// Calls `f(block, cells)` for each run of a row's cells in one block
-    /// (`cells` a range of cell indices), row by row.
-    pub(super) fn runs(&self, mut f: impl FnMut(usize, std::ops::Range<usize>)) {
+    /// Row `i`'s runs of cells in one block: `(block, columns)`, `columns`
+    /// a range of the row's columns.
+    pub(super) fn row_runs(
+        &self,
+        i: usize,
+    ) -> impl Iterator<Item = (usize, std::ops::Range<usize>)> {
         let (side, columns) = (self.side, self.columns);
-        for i in 0..self.rows {
-            let row = (i / side) * self.blocks.1;
-            for (b, j) in (0..columns).step_by(side).enumerate() {
-                f(
-                    row + b,
-                    i * columns + j..i * columns + (j + side).min(columns),
-                );
+        let row = (i / side) * self.blocks.1;
+        (0..columns)
+            .step_by(side)
+            .enumerate()
+            .map(move |(b, j)| (row + b, j..(j + side).min(columns)))
+    }
+
+    /// Row `i`'s part of each block's sum of `value(j)` over the row's
+    /// columns `j` in `member` (the row's cells of the working set), in the
+    /// order of [`Self::row_runs`].
+    pub(super) fn row_sums(
+        &self,
+        i: usize,
+        member: &[bool],
+        value: impl Fn(usize) -> f64,
+    ) -> Vec<f64> {
+        self.row_runs(i)
+            .map(|(_, range)| range.filter(|j| member[*j]).map(&value).sum())
+            .collect()
+    }
+
+    /// `sums[block] = sum` of each row's part of each block's sum
+    /// (`parts[i]`: row `i`'s values in the order of [`Self::row_runs`]).
+    pub(super) fn gather(&self, parts: &[Vec<f64>], sums: &mut [f64]) {
+        sums.fill(0.0);
+        for (i, part) in parts.iter().enumerate() {
+            for ((block, _), sum) in self.row_runs(i).zip(part) {
+                sums[block] += sum;
             }
         }
     }
@@ -331,7 +367,7 @@ mod tests {
     use rand_chacha::rand_core::{Rng, SeedableRng};
     use rand_chacha::ChaCha8Rng;
 
-    use super::CoarseSpace;
+    use super::{near_kernel, CoarseSpace};
     use crate::kernel::ComplianceOperator;
     use crate::{Boundary, Grid, Material, Substrate};
 
@@ -370,11 +406,11 @@ mod tests {
                     .flat_map(|i| (bj..bj + side).map(move |j| i * columns + j))
                     .collect()
             };
-            let point = response(&[0]);
-            let block = response(&cells_of(0));
             let periodic = boundary == Boundary::Periodic;
+            let near = near_kernel(&response(&[0]), side, (rows, columns), periodic);
+            let block = response(&cells_of(0));
             let mut space =
-                CoarseSpace::new(side, (rows, columns), periodic, &point, &block).unwrap();
+                CoarseSpace::new(side, (rows, columns), periodic, near, &block).unwrap();
             // A seeded set (the generator of `topography`).
             let mut random = ChaCha8Rng::seed_from_u64(12345);
             let working: Vec<bool> = (0..n).map(|_| random.next_u64() % 10 < 4).collect();

@@ -21,7 +21,7 @@ pub(super) struct Workspace {
 
 /// `vector` holding `n` values: shortened, or lengthened with zeros within
 /// its capacity, or else allocated anew.
-fn fit<T: Clone + Default>(vector: &mut Vec<T>, n: usize) -> Result<()> {
+pub(super) fn fit<T: Clone + Default>(vector: &mut Vec<T>, n: usize) -> Result<()> {
     if vector.len() > n || vector.capacity() >= n {
         vector.resize(n, T::default());
     } else {

@@ -120,14 +120,34 @@ impl ComplianceOperator {
     ) -> Result<Vec<S>> {
         self.check_lengths(&[("pressure", x.len())])?;
         let columns = self.grid.columns();
+        let load = |i: usize, line: &mut [f32], scale: f64| {
+            for (value, x) in line.iter_mut().zip(&x[i * columns..(i + 1) * columns]) {
+                *value = (x * scale) as f32;
+            }
+        };
+        self.apply_rows_single(magnitude, load, targets, sink)
+    }
+
+    /// As [`ComplianceOperator::apply_into_single`], each row `i` of `x`
+    /// written by `load(i, row, scale)` as its values times `scale` (a
+    /// power of two from `magnitude`, about the largest absolute value of
+    /// `x`) instead of read from a slice: a load built on the fly (the
+    /// two-level preconditioner's piecewise constant fields) needs no
+    /// vector of its own.
+    ///
+    /// # Errors
+    /// As [`ComplianceOperator::apply_into`].
+    pub(crate) fn apply_rows_single<O: Send, S: Send>(
+        &mut self,
+        magnitude: f64,
+        load: impl Fn(usize, &mut [f32], f64) + Sync,
+        targets: Vec<O>,
+        sink: impl Fn(usize, O, &[f32], f64) -> S + Sync,
+    ) -> Result<Vec<S>> {
         let scale = 1.0 / power_of_two_above(magnitude);
         self.with_single(|single, spectrum| {
             let unscale = 1.0 / (scale * spectrum.scale);
-            let load = |i: usize, line: &mut [f32]| {
-                for (value, x) in line.iter_mut().zip(&x[i * columns..(i + 1) * columns]) {
-                    *value = (x * scale) as f32;
-                }
-            };
+            let load = |i: usize, line: &mut [f32]| load(i, line, scale);
             single.apply_into(load, spectrum, targets, |i, target, values| {
                 sink(i, target, values, unscale)
             })

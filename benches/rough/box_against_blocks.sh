@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# The box preconditioner against the two-level one (blocks of B cells) on
+# the rough problems of examples/rough_benchmark.rs, one process a run, the
+# two alternating at each grid size (the machine's speed wanders over
+# minutes). Prints the load average before each run and the benchmark's CSV
+# line and trace.
+#
+#   benches/rough/box_against_blocks.sh MODE B N [N ...]
+#   benches/rough/box_against_blocks.sh isolated 16 512 1024 2048 4096 8192
+set -euo pipefail
+mode=$1 blocks=$2
+shift 2
+cd "$(dirname "$0")/../.."
+cargo build --release --example rough_benchmark >&2
+bench=target/release/examples/rough_benchmark
+for n in "$@"; do
+    for option in "" "--blocks $blocks"; do
+        echo "# $(date -u +%H:%M:%S) UTC, load average $(cut -d' ' -f1 /proc/loadavg): $mode ${option:-box} $n"
+        # shellcheck disable=SC2086
+        TRACE=1 "$bench" "$mode" $option "$n" | grep -v '^#  '
+    done
+done
