@@ -289,9 +289,11 @@
 //! holds that rate and makes the count grow like `log N`, for two more
 //! applications of the compliance and two solves on the grid of blocks an
 //! iteration. It is not the default: on the grids of this machine it saves
-//! iterations, not time (`BENCHMARKS.md`, "A two-level preconditioner for
-//! rough contacts", has the counts, times and memory from 512^2 to
-//! 8192^2).
+//! time only where the box's count grows most (a fifth of a periodic
+//! half-space in contact, from 2048^2) and costs up to 1.64 times the box's
+//! elsewhere (`BENCHMARKS.md`, "A two-level preconditioner for rough
+//! contacts" and "The two-level preconditioner's applications in single
+//! precision", have the counts, times and memory from 512^2 to 8192^2).
 //!
 //! ### Rough contacts: the contact area and the kernel
 //!

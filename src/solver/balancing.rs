@@ -17,8 +17,10 @@
 //! every doubling of a rough surface's grid); the coarse correction
 //! handles what varies from block to block, so the count grows like `log
 //! N` instead. It costs two more applications of the compliance an
-//! iteration and two coarse solves: `BENCHMARKS.md`, "A two-level
-//! preconditioner for rough contacts".
+//! iteration (in single precision, as the box's) and two coarse solves,
+//! and no memory a cell beyond the box's: `BENCHMARKS.md`, "A two-level
+//! preconditioner for rough contacts" and "The two-level preconditioner's
+//! applications in single precision".
 
 use crate::error::{Error, Result};
 use crate::grid::Boundary;
@@ -45,14 +47,16 @@ impl ContactSolver {
     /// preconditioner over blocks of `blocks x blocks` cells (`None`: the
     /// box inverse alone, the default). On rough contacts the iterations
     /// then grow like `log N` instead of by a quarter to a third each
-    /// doubling of the grid, but each costs 1.6 to 2.8 times as much (two
+    /// doubling of the grid, but each costs 1.5 to 2 times as much (two
     /// more applications of the compliance and two solves on the grid of
-    /// blocks): on
-    /// the rough films and half-spaces of `BENCHMARKS.md` ("A two-level
-    /// preconditioner for rough contacts", blocks of 16 from 512^2 to
-    /// 8192^2) the solves took 1.08 to 2.2 times the box's time, and on a
-    /// coating over a soft base far more. Adhesive solves and the coarse
-    /// levels of the multi-resolution start keep the box.
+    /// blocks; no more memory a cell): on the rough films and half-spaces
+    /// of `BENCHMARKS.md` ("The two-level preconditioner's applications in
+    /// single precision", blocks of 16 from 512^2 to 8192^2) the solves
+    /// took 0.85 to 1.64 times the box's time (less only where the box's
+    /// count grows most, a fifth of a periodic half-space in contact from
+    /// 2048^2), and on a coating over a soft base far more. Adhesive
+    /// solves and the coarse levels of the multi-resolution start keep the
+    /// box.
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for blocks smaller than 2 cells or
