@@ -52,9 +52,10 @@ impl ContactSolver {
     /// blocks; no more memory a cell): on the rough films and half-spaces
     /// of `BENCHMARKS.md` ("The two-level preconditioner's applications in
     /// single precision", blocks of 16 from 512^2 to 8192^2) the solves
-    /// took 0.85 to 1.64 times the box's time (less only where the box's
-    /// count grows most, a fifth of a periodic half-space in contact from
-    /// 2048^2), and on a coating over a soft base far more. Adhesive
+    /// took 0.85 to 1.64 times the box's time in one sweep (less only where
+    /// the box's count grows most, a fifth of a periodic half-space in
+    /// contact from 2048^2; the isolated film at 4096^2 1.1 to 1.4 over
+    /// five pairs), and on a coating over a soft base far more. Adhesive
     /// solves and the coarse levels of the multi-resolution start keep the
     /// box.
     ///

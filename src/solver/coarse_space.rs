@@ -30,16 +30,17 @@ use crate::kernel::EvenConvolution;
 /// problem of `examples/rough_benchmark.rs` at 2048^2 took the same outer
 /// iterations (20 and 24) with the coarse solves to `1e-6`, `1e-3`, `1e-2`
 /// and `1e-1`, and 23 and 89 to `0.3` (2026-12-04, thirty-sixth session);
-/// `1e-3` keeps a factor of a hundred from there, and takes about 0.9 times
-/// the outer iteration's time of `1e-6` at 2048^2.
+/// `1e-3` stays a factor of a hundred below the loosest that kept them,
+/// and took 0.9 times the outer iteration's time of `1e-6` at 2048^2.
 const COARSE_TOLERANCE: f64 = 1e-3;
 
 /// The most inner iterations of a coarse solve (it stops there, inexact):
-/// Jacobi-preconditioned conjugate gradients on the blocks took 27 to 48
-/// (to `1e-10`) on the rough films and half-spaces of
-/// `examples/rough_benchmark.rs` up to 2048^2, and more than 100 (to
-/// `1e-6`) on its coated stack over a soft base, whose coarse matrix is
-/// ill-conditioned (2026-12-04).
+/// Jacobi-preconditioned conjugate gradients on the blocks took 9 and 16
+/// on average (to `1e-3`) on the rough film and the tamaas problem of
+/// `examples/rough_benchmark.rs` at 1024^2, and 20 at 1024^2 and 63 to 80
+/// at 2048^2 on its coated stack over a soft base, whose coarse matrix is
+/// ill-conditioned (2026-12-04, thirty-sixth session; more than 100 to
+/// `1e-6` there).
 const COARSE_ITERATIONS: usize = 200;
 
 /// `out = E~ v`: `n_I (Kb * (n v))_I / b^4` plus each block's own pairs
