@@ -8,7 +8,8 @@
 //! pull-off contact; the cohesive-zone pull-off of Johnson's sinusoid with
 //! its crests at 45 degrees to the grid (64 and 128 cells per wavelength);
 //! a rough periodic contact (the surface of
-//! `benches/peers/rough.py`, N = 256, 512 and 1024); the cost of one CG iteration
+//! `benches/peers/rough.py`, N = 256, 512 and 1024, with the box and with
+//! the two-level preconditioner over blocks of 16); the cost of one CG iteration
 //! against a padded FFT round trip.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
@@ -52,16 +53,25 @@ fn bench_rough(c: &mut Criterion) {
             tolerance: 1e-8,
             ..SolverParams::default()
         };
-        let mut solver = ContactSolver::new(&half, &grid, Boundary::Periodic, params).unwrap();
-        group.bench_function(BenchmarkId::from_parameter(n), |b| {
-            b.iter(|| {
-                solver
-                    .solve_force(&surface, black_box(0.01), None, &mut ())
-                    .unwrap()
-                    .0
-                    .iterations
-            })
-        });
+        // The box (the default), then the two-level preconditioner over
+        // blocks of 16 cells (`ContactSolver::set_coarse_blocks`).
+        for blocks in [None, Some(16)] {
+            let mut solver = ContactSolver::new(&half, &grid, Boundary::Periodic, params).unwrap();
+            solver.set_coarse_blocks(blocks).unwrap();
+            let id = match blocks {
+                None => BenchmarkId::from_parameter(n),
+                Some(b) => BenchmarkId::new(format!("blocks of {b}"), n),
+            };
+            group.bench_function(id, |b| {
+                b.iter(|| {
+                    solver
+                        .solve_force(&surface, black_box(0.01), None, &mut ())
+                        .unwrap()
+                        .0
+                        .iterations
+                })
+            });
+        }
     }
     group.finish();
 }
