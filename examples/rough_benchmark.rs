@@ -32,7 +32,8 @@
 //! the residual falls per iteration before and after it (the linear
 //! phase's rate, set by the preconditioner), and when the first fine
 //! iteration ended (the multi-resolution start before it) and the mean time
-//! of a fine iteration after it.
+//! of a fine iteration after it; `TRACE=all` also a line per fine
+//! iteration (`# k residual contact_cells`).
 
 use std::time::Instant;
 
@@ -131,6 +132,11 @@ fn main() -> Result<(), layered_contact::Error> {
             peak / grid.len() as f64
         );
         if std::env::var("TRACE").is_ok() {
+            if std::env::var("TRACE").as_deref() == Ok("all") {
+                for (k, (r, c)) in trace.iter().enumerate() {
+                    println!("# {k} {r:.3e} {c}");
+                }
+            }
             print_rates(&trace);
             let first = first.unwrap_or(f64::NAN);
             let per = (solve - first) / (trace.len().max(2) - 1) as f64;

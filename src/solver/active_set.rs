@@ -10,8 +10,8 @@
 //! (`examples/disc_or_ring.rs`), where the linear system on the converged
 //! set takes 5 to 29 (`benches/rough/plate_active_set.py`). A solve
 //! under depth or force control (the cohesive zone's inner solves among
-//! them) still running at [`ACTIVE_SET_AFTER`] iterations therefore tries,
-//! once, the loops of Hintermueller, Ito & Kunisch (2002, SIAM J. Optim.
+//! them) still running at [`ACTIVE_SET_AFTER`] iterations, on a contact
+//! of few patches ([`LOOP_PATCHES`]), therefore tries, once, the loops of Hintermueller, Ito & Kunisch (2002, SIAM J. Optim.
 //! 13, 865):
 //! solve the linear system on the current set (the clamped solve of the
 //! energy balance, preconditioned by the same box inverse), take out every
@@ -39,10 +39,45 @@ use super::ContactSolver;
 /// `BENCHMARKS.md`), so that only the slow class is touched.
 pub(super) const ACTIVE_SET_AFTER: usize = 100;
 
+/// The loops are not tried on a contact of more patches than this (cells
+/// joined through their four neighbours; on a split run each rank counts
+/// its own rows' and the counts add up). They are for a plate's disc or
+/// ring, whose set the constrained iteration finds a few cells an
+/// iteration (its iterate at the 100th iteration in 1 to 96 patches on
+/// `tests/plate_contact.rs`). A rough contact has many small patches (the
+/// converged sets of `rough_benchmark`'s coated stack in 154 / 327 / 681 /
+/// 1796 patches at 256^2 / 512^2 / 1024^2 / 2048^2, its film in 315 / 1050
+/// and the tamaas problem in 692 / 2142 at 512^2 / 1024^2) and takes a
+/// linear solve a loop and many loops: `rough_benchmark isolated 512 1024`
+/// with the loops from the 8th or 12th iteration took 56 / 70 and 42 / 68
+/// fine iterations against 17 / 20; its coated stack at 2048^2 from the
+/// 20th or 30th (the loops' solves to `1e-3` or `1e-4`) 970 to 1204
+/// against 82; from the 100th, 115 iterations at 2048^2 that gave back
+/// the set it had, and at 8192^2 more than seventeen minutes (stopped)
+/// where the whole solve takes five without them (2026-12-05,
+/// BENCHMARKS.md, "A start level stops once its contact settles").
+pub(super) const LOOP_PATCHES: usize = 256;
+
 /// The most loops tried.
 const MAX_LOOPS: usize = 30;
 
 impl ContactSolver {
+    /// Whether the contact where `pressure` is positive has at most
+    /// [`LOOP_PATCHES`] patches, summed over the ranks.
+    pub(super) fn few_patches(&self, pressure: &[f64]) -> bool {
+        let columns = self.grid().columns();
+        let rows = pressure.len() / columns.max(1);
+        // A rank's rows do not wrap round onto themselves.
+        let periodic =
+            self.operator.boundary() == crate::Boundary::Periodic && self.operator.slab().is_none();
+        let set: Vec<bool> = pressure.iter().map(|p| *p > 0.0).collect();
+        let local =
+            super::patch_width::patch_count_past(&set, rows, columns, periodic, LOOP_PATCHES);
+        let mut count = [local as f64];
+        self.sum_over_ranks(&mut count);
+        count[0] <= LOOP_PATCHES as f64
+    }
+
     /// The loops from the cells where `pressure` is positive, under
     /// `control`, over `reachable` cells, within `budget` conjugate-gradient
     /// iterations in all; `offset` the part of the displacement that the

@@ -1,6 +1,8 @@
-//! How many cells across the widest patch of a contact is: the measure of
-//! whether a cohesive zone ([`CohesiveZone`](super::CohesiveZone)) of a
-//! few cells resolves a pull-off contact.
+//! The patches of a contact: how many cells across the widest is (the
+//! measure of whether a cohesive zone
+//! ([`CohesiveZone`](super::CohesiveZone)) of a few cells resolves a
+//! pull-off contact), and how many there are (whether the active-set loops
+//! may help, [`active_set`](super::active_set)).
 
 use std::collections::VecDeque;
 
@@ -50,9 +52,72 @@ pub(crate) fn widest_patch_cells(set: &[bool], rows: usize, columns: usize, peri
     (2 * deepest - 1) as f64
 }
 
+/// How many patches `set` (row-major on `rows x columns` cells, wrapping
+/// round if `periodic`) has, cells joined through their four neighbours;
+/// the count stops once it passes `most` (it returns `most + 1` then).
+pub(crate) fn patch_count_past(
+    set: &[bool],
+    rows: usize,
+    columns: usize,
+    periodic: bool,
+    most: usize,
+) -> usize {
+    let n = (rows * columns).min(set.len());
+    let mut seen = vec![false; n];
+    let mut stack = Vec::new();
+    let mut count = 0;
+    for first in 0..n {
+        if !set[first] || seen[first] {
+            continue;
+        }
+        count += 1;
+        if count > most {
+            break;
+        }
+        // Depth first over the patch: each cell is pushed once.
+        seen[first] = true;
+        stack.push(first);
+        while let Some(c) = stack.pop() {
+            for m in super::wrapped_neighbours(c, rows, columns, periodic)
+                .into_iter()
+                .flatten()
+            {
+                if m < n && set[m] && !seen[m] {
+                    seen[m] = true;
+                    stack.push(m);
+                }
+            }
+        }
+    }
+    count
+}
+
 #[cfg(test)]
 mod tests {
-    use super::widest_patch_cells;
+    use super::{patch_count_past, widest_patch_cells};
+
+    /// Counted by hand: a disc is one patch, a ring one, a chessboard's
+    /// black cells `n^2 / 2` (no two share a side), four corner cells four
+    /// on an isolated grid and one where the grid wraps round; the count
+    /// stops one past `most`.
+    #[test]
+    fn patches_are_counted_through_their_four_neighbours() {
+        let n = 16;
+        let disc = cells(n, |i, j| (i - 8).pow(2) + (j - 8).pow(2) <= 20);
+        assert_eq!(patch_count_past(&disc, n, n, false, 10), 1);
+        let ring = cells(n, |i, j| {
+            (12..=30).contains(&((i - 8).pow(2) + (j - 8).pow(2)))
+        });
+        assert_eq!(patch_count_past(&ring, n, n, false, 10), 1);
+        let board = cells(n, |i, j| (i + j) % 2 == 0);
+        assert_eq!(patch_count_past(&board, n, n, false, 1000), 128);
+        assert_eq!(patch_count_past(&board, n, n, false, 10), 11);
+        let last = n as isize - 1;
+        let corners = cells(n, |i, j| (i == 0 || i == last) && (j == 0 || j == last));
+        assert_eq!(patch_count_past(&corners, n, n, false, 10), 4);
+        assert_eq!(patch_count_past(&corners, n, n, true, 10), 1);
+        assert_eq!(patch_count_past(&vec![false; n * n], n, n, true, 10), 0);
+    }
 
     /// The cells of an `n x n` grid where `inside(i, j)` holds.
     fn cells(n: usize, inside: impl Fn(isize, isize) -> bool) -> Vec<bool> {

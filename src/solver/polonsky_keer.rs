@@ -27,7 +27,7 @@ use crate::error::{Error, Result};
 use crate::indenter::Indenter;
 
 use super::active_set::ACTIVE_SET_AFTER;
-use super::multiresolution::loosened;
+use super::multiresolution::{count_settled, loosened};
 use super::stall::Stall;
 use super::step_response::Arithmetic;
 use super::{check_finite, passes, ContactSolver, IterationInfo, Observer, Solution, WarmStart};
@@ -261,6 +261,11 @@ impl ContactSolver {
         }
         let force_control = matches!(control, Control::Force(_));
         let mut tolerance = self.params.tolerance;
+        // A start level's own tolerance, which it keeps while its contact
+        // count still moves ([`count_settled`]).
+        let strict = tolerance;
+        // The contact count after the last iteration.
+        let mut last_contact: Option<usize> = None;
         let mut rz_old = 0.0;
         self.workspace.direction.fill(0.0);
         let mut depth = match control {
@@ -336,7 +341,8 @@ impl ContactSolver {
             // (`src/solver/active_set.rs`), then goes on from the
             // pressures they leave (or its own) with the displacement
             // recomputed below and its conjugation restarted.
-            let tried = iteration == ACTIVE_SET_AFTER;
+            // Not on a contact of many patches (LOOP_PATCHES).
+            let tried = iteration == ACTIVE_SET_AFTER && self.few_patches(&pressure);
             if tried {
                 // A given start displacement carries a part the pressures
                 // do not make: `u0 - K p0`.
@@ -646,9 +652,12 @@ impl ContactSolver {
                 residual,
                 contact_cells: stats.contact,
             });
+            let settled = count_settled(last_contact, stats.contact);
+            last_contact = Some(stats.contact);
             // A fine solve stops only once no cell overlaps; a start level
-            // may stop with overlap left (`ContactSolver::start_level`).
-            if residual <= tolerance
+            // may stop with overlap left (`ContactSolver::start_level`),
+            // and at its loosened tolerance only once its count settles.
+            if (residual <= strict || (residual <= tolerance && settled))
                 && (!set.overlap || self.start_level)
                 && (!early || self.start_level)
             {
