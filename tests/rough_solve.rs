@@ -323,3 +323,42 @@ fn two_level_preconditioner_refuses_blocks_it_cannot_use() {
     solver.set_coarse_blocks(None).unwrap();
     assert_eq!(solver.coarse_blocks(), None);
 }
+
+/// The active-set loops are for a plate's disc or ring; a rough contact of
+/// many patches that reaches the 100th iteration goes on without them.
+/// The problem of `benches/peers/rough.py` at 512^2 (about a fifth in
+/// contact, in 692 patches once converged; 237 at 256^2, where the loops
+/// are still tried), without the multi-resolution start, to a tolerance
+/// below what it reaches and an iteration limit of 130: the
+/// observer sees all 130 constrained iterations, numbered 1 to 130, and
+/// the solve ends with `NoConvergence` at 130. With the loops tried at the
+/// 100th (as before the patches' rule, `LOOP_PATCHES`) the observer saw
+/// 100 and then a number past them (the loops' iterations count).
+#[test]
+fn rough_contacts_go_on_without_the_active_set_loops() {
+    let body = Substrate::half_space(Material::new(1.0, 0.0).unwrap());
+    let params = SolverParams {
+        tolerance: 1e-18,
+        max_iterations: 130,
+        multiresolution: false,
+        ..SolverParams::default()
+    };
+    let grid = Grid::square_of_side(512, 1.0).unwrap();
+    let indenter = rough_surface(1.0, 512, 1).indenter(&grid).unwrap();
+    let mut solver = ContactSolver::new(&body, &grid, Boundary::Periodic, params).unwrap();
+    let mut seen = Vec::new();
+    let mut observer = |info: &layered_contact::solver::IterationInfo| seen.push(info.iteration);
+    let result = solver.solve_force(&indenter, 0.01, None, &mut observer);
+    assert!(
+        matches!(
+            result,
+            Err(layered_contact::Error::NoConvergence {
+                iterations: 130,
+                ..
+            })
+        ),
+        "{:?}",
+        result.as_ref().map(|(s, _)| s.iterations)
+    );
+    assert_eq!(seen, (1..=130).collect::<Vec<_>>());
+}

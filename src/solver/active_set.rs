@@ -47,7 +47,9 @@ pub(super) const ACTIVE_SET_AFTER: usize = 100;
 /// `tests/plate_contact.rs`). A rough contact has many small patches (the
 /// converged sets of `rough_benchmark`'s coated stack in 154 / 327 / 681 /
 /// 1796 patches at 256^2 / 512^2 / 1024^2 / 2048^2, its film in 315 / 1050
-/// and the tamaas problem in 692 / 2142 at 512^2 / 1024^2) and takes a
+/// and the tamaas problem in 692 / 2142 at 512^2 / 1024^2; 237 at 256^2
+/// at its 100th iteration, where the loops are still tried, cheaply) and
+/// takes a
 /// linear solve a loop and many loops: `rough_benchmark isolated 512 1024`
 /// with the loops from the 8th or 12th iteration took 56 / 70 and 42 / 68
 /// fine iterations against 17 / 20; its coated stack at 2048^2 from the
