@@ -11,8 +11,8 @@
 //! set takes 5 to 29 (`benches/rough/plate_active_set.py`). A solve
 //! under depth or force control (the cohesive zone's inner solves among
 //! them) still running at [`ACTIVE_SET_AFTER`] iterations, on a contact
-//! of few patches ([`LOOP_PATCHES`]), therefore tries, once, the loops of Hintermueller, Ito & Kunisch (2002, SIAM J. Optim.
-//! 13, 865):
+//! of few patches ([`LOOP_PATCHES`]), therefore tries, once, the loops of
+//! Hintermueller, Ito & Kunisch (2002, SIAM J. Optim. 13, 865):
 //! solve the linear system on the current set (the clamped solve of the
 //! energy balance, preconditioned by the same box inverse), take out every
 //! cell whose pressure came out tensile and add every cell the indenter
@@ -34,9 +34,12 @@ use super::ContactSolver;
 
 /// The iteration of the constrained conjugate gradients at which a solve
 /// that has not converged tries the active-set loops: above what smooth
-/// and rough contacts take (12 to 15 for a Hertzian
-/// contact, 17 to 58 fine iterations for rough ones up to 8192^2,
-/// `BENCHMARKS.md`), so that only the slow class is touched.
+/// and rough contacts on a film or a half-space take (12 to 15 for a
+/// Hertzian contact, 17 to 58 fine iterations for rough ones up to
+/// 8192^2, `BENCHMARKS.md`), so that only the slow class is touched. A
+/// rough contact on a coated stack over a soft base takes 55 to 140 (512^2
+/// to 8192^2), and is kept from the loops by its patches
+/// ([`LOOP_PATCHES`]).
 pub(super) const ACTIVE_SET_AFTER: usize = 100;
 
 /// The loops are not tried on a contact of more patches than this (cells
@@ -49,12 +52,11 @@ pub(super) const ACTIVE_SET_AFTER: usize = 100;
 /// 1796 patches at 256^2 / 512^2 / 1024^2 / 2048^2, its film in 315 / 1050
 /// and the tamaas problem in 692 / 2142 at 512^2 / 1024^2; 237 at 256^2
 /// at its 100th iteration, where the loops are still tried, cheaply) and
-/// takes a
-/// linear solve a loop and many loops: `rough_benchmark isolated 512 1024`
-/// with the loops from the 8th or 12th iteration took 56 / 70 and 42 / 68
-/// fine iterations against 17 / 20; its coated stack at 2048^2 from the
-/// 20th or 30th (the loops' solves to `1e-3` or `1e-4`) 970 to 1204
-/// against 82; from the 100th, 115 iterations at 2048^2 that gave back
+/// takes a linear solve a loop and many loops: `rough_benchmark isolated
+/// 512 1024` with the loops from the 8th or 12th iteration took 56 / 70
+/// and 42 / 68 fine iterations against 17 / 20; its coated stack at
+/// 2048^2 from the 20th or 30th (the loops' solves to `1e-3` or `1e-4`)
+/// 970 to 1204 against 82; from the 100th, 115 iterations at 2048^2 that gave back
 /// the set it had, and at 8192^2 more than seventeen minutes (stopped)
 /// where the whole solve takes five without them (2026-12-05,
 /// BENCHMARKS.md, "A start level stops once its contact settles").
