@@ -333,8 +333,9 @@ fn two_level_preconditioner_refuses_blocks_it_cannot_use() {
 /// observer sees all 130 constrained iterations, numbered 1 to 130, and
 /// the solve ends with `NoConvergence` at 130. With the loops tried at the
 /// 100th (as before the patches' rule, `LOOP_PATCHES`) the observer saw 1
-/// to 99 and then 130: the loops spent what the limit left (measured with
-/// the rule off).
+/// to 99 and then 130: the loops spent what the limit left (measured at
+/// 256^2, where they are tried; at 512^2 with the rule off the test
+/// fails).
 #[test]
 fn rough_contacts_go_on_without_the_active_set_loops() {
     let body = Substrate::half_space(Material::new(1.0, 0.0).unwrap());
