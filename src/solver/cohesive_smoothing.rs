@@ -28,6 +28,8 @@
 //! cost iterations there), by a scatter along the rows and a gather along
 //! the columns over the component's cells (wrapped round a periodic grid).
 
+use super::patch_width::Patches;
+
 /// The amplification `alpha` of the smoothed residual (1, 2 and 4 measured
 /// in the model above; 1.5, 2 and 3 on the cycle: 2 the best or within 1 %
 /// of it).
@@ -63,11 +65,8 @@ pub(super) struct ZoneSmoothing {
     smoothed: Vec<f64>,
     /// The pass along the rows, of the grid's size, zero between uses.
     along: Vec<f64>,
-    /// The zone's components (`ZoneSmoothing::components`) and the cells
-    /// seen by their search.
-    order: Vec<usize>,
-    ends: Vec<usize>,
-    seen: Vec<bool>,
+    /// The zone's 4-connected components.
+    components: Patches,
 }
 
 impl ZoneSmoothing {
@@ -97,9 +96,7 @@ impl ZoneSmoothing {
             residual: Vec::new(),
             smoothed: Vec::new(),
             along: Vec::new(),
-            order: Vec::new(),
-            ends: Vec::new(),
-            seen: Vec::new(),
+            components: Patches::default(),
         }
     }
 
@@ -114,46 +111,18 @@ impl ZoneSmoothing {
     ) {
         target.copy_from_slice(mapped);
         self.along.resize(zone.len(), 0.0);
-        self.components(zone);
+        self.components
+            .find(zone, (self.rows, self.columns), self.periodic, usize::MAX);
         let mut start = 0;
-        for k in 0..self.ends.len() {
-            let end = self.ends[k];
+        for k in 0..self.components.ends.len() {
+            let end = self.components.ends[k];
             if end - start >= MIN_COMPONENT_CELLS {
                 self.cells.clear();
-                self.cells.extend_from_slice(&self.order[start..end]);
+                self.cells
+                    .extend_from_slice(&self.components.order[start..end]);
                 self.precondition_cells(mapped, tension, target);
             }
             start = end;
-        }
-    }
-
-    /// The zone's 4-connected components: their cells one after the other
-    /// in `order`, each ending at the next of `ends`.
-    fn components(&mut self, zone: &[bool]) {
-        self.order.clear();
-        self.ends.clear();
-        self.seen.clear();
-        self.seen.resize(zone.len(), false);
-        let (rows, columns) = (self.rows, self.columns);
-        for seed in 0..zone.len() {
-            if !zone[seed] || self.seen[seed] {
-                continue;
-            }
-            self.seen[seed] = true;
-            let mut next = self.order.len();
-            self.order.push(seed);
-            while next < self.order.len() {
-                let c = self.order[next];
-                next += 1;
-                let around = super::wrapped_neighbours(c, rows, columns, self.periodic);
-                for m in around.into_iter().flatten() {
-                    if zone[m] && !self.seen[m] {
-                        self.seen[m] = true;
-                        self.order.push(m);
-                    }
-                }
-            }
-            self.ends.push(self.order.len());
         }
     }
 

@@ -52,6 +52,61 @@ pub(crate) fn widest_patch_cells(set: &[bool], rows: usize, columns: usize, peri
     (2 * deepest - 1) as f64
 }
 
+/// The patches of a set of cells (joined through their four neighbours),
+/// found into buffers kept between searches: their cells one after the
+/// other in `order`, each patch ending at the next of `ends`.
+#[derive(Debug, Default)]
+pub(crate) struct Patches {
+    pub(crate) order: Vec<usize>,
+    pub(crate) ends: Vec<usize>,
+    /// The cells the search has reached.
+    seen: Vec<bool>,
+}
+
+impl Patches {
+    /// The patches of `set` (row-major on `rows x columns` cells, wrapping
+    /// round if `periodic`), each from its first cell in row-major order,
+    /// breadth first; the search stops after `most` patches.
+    pub(crate) fn find(
+        &mut self,
+        set: &[bool],
+        (rows, columns): (usize, usize),
+        periodic: bool,
+        most: usize,
+    ) {
+        let n = (rows * columns).min(set.len());
+        self.order.clear();
+        self.ends.clear();
+        self.seen.clear();
+        self.seen.resize(n, false);
+        for first in 0..n {
+            if self.ends.len() >= most {
+                break;
+            }
+            if !set[first] || self.seen[first] {
+                continue;
+            }
+            self.seen[first] = true;
+            let mut next = self.order.len();
+            self.order.push(first);
+            while next < self.order.len() {
+                let c = self.order[next];
+                next += 1;
+                for m in super::wrapped_neighbours(c, rows, columns, periodic)
+                    .into_iter()
+                    .flatten()
+                {
+                    if m < n && set[m] && !self.seen[m] {
+                        self.seen[m] = true;
+                        self.order.push(m);
+                    }
+                }
+            }
+            self.ends.push(self.order.len());
+        }
+    }
+}
+
 /// How many patches `set` (row-major on `rows x columns` cells, wrapping
 /// round if `periodic`) has, cells joined through their four neighbours;
 /// the count stops once it passes `most` (it returns `most + 1` then).
@@ -62,34 +117,9 @@ pub(crate) fn patch_count_past(
     periodic: bool,
     most: usize,
 ) -> usize {
-    let n = (rows * columns).min(set.len());
-    let mut seen = vec![false; n];
-    let mut stack = Vec::new();
-    let mut count = 0;
-    for first in 0..n {
-        if !set[first] || seen[first] {
-            continue;
-        }
-        count += 1;
-        if count > most {
-            break;
-        }
-        // Depth first over the patch: each cell is pushed once.
-        seen[first] = true;
-        stack.push(first);
-        while let Some(c) = stack.pop() {
-            for m in super::wrapped_neighbours(c, rows, columns, periodic)
-                .into_iter()
-                .flatten()
-            {
-                if m < n && set[m] && !seen[m] {
-                    seen[m] = true;
-                    stack.push(m);
-                }
-            }
-        }
-    }
-    count
+    let mut patches = Patches::default();
+    patches.find(set, (rows, columns), periodic, most.saturating_add(1));
+    patches.ends.len()
 }
 
 #[cfg(test)]
