@@ -291,9 +291,11 @@
 //! iteration. It is not the default: on the grids of this machine it saves
 //! time only where the box's count grows most (a fifth of a periodic
 //! half-space in contact, from 2048^2) and costs up to 1.64 times the box's
-//! elsewhere (`BENCHMARKS.md`, "A two-level preconditioner for rough
-//! contacts" and "The two-level preconditioner's applications in single
-//! precision", have the counts, times and memory from 512^2 to 8192^2).
+//! on the other films and half-spaces and about twice on a coating over a
+//! soft base (`BENCHMARKS.md`, "A two-level preconditioner for rough
+//! contacts", "The two-level preconditioner's applications in single
+//! precision" and "A start level stops once its contact settles", have the
+//! counts, times and memory from 512^2 to 8192^2).
 //!
 //! ### Rough contacts: the contact area and the kernel
 //!
