@@ -6,12 +6,15 @@
 //! contact).
 //!
 //! ```text
-//! cargo run --release --example rough_benchmark -- [isolated|periodic|peers|stack] [--refine] [--blocks B] N [N ...]
+//! cargo run --release --example rough_benchmark -- [isolated|periodic|peers|stack|periodic-stack] [--refine] [--blocks B] N [N ...]
 //! ```
 //!
 //! `stack` presses the same surface, isolated, into a stack instead: a
 //! 20 um coating (E = 5 MPa, nu = 0.3) on the same rubber film over a
-//! softer elastic base (E = 0.2 MPa, nu = 0.45).
+//! softer elastic base (E = 0.2 MPa, nu = 0.45); `periodic-stack` the
+//! same on a periodic grid. Isolated, the soft base carries the square
+//! window of the surface like a flat punch: most of the force lies next
+//! to the window's edges (`BANDS=1`, below).
 //!
 //! `peers` solves the problem of `benches/peers/rough.py` instead (the
 //! same surface on a periodic half-space of `E* = 1` over a unit square,
@@ -33,11 +36,14 @@
 //! phase's rate, set by the preconditioner), and when the first fine
 //! iteration ended (the multi-resolution start before it) and the mean time
 //! of a fine iteration after it; `TRACE=all` also a line per fine
-//! iteration (`# k residual contact_cells`).
+//! iteration (`# k residual contact_cells`). `COLD=1` solves without the
+//! multi-resolution start. `BANDS=1` keeps the pressures and prints the
+//! solution's edge flag and the share of the force on the cells within
+//! 5, 10 and 20 % of the side from the grid's edges.
 
 use std::time::Instant;
 
-use layered_contact::solver::{ContactSolver, IterationInfo, SolverParams};
+use layered_contact::solver::{ContactSolver, Fields, IterationInfo, SolverParams};
 use layered_contact::topography::{Amplitude, SelfAffine};
 use layered_contact::{Base, Boundary, Grid, Material, Substrate};
 
@@ -49,9 +55,12 @@ fn main() -> Result<(), layered_contact::Error> {
     // The peers' problem of `benches/peers/rough.py`: the same surface on a
     // periodic half-space of E* = 1 over a unit square, mean pressure 0.01.
     let peers = args.peek().map(String::as_str) == Some("peers");
-    let stack = args.peek().map(String::as_str) == Some("stack");
+    let stack = matches!(
+        args.peek().map(String::as_str),
+        Some("stack" | "periodic-stack")
+    );
     let boundary = match args.peek().map(String::as_str) {
-        Some("periodic" | "peers") => {
+        Some("periodic" | "peers" | "periodic-stack") => {
             args.next();
             Boundary::Periodic
         }
@@ -86,6 +95,7 @@ fn main() -> Result<(), layered_contact::Error> {
         (1e-3, film, 5e3)
     };
     let force = pressure * side * side;
+    let bands = std::env::var("BANDS").is_ok();
     println!("N,boundary,build_s,surface_s,solve_s,iterations,coarse_iterations,contact_fraction,peak_mb,bytes_per_cell");
     for n in sizes {
         let grid = Grid::square_of_side(n, side)?;
@@ -106,6 +116,11 @@ fn main() -> Result<(), layered_contact::Error> {
         let start = Instant::now();
         let params = SolverParams {
             tolerance: 1e-8,
+            multiresolution: std::env::var("COLD").is_err(),
+            fields: Fields {
+                pressure: bands,
+                ..Fields::default()
+            },
             ..SolverParams::default()
         };
         let mut solver = ContactSolver::new(&film, &grid, boundary, params)?;
@@ -131,6 +146,9 @@ fn main() -> Result<(), layered_contact::Error> {
             peak / 1048576.0,
             peak / grid.len() as f64
         );
+        if let (true, Some(p)) = (bands, &solution.pressure) {
+            print_bands(p, solution.edge_contact);
+        }
         if std::env::var("TRACE").is_ok() {
             if std::env::var("TRACE").as_deref() == Ok("all") {
                 for (k, (r, c)) in trace.iter().enumerate() {
@@ -174,5 +192,32 @@ fn print_rates(trace: &[(f64, usize)]) {
         trace.len(),
         rate(0, settled),
         rate(settled, last)
+    );
+}
+
+/// The solution's edge flag and the share of the force on the cells within
+/// 5, 10 and 20 % of the side from the grid's edges.
+fn print_bands(pressure: &ndarray::Array2<f64>, edge_contact: bool) {
+    let (rows, cols) = pressure.dim();
+    let total: f64 = pressure.sum();
+    let shares: Vec<String> = [0.05, 0.1, 0.2]
+        .iter()
+        .map(|band| {
+            let (m, k) = ((band * rows as f64) as usize, (band * cols as f64) as usize);
+            let near: f64 = pressure
+                .indexed_iter()
+                .filter(|((i, j), _)| *i < m || *j < k || *i >= rows - m || *j >= cols - k)
+                .map(|(_, p)| p)
+                .sum();
+            format!(
+                "{:.0} % ({:.0} % of the area)",
+                100.0 * near / total,
+                100.0 * (1.0 - (1.0 - 2.0 * band).powi(2))
+            )
+        })
+        .collect();
+    println!(
+        "# edge contact {edge_contact}; force within 5 / 10 / 20 % of the side of the edges: {}",
+        shares.join(" / ")
     );
 }

@@ -260,10 +260,12 @@ fn two_level_preconditioner_reaches_the_box_solutions() {
 /// Where the box's count grows with the grid, the two-level
 /// preconditioner's barely does: the problem of `benches/peers/rough.py`
 /// (the seeded surface on a periodic half-space of `E* = 1`, mean pressure
-/// `0.01`, about a fifth in contact) at 128^2 and 256^2, tolerance 1e-8,
-/// blocks of 16. Measured 17 and 21 fine iterations with the box, 15 and
-/// 15 with the blocks (`BENCHMARKS.md`, "A two-level preconditioner for
-/// rough contacts", has them to 4096^2).
+/// `0.01`, about a fifth in contact) at 256^2 and 512^2, tolerance 1e-8,
+/// blocks of 16. Measured 21 and 27 fine iterations with the box, 18 and
+/// 19 with the blocks (which join once the contact count has settled for
+/// three iterations; taken in every iteration they took 15 and 17):
+/// `BENCHMARKS.md`, "The coarse correction once the contact settles", has
+/// them to 4096^2.
 #[test]
 fn two_level_preconditioner_holds_the_rough_count() {
     let body = Substrate::half_space(Material::new(1.0, 0.0).unwrap());
@@ -272,7 +274,7 @@ fn two_level_preconditioner_holds_the_rough_count() {
         ..SolverParams::default()
     };
     let mut counts = Vec::new();
-    for n in [128, 256] {
+    for n in [256, 512] {
         let grid = Grid::square_of_side(n, 1.0).unwrap();
         let indenter = rough_surface(1.0, n, 1).indenter(&grid).unwrap();
         for blocks in [None, Some(16)] {
@@ -282,14 +284,71 @@ fn two_level_preconditioner_holds_the_rough_count() {
             counts.push(solution.iterations);
         }
     }
-    let [box_128, two_128, box_256, two_256] = counts[..] else {
+    let [box_256, two_256, box_512, two_512] = counts[..] else {
         unreachable!()
     };
     assert!(
-        two_256 <= two_128 + 1 && two_256 + 4 <= box_256,
+        two_512 <= two_256 + 2 && two_512 + 5 <= box_512,
         "{counts:?}"
     );
-    assert!(box_256 > box_128, "{counts:?}");
+    assert!(box_512 > box_256, "{counts:?}");
+}
+
+/// On a coating over a soft base the two-level preconditioner waits for
+/// the contact count to settle (`ContactSolver::set_coarse_blocks`): the
+/// periodic stack of `examples/rough_benchmark.rs` (a 20 um coating of 5
+/// MPa on a 0.1 mm rubber film over a 0.2 MPa base, the seeded surface on
+/// 512 x 512 cells of a 1 mm square, 5 kPa, about 2 % in contact),
+/// tolerance 1e-8, blocks of 16. Measured 47 fine iterations with the box,
+/// 33 with the blocks, 39 with the blocks taken in every iteration
+/// (`QUIET_ITERATIONS` at 0: checked to fail); the bound of 36 lies
+/// between. The same solution as the box's:
+/// forces within 1e-12 (measured 1e-15), depths within 1e-8 (measured
+/// 4e-11; each solve's tolerance bounds its pressures' last change, not
+/// their error).
+#[test]
+fn two_level_preconditioner_waits_for_the_stack_to_settle() {
+    let (n, side) = (512, 1e-3);
+    let grid = Grid::square_of_side(n, side).unwrap();
+    let body = Substrate::stack(
+        &[
+            (Material::new(5e6, 0.3).unwrap(), 2e-5),
+            (Material::new(1e6, 0.49).unwrap(), 1e-4),
+        ],
+        layered_contact::Base::Elastic(Material::new(2e5, 0.45).unwrap()),
+    )
+    .unwrap();
+    let indenter = rough_surface(side, n, 1).indenter(&grid).unwrap();
+    let params = SolverParams {
+        tolerance: 1e-8,
+        ..SolverParams::default()
+    };
+    let force = 5e3 * side * side;
+    let mut runs = Vec::new();
+    for blocks in [None, Some(16)] {
+        let mut solver = ContactSolver::new(&body, &grid, Boundary::Periodic, params).unwrap();
+        solver.set_coarse_blocks(blocks).unwrap();
+        runs.push(
+            solver
+                .solve_force(&indenter, force, None, &mut ())
+                .unwrap()
+                .0,
+        );
+    }
+    let (boxed, two) = (&runs[0], &runs[1]);
+    assert!(
+        two.iterations <= 36 && boxed.iterations >= 44,
+        "{} {}",
+        boxed.iterations,
+        two.iterations
+    );
+    assert!((two.force / boxed.force - 1.0).abs() < 1e-12);
+    assert!(
+        (two.depth / boxed.depth - 1.0).abs() < 1e-8,
+        "{} {}",
+        two.depth,
+        boxed.depth
+    );
 }
 
 /// Blocks the two-level preconditioner cannot use are refused, naming the

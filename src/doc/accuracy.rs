@@ -288,14 +288,15 @@
 //! [`ContactSolver::set_coarse_blocks`](crate::solver::ContactSolver::set_coarse_blocks)),
 //! holds that rate and makes the count grow like `log N`, for two more
 //! applications of the compliance and two solves on the grid of blocks an
-//! iteration. It is not the default: on the grids of this machine it saves
-//! time only where the box's count grows most (a fifth of a periodic
-//! half-space in contact, from 2048^2) and costs up to 1.64 times the box's
-//! on the other films and half-spaces and about twice on a coating over a
-//! soft base (`BENCHMARKS.md`, "A two-level preconditioner for rough
-//! contacts", "The two-level preconditioner's applications in single
-//! precision" and "A start level stops once its contact settles", have the
-//! counts, times and memory from 512^2 to 8192^2).
+//! iteration. It joins once the contact count has settled (built over a
+//! working set that still has cells to shed, it spreads pressure over
+//! them). It is not the default: on the grids of this machine it takes
+//! 0.66 to 1.09 times the box's time at 2048^2 and 4096^2 on the rough
+//! films, a periodic half-space and a coating over a soft base, and up to
+//! 1.36 times on smaller grids (`BENCHMARKS.md`, "A two-level
+//! preconditioner for rough contacts" and "The coarse correction once the
+//! contact settles", have the counts, times and memory from 512^2 to
+//! 8192^2).
 //!
 //! ### Rough contacts: the contact area and the kernel
 //!

@@ -416,7 +416,7 @@ impl ContactSolver {
         gap_max: f64,
     ) -> Result<(f64, f64)> {
         if two_level {
-            self.precondition_step(bounds, 0.0, gap_max)
+            self.precondition_step(bounds, 0.0, gap_max, true)
         } else {
             self.precondition_working_set(bounds, 0.0, gap_max)
         }

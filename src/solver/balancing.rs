@@ -26,6 +26,8 @@ use crate::error::{Error, Result};
 use crate::grid::Boundary;
 
 use super::coarse_space::CoarseSpace;
+#[cfg(doc)]
+use super::multiresolution::{count_settled, SETTLED_COUNT_FRACTION};
 use super::passes::Bounds;
 use super::ContactSolver;
 
@@ -41,27 +43,42 @@ pub(super) struct Balancing {
     second: Vec<f64>,
 }
 
+/// The two-level preconditioner joins the constrained conjugate gradients
+/// once this many iterations in a row have left the contact count settled
+/// ([`ContactSolver::coarse_correction_now`]). Its coarse correction,
+/// built over the working set's cells, equilibrates the set it is given:
+/// on a set that still has to shed cells it spreads pressure over them
+/// instead. On the coated stack of `examples/rough_benchmark.rs` (a stiff
+/// coating over a soft base, whose contact sheds cells for dozens of
+/// iterations) the blocks taken in every iteration settled its set at the
+/// 47th and 83rd fine iteration at 1024^2 and 2048^2, against the box's
+/// 61st and 67th; taken after one quiet iteration, at 4096^2 they joined
+/// during a pause in the early shedding, tripled the contact in three
+/// iterations and took 226 iterations (the box 105). After three: 55 / 50
+/// / 62 fine iterations at 1024^2 / 2048^2 / 4096^2 against the box's
+/// 85 / 82 / 105, and the rough films and the tamaas problem within a few
+/// iterations of the blocks taken throughout (BENCHMARKS.md, "The coarse
+/// correction once the contact settles").
+pub(super) const QUIET_ITERATIONS: usize = 3;
+
 impl ContactSolver {
     /// Precondition the non-adhesive solves' constrained conjugate
     /// gradients (and their active-set loops) with a two-level balancing
     /// preconditioner over blocks of `blocks x blocks` cells (`None`: the
-    /// box inverse alone, the default). On rough contacts the iterations
-    /// then grow like `log N` instead of by a quarter to a third each
-    /// doubling of the grid, but each costs 1.5 to 2 times as much (two
-    /// more applications of the compliance and two solves on the grid of
-    /// blocks; no more memory a cell): on the rough films and half-spaces
-    /// of `BENCHMARKS.md` ("The two-level preconditioner's applications in
-    /// single precision", blocks of 16 from 512^2 to 8192^2) the solves
-    /// took 0.85 to 1.64 times the box's time in one sweep (less only where
-    /// the box's count grows most, a fifth of a periodic half-space in
-    /// contact from 2048^2; the isolated film at 4096^2 1.1 to 1.4 over
-    /// five pairs), and on a coating over a soft base about twice (its
-    /// count set by how fast the contact sheds the cells its start gave
-    /// too many, which the blocks do not speed: 89 fine iterations and
-    /// 20.6 s against the box's 82 and 11.3 s at 2048^2, "A start level
-    /// stops once its contact settles"). Adhesive
-    /// solves and the coarse levels of the multi-resolution start keep the
-    /// box.
+    /// box inverse alone, the default), which joins once three iterations
+    /// in a row have changed the contact count by at most a thousandth (the
+    /// box alone before). On rough
+    /// contacts the iterations then grow like `log N` instead of by a
+    /// quarter to a third each doubling of the grid, but each costs 1.5 to
+    /// 2 times as much (two more applications of the compliance and two
+    /// solves on the grid of blocks; no more memory a cell): in one sweep
+    /// of `BENCHMARKS.md` ("The coarse correction once the contact
+    /// settles", blocks of 16 from 512^2 to 4096^2) the solves took 0.66 to
+    /// 0.99 times the box's time at 2048^2 and 4096^2 on the rough films,
+    /// a periodic half-space and a coating over a soft base (the isolated
+    /// film at 2048^2 1.09), and 0.80 to 1.36 times on the smaller grids.
+    /// Adhesive solves and the coarse levels of the multi-resolution start
+    /// keep the box.
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for blocks smaller than 2 cells or
@@ -166,17 +183,29 @@ impl ContactSolver {
         self.balancing.as_ref().map(|b| b.space.side())
     }
 
+    /// Whether the constrained conjugate gradients' next iteration takes
+    /// the two-level preconditioner: it is on, and each of the last
+    /// [`QUIET_ITERATIONS`] iterations (`quiet`, how many in a row did)
+    /// changed the contact count by at most [`SETTLED_COUNT_FRACTION`] of
+    /// it ([`count_settled`]); while the set still moves, the box alone.
+    pub(super) fn coarse_correction_now(&self, quiet: usize) -> bool {
+        self.balancing.is_some() && quiet >= QUIET_ITERATIONS
+    }
+
     /// The constrained conjugate gradients' preconditioned residual: the
-    /// two-level preconditioner if it is on and the solve is a fine,
-    /// non-adhesive one, else the box alone
+    /// two-level preconditioner if it is on, `coarse` asks for it
+    /// ([`coarse_correction_now`](Self::coarse_correction_now)) and the
+    /// solve is a fine, non-adhesive one, else the box alone
     /// ([`ContactSolver::precondition_working_set`]).
     pub(super) fn precondition_step(
         &mut self,
         bounds: Option<Bounds>,
         shift: f64,
         gap_max: f64,
+        coarse: bool,
     ) -> Result<(f64, f64)> {
-        let balanced = self.params.precondition && !self.double_preconditioner && bounds.is_some();
+        let balanced =
+            coarse && self.params.precondition && !self.double_preconditioner && bounds.is_some();
         match self.balancing.take() {
             Some(mut balancing) if balanced => {
                 let out = self.balanced(&mut balancing, bounds, shift);

@@ -41,8 +41,9 @@
 //! [`SolverParams::multiresolution`] turn either off. On rough contacts,
 //! whose box-preconditioned count grows with every doubling of the grid,
 //! [`ContactSolver::set_coarse_blocks`] adds a coarse correction over
-//! blocks of cells (two-level balancing, Mandel 1993) whose count grows
-//! like `log N`, at 1.5 to 2 times the cost an iteration.
+//! blocks of cells (two-level balancing, Mandel 1993) once the contact
+//! set has settled, whose count grows like `log N`, at 1.5 to 2 times the
+//! cost an iteration.
 //!
 //! Each solve may start from the [`WarmStart`] of the previous one. For
 //! non-adhesive contact that only saves work (on the Hertz benchmark at

@@ -72,7 +72,7 @@ pub(super) fn loosened(tolerance: f64, first_residual: f64) -> f64 {
 /// their change falls to the loosened tolerance: the same fine
 /// iterations, a few more coarse ones (BENCHMARKS.md, "A start level stops
 /// once its contact settles").
-const SETTLED_COUNT_FRACTION: f64 = 1e-3;
+pub(super) const SETTLED_COUNT_FRACTION: f64 = 1e-3;
 
 /// Whether an iteration that took a contact count from `before` (`None`
 /// for the first iteration) to `now` leaves it settled enough for a start

@@ -266,6 +266,11 @@ impl ContactSolver {
         let strict = tolerance;
         // The contact count after the last iteration.
         let mut last_contact: Option<usize> = None;
+        // How many iterations in a row have left the contact count
+        // settled ([`count_settled`]), and whether the last one took the
+        // coarse correction.
+        let mut quiet = 0;
+        let mut coarse_last = false;
         let mut rz_old = 0.0;
         self.workspace.direction.fill(0.0);
         let mut depth = match control {
@@ -466,7 +471,15 @@ impl ContactSolver {
             // z = P M^-1 P r in `response`, r = gap - shift; under force
             // control projected too (its mean taken out of the direction;
             // the product r.z is unchanged as r has zero sum).
-            let (z_sum, rz) = self.precondition_step(set.bounds, shift, set.gap_max)?;
+            // The coarse correction only while the contact count stands
+            // ([`ContactSolver::coarse_correction_now`]); a change of
+            // preconditioner restarts the conjugation.
+            let coarse = self.coarse_correction_now(quiet);
+            if coarse != coarse_last {
+                rz_old = 0.0;
+            }
+            coarse_last = coarse;
+            let (z_sum, rz) = self.precondition_step(set.bounds, shift, set.gap_max, coarse)?;
             let mut sums = [z_sum, rz];
             self.sum_over_ranks(&mut sums);
             let [z_sum, rz] = sums;
@@ -653,6 +666,7 @@ impl ContactSolver {
                 contact_cells: stats.contact,
             });
             let settled = count_settled(last_contact, stats.contact);
+            quiet = if settled { quiet + 1 } else { 0 };
             last_contact = Some(stats.contact);
             // A fine solve stops only once no cell overlaps; a start level
             // may stop with overlap left (`ContactSolver::start_level`),
