@@ -149,13 +149,14 @@ def test_interface_curve_follows_westergaard():
 
 def test_two_level_preconditioner_on_a_rough_contact():
     """`coarse_blocks` (the crate's `ContactSolver::set_coarse_blocks`): the
-    problem of `benches/peers/rough.py` at 256^2 (a seeded rough surface on a
+    problem of `benches/peers/rough.py` at 512^2 (a seeded rough surface on a
     periodic half-space of E* = 1, mean pressure 0.01, about a fifth in
     contact) solves to the box's pressures (within 1e-6 of the largest at
-    the default tolerance 1e-8) in fewer fine iterations (measured 21 with
-    the box, 15 with blocks of 16); blocks that do not divide a periodic
-    grid are refused, naming them."""
-    n = 256
+    the default tolerance 1e-8) in fewer fine iterations (measured 27 with
+    the box, 19 with blocks of 16, which join once the contact count has
+    settled; at 256^2 21 and 18); blocks that do not divide a periodic grid
+    are refused, naming them."""
+    n = 512
     heights = lc.rough_surface_heights(
         hurst=0.8, long_cutoff=0.25, short_cutoff=4.0 / n, seed=1, cells=n,
         spacing=1.0 / n, rms_slope=0.1)
@@ -165,6 +166,6 @@ def test_two_level_preconditioner_on_a_rough_contact():
     solver = lc.ContactSolver(body, n, n, 1.0 / n, periodic=True, coarse_blocks=16)
     two = solver.solve_force(surface, 0.01)
     assert np.max(np.abs(two.pressure - boxed.pressure)) <= 1e-6 * boxed.pressure.max()
-    assert two.iterations + 4 <= boxed.iterations
+    assert two.iterations + 5 <= boxed.iterations
     with pytest.raises(lc.InvalidInputError, match="coarse blocks"):
         lc.ContactSolver(body, n, n, 1.0 / n, periodic=True, coarse_blocks=12)
