@@ -343,7 +343,7 @@ impl ContactSolver {
         let set = attached.iter().enumerate().filter(|(_, on)| **on);
         let bounds = super::passes::bounds_of(set.map(|(c, _)| c), columns);
         let (bounds, gap_max) = self.whole_bounds(bounds, gap_max);
-        let mut rz = self.clamped_preconditioner(two_level, bounds, gap_max)?.1;
+        let mut rz = self.precondition_step(bounds, 0.0, gap_max, two_level)?.1;
         rz = self.summed(rz);
         let ws = &mut self.workspace;
         // Only the attached cells of the box's `response` are read.
@@ -387,7 +387,7 @@ impl ContactSolver {
             }
             r_norm = self.summed(r_norm);
             let gap_max = self.max_over_ranks(gap_max);
-            let rz_new = self.clamped_preconditioner(two_level, bounds, gap_max)?.1;
+            let rz_new = self.precondition_step(bounds, 0.0, gap_max, two_level)?.1;
             let rz_new = self.summed(rz_new);
             let beta = rz_new / rz;
             rz = rz_new;
@@ -403,23 +403,6 @@ impl ContactSolver {
         let ws = &mut self.workspace;
         self.operator.apply(pressure, &mut ws.displacement)?;
         Ok((iterations, r_norm.sqrt() / b_norm))
-    }
-}
-
-impl ContactSolver {
-    /// The clamped solve's preconditioned residual: as the constrained
-    /// conjugate gradients' if `two_level`, else the box's.
-    fn clamped_preconditioner(
-        &mut self,
-        two_level: bool,
-        bounds: Option<super::passes::Bounds>,
-        gap_max: f64,
-    ) -> Result<(f64, f64)> {
-        if two_level {
-            self.precondition_step(bounds, 0.0, gap_max, true)
-        } else {
-            self.precondition_working_set(bounds, 0.0, gap_max)
-        }
     }
 }
 
