@@ -71,13 +71,15 @@ pub(super) fn loosened(tolerance: f64, first_residual: f64) -> f64 {
 /// tamaas problem change their counts by less than 1e-3 a step once
 /// their change falls to the loosened tolerance: the same fine
 /// iterations, a few more coarse ones (BENCHMARKS.md, "A start level stops
-/// once its contact settles").
+/// once its contact settles"). The two-level preconditioner waits for the
+/// same settling (`balancing::QUIET_ITERATIONS`).
 pub(super) const SETTLED_COUNT_FRACTION: f64 = 1e-3;
 
 /// Whether an iteration that took a contact count from `before` (`None`
-/// for the first iteration) to `now` leaves it settled enough for a start
-/// level to stop at its loosened tolerance
-/// ([`SETTLED_COUNT_FRACTION`]).
+/// for the first iteration) to `now` leaves it settled
+/// ([`SETTLED_COUNT_FRACTION`]): enough for a start level to stop at its
+/// loosened tolerance, and (three in a row) for the two-level
+/// preconditioner to join.
 pub(super) fn count_settled(before: Option<usize>, now: usize) -> bool {
     before.is_some_and(|b| b.abs_diff(now) as f64 <= SETTLED_COUNT_FRACTION * b as f64)
 }
