@@ -6,7 +6,7 @@
 //! contact).
 //!
 //! ```text
-//! cargo run --release --example rough_benchmark -- [isolated|periodic|peers|stack|periodic-stack] [--refine] [--blocks B] N [N ...]
+//! cargo run --release --example rough_benchmark -- [isolated|periodic|peers|stack|periodic-stack] [--refine] [--box | --blocks B] N [N ...]
 //! ```
 //!
 //! `stack` presses the same surface, isolated, into a stack instead: a
@@ -23,8 +23,12 @@
 //! With `--refine` the cut-off stays at 31.25 um (16 cells of a 512 grid)
 //! whatever N: the same roughness on finer and finer grids, which shows
 //! whether the solver's iterations depend on the grid or on the surface.
-//! With `--blocks B` the solves use the two-level preconditioner over
-//! blocks of `B x B` cells (`ContactSolver::set_coarse_blocks`).
+//! The solver chooses its preconditioner itself
+//! (`ContactSolver::set_automatic_coarse_blocks`: the two-level one on
+//! rough contacts of grids of 2048^2 cells and more); `--box` keeps it to
+//! the box, `--blocks B` to the two-level preconditioner over blocks of `B
+//! x B` cells (`ContactSolver::set_coarse_blocks`). A line `# blocks`
+//! after each grid's CSV line says which blocks the solver had.
 //!
 //! Prints one CSV line per grid: N, boundary, seconds to build the solver,
 //! to synthesise the surface and to solve, iterations (and those of the
@@ -74,12 +78,18 @@ fn main() -> Result<(), layered_contact::Error> {
     if refine {
         args.next();
     }
-    // `--blocks B`: the two-level preconditioner over blocks of B cells.
-    let blocks = if args.peek().map(String::as_str) == Some("--blocks") {
-        args.next();
-        args.next().and_then(|b| b.parse::<usize>().ok())
-    } else {
-        None
+    // `--box`: the box alone; `--blocks B`: the two-level preconditioner
+    // over blocks of B cells; neither: the solver's own choice.
+    let blocks = match args.peek().map(String::as_str) {
+        Some("--box") => {
+            args.next();
+            Some(None)
+        }
+        Some("--blocks") => {
+            args.next();
+            Some(args.next().and_then(|b| b.parse::<usize>().ok()))
+        }
+        _ => None,
     };
     let sizes: Vec<usize> = args.filter_map(|a| a.parse().ok()).collect();
     // Side (m), body and nominal pressure (Pa).
@@ -124,7 +134,9 @@ fn main() -> Result<(), layered_contact::Error> {
             ..SolverParams::default()
         };
         let mut solver = ContactSolver::new(&film, &grid, boundary, params)?;
-        solver.set_coarse_blocks(blocks)?;
+        if let Some(blocks) = blocks {
+            solver.set_coarse_blocks(blocks)?;
+        }
         let build = start.elapsed().as_secs_f64();
         let start = Instant::now();
         let mut trace: Vec<(f64, usize)> = Vec::new();
@@ -145,6 +157,15 @@ fn main() -> Result<(), layered_contact::Error> {
             solution.contact_cells as f64 / grid.len() as f64,
             peak / 1048576.0,
             peak / grid.len() as f64
+        );
+        println!(
+            "# blocks {:?}{}",
+            solver.coarse_blocks(),
+            if solver.coarse_blocks_automatic() {
+                " (automatic)"
+            } else {
+                ""
+            }
         );
         if let (true, Some(p)) = (bands, &solution.pressure) {
             print_bands(p, solution.edge_contact);

@@ -173,6 +173,13 @@ impl Solution {
     }
 }
 
+/// `coarse_blocks` of `ContactSolver(...)`: a block side or `"box"`.
+#[derive(FromPyObject)]
+enum CoarseBlocks {
+    Side(usize),
+    Named(String),
+}
+
 /// The boundary-element solver on one substrate and grid: kernel and FFT
 /// plans are built once, solves reuse them (and the last solve as a warm
 /// start when asked). Solves release the GIL.
@@ -187,12 +194,15 @@ pub(crate) struct ContactSolver {
 impl ContactSolver {
     /// A solver for `substrate` on `rows x columns` square cells of side
     /// `spacing` (m), isolated (the body is infinite) or periodic;
-    /// `coarse_blocks` turns on the two-level preconditioner over blocks
-    /// of that many cells a side (the crate's
-    /// `ContactSolver::set_coarse_blocks`, which joins once the contact
+    /// `coarse_blocks` chooses the preconditioner: `None` lets each solve
+    /// choose (the crate's `ContactSolver::set_automatic_coarse_blocks`:
+    /// the two-level preconditioner over blocks of 16 cells for rough
+    /// contacts on grids of 2048^2 cells and more, else the box); a number
+    /// the two-level preconditioner over blocks of that many cells a side
+    /// (`ContactSolver::set_coarse_blocks`, which joins once the contact
     /// count has settled: rough contacts in iterations that grow like `log
     /// N`, at 0.66 to 1.09 times the box's time at 2048^2 and 4096^2 and up
-    /// to 1.36 times on smaller grids).
+    /// to 1.36 times on smaller grids); `"box"` the box alone.
     #[new]
     #[allow(clippy::too_many_arguments)] // Python keyword arguments
     #[pyo3(signature = (substrate, rows, columns, spacing, periodic=false, tolerance=1e-8, max_iterations=10_000, coarse_blocks=None))]
@@ -205,8 +215,18 @@ impl ContactSolver {
         periodic: bool,
         tolerance: f64,
         max_iterations: usize,
-        coarse_blocks: Option<usize>,
+        coarse_blocks: Option<CoarseBlocks>,
     ) -> PyResult<Self> {
+        let coarse_blocks = match coarse_blocks {
+            None => None,
+            Some(CoarseBlocks::Side(side)) => Some(Some(side)),
+            Some(CoarseBlocks::Named(name)) if name == "box" => Some(None),
+            Some(CoarseBlocks::Named(name)) => {
+                return Err(super::InvalidInputError::new_err(format!(
+                    "coarse_blocks {name:?}: expected None (the solver's choice), \"box\" or a block side in cells"
+                )))
+            }
+        };
         let grid = lc::Grid::new(rows, columns, spacing).py_err()?;
         let boundary = if periodic {
             lc::Boundary::Periodic
@@ -224,7 +244,9 @@ impl ContactSolver {
             .detach(|| {
                 let mut solver =
                     lc::solver::ContactSolver::new(&substrate, &grid, boundary, params)?;
-                solver.set_coarse_blocks(coarse_blocks)?;
+                if let Some(blocks) = coarse_blocks {
+                    solver.set_coarse_blocks(blocks)?;
+                }
                 Ok::<_, lc::Error>(solver)
             })
             .py_err()?;

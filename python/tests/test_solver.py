@@ -154,18 +154,25 @@ def test_two_level_preconditioner_on_a_rough_contact():
     contact) solves to the box's pressures (within 1e-6 of the largest at
     the default tolerance 1e-8) in fewer fine iterations (measured 27 with
     the box, 19 with blocks of 16, which join once the contact count has
-    settled; at 256^2 21 and 18); blocks that do not divide a periodic grid
-    are refused, naming them."""
+    settled; at 256^2 21 and 18); the solver's own choice (`None`, the
+    default) keeps the box below 2048^2 cells: the box's iterations exactly.
+    Blocks that do not divide a periodic grid are refused, naming them, and
+    so is a name other than "box"."""
     n = 512
     heights = lc.rough_surface_heights(
         hurst=0.8, long_cutoff=0.25, short_cutoff=4.0 / n, seed=1, cells=n,
         spacing=1.0 / n, rms_slope=0.1)
     surface = lc.Indenter.height_map(heights.max() - heights, 1.0 / n)
     body = lc.Substrate.half_space(lc.Material(1.0, 0.0))
-    boxed = lc.ContactSolver(body, n, n, 1.0 / n, periodic=True).solve_force(surface, 0.01)
+    boxed = lc.ContactSolver(body, n, n, 1.0 / n, periodic=True, coarse_blocks="box").solve_force(
+        surface, 0.01)
+    chosen = lc.ContactSolver(body, n, n, 1.0 / n, periodic=True).solve_force(surface, 0.01)
     solver = lc.ContactSolver(body, n, n, 1.0 / n, periodic=True, coarse_blocks=16)
     two = solver.solve_force(surface, 0.01)
     assert np.max(np.abs(two.pressure - boxed.pressure)) <= 1e-6 * boxed.pressure.max()
     assert two.iterations + 5 <= boxed.iterations
+    assert chosen.iterations == boxed.iterations
     with pytest.raises(lc.InvalidInputError, match="coarse blocks"):
         lc.ContactSolver(body, n, n, 1.0 / n, periodic=True, coarse_blocks=12)
+    with pytest.raises(lc.InvalidInputError, match="coarse_blocks"):
+        lc.ContactSolver(body, n, n, 1.0 / n, periodic=True, coarse_blocks="boxes")

@@ -290,13 +290,17 @@
 //! applications of the compliance and two solves on the grid of blocks an
 //! iteration. It joins once the contact count has settled (built over a
 //! working set that still has cells to shed, it spreads pressure over
-//! them). It is not the default: on the grids of this machine it takes
-//! 0.66 to 1.09 times the box's time at 2048^2 and 4096^2 on the rough
-//! films, a periodic half-space and a coating over a soft base, and up to
-//! 1.36 times on smaller grids (`BENCHMARKS.md`, "A two-level
-//! preconditioner for rough contacts" and "The coarse correction once the
-//! contact settles", have the counts, times and memory from 512^2 to
-//! 8192^2).
+//! them). The solver takes it by itself where it pays
+//! ([`ContactSolver::set_automatic_coarse_blocks`](crate::solver::ContactSolver::set_automatic_coarse_blocks),
+//! the default): for a contact of more than 256 patches on a grid of at
+//! least 2048^2 cells, where on the rough films, a periodic half-space and
+//! a coating over a soft base it took 0.73 to 0.94 times the box's time
+//! (the isolated film at 2048^2 1.13); on smaller grids, where it cost up
+//! to 1.36 times, and for contacts of few patches, the box
+//! (`BENCHMARKS.md`, "A two-level preconditioner for rough contacts", "The
+//! coarse correction once the contact settles" and "The solver's own
+//! choice of preconditioner", have the counts, times and memory from 512^2
+//! to 8192^2).
 //!
 //! ### Rough contacts: the contact area and the kernel
 //!

@@ -57,6 +57,16 @@
 //! each rank holds only its columns, so split solvers build theirs from
 //! the substrate on each coarse grid; both converge to the same contact.
 //!
+//! Split solvers keep the box preconditioner: the two-level one
+//! ([`ContactSolver::set_coarse_blocks`](crate::solver::ContactSolver::set_coarse_blocks))
+//! builds its coarse space on one process. A serial solver takes it by
+//! itself for a rough contact on a grid of at least
+//! [`AUTOMATIC_BLOCKS_CELLS`](crate::solver::AUTOMATIC_BLOCKS_CELLS) cells
+//! (2048^2; [`ContactSolver::set_automatic_coarse_blocks`](crate::solver::ContactSolver::set_automatic_coarse_blocks)):
+//! there the serial and the split solutions agree to the solver's
+//! tolerance, not to rounding, unless the serial solver is set to the box
+//! (`set_coarse_blocks(None)`). The tests' grids lie below it.
+//!
 //! Split solvers run the active-set loops of a solve that finds its set
 //! slowly ([`solver`](crate::solver), `src/solver/active_set.rs`) as
 //! serial ones do. The test's fifth case is such a contact: a sphere on a

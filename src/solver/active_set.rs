@@ -207,7 +207,10 @@ impl ContactSolver {
         }
         let left = budget - *spent;
         let saved = std::mem::replace(&mut self.params.max_iterations, left);
-        let solved = self.clamped_cg_with(member, target, x, true);
+        // The two-level preconditioner if it was set; not the automatic
+        // choice's (the loops run on contacts of few patches).
+        let two_level = !self.coarse_automatic;
+        let solved = self.clamped_cg_with(member, target, x, two_level);
         self.params.max_iterations = saved;
         match solved {
             Ok((iterations, _)) => {

@@ -1,5 +1,7 @@
 //! The two-level balancing preconditioner of the constrained conjugate
-//! gradients (opt-in: [`ContactSolver::set_coarse_blocks`]): the box
+//! gradients (chosen by each fine solve of a rough contact on a large grid,
+//! [`ContactSolver::set_automatic_coarse_blocks`], or set by
+//! [`ContactSolver::set_coarse_blocks`]): the box
 //! inverse `B` ([`preconditioning`](super::preconditioning)) inside a
 //! coarse correction over the working set's cells of `b x b` blocks
 //! (Mandel 1993, Commun. Numer. Meth. Eng. 9, 233-241):
@@ -61,13 +63,27 @@ pub(super) struct Balancing {
 /// correction once the contact settles").
 pub(super) const QUIET_ITERATIONS: usize = 3;
 
+/// The automatic choice ([`ContactSolver::set_automatic_coarse_blocks`])
+/// takes the two-level preconditioner on grids of at least this many cells
+/// (2048^2). Below, the blocks cost more than they save on some rough
+/// contacts: 0.80 to 1.36 times the box's time at 512^2 and 1024^2 on the
+/// five rough problems of `examples/rough_benchmark.rs`, against 0.66 to
+/// 1.09 at 2048^2 and 0.66 to 0.88 at 4096^2 (BENCHMARKS.md, "The coarse
+/// correction once the contact settles").
+pub const AUTOMATIC_BLOCKS_CELLS: usize = 2048 * 2048;
+
+/// The block side the automatic choice takes (cells a side), the side of
+/// every measurement of `BENCHMARKS.md`'s two-level sections.
+pub const AUTOMATIC_BLOCK_SIDE: usize = 16;
+
 impl ContactSolver {
     /// Precondition the non-adhesive solves' constrained conjugate
     /// gradients (and their active-set loops) with a two-level balancing
     /// preconditioner over blocks of `blocks x blocks` cells (`None`: the
-    /// box inverse alone, the default), which joins once three iterations
-    /// in a row have changed the contact count by at most a thousandth (the
-    /// box alone before). On rough
+    /// box inverse alone), which joins once three iterations in a row have
+    /// changed the contact count by at most a thousandth (the box alone
+    /// before). Either way the solver no longer chooses for itself (the
+    /// default, [`ContactSolver::set_automatic_coarse_blocks`]). On rough
     /// contacts the iterations then grow like `log N` instead of by a
     /// quarter to a third each doubling of the grid, but each costs 1.5 to
     /// 2 times as much (two more applications of the compliance and two
@@ -112,8 +128,53 @@ impl ContactSolver {
     pub fn set_coarse_blocks(&mut self, blocks: Option<usize>) -> Result<()> {
         let Some(side) = blocks else {
             self.balancing = None;
+            self.coarse_automatic = false;
             return Ok(());
         };
+        self.build_blocks(side)?;
+        self.coarse_automatic = false;
+        Ok(())
+    }
+
+    /// Let each fine solve choose its preconditioner (the default): the
+    /// two-level one over blocks of [`AUTOMATIC_BLOCK_SIDE`] cells on a grid
+    /// of at least [`AUTOMATIC_BLOCKS_CELLS`] cells (built on first use and
+    /// kept), once three iterations in a row have changed the contact count
+    /// by at most a thousandth, and then only if the contact has more
+    /// than 256 patches (a rough contact: a Hertzian or flat punch's
+    /// contact, one patch, gains nothing from the blocks); the box
+    /// otherwise, on a periodic grid whose sides the block side does not
+    /// divide, on a solver split across MPI ranks, in adhesive solves and
+    /// on the coarse levels of the multi-resolution start. Undoes
+    /// [`ContactSolver::set_coarse_blocks`].
+    ///
+    /// ```
+    /// use layered_contact::solver::{ContactSolver, SolverParams};
+    /// use layered_contact::{Boundary, Grid, Material, Substrate};
+    ///
+    /// let body = Substrate::half_space(Material::new(1.0, 0.0)?);
+    /// let grid = Grid::square_of_side(64, 1.0)?;
+    /// let mut solver = ContactSolver::new(&body, &grid, Boundary::Periodic, SolverParams::default())?;
+    /// assert!(solver.coarse_blocks_automatic());
+    /// solver.set_coarse_blocks(Some(16))?;
+    /// assert!(!solver.coarse_blocks_automatic());
+    /// solver.set_automatic_coarse_blocks();
+    /// assert!(solver.coarse_blocks_automatic() && solver.coarse_blocks().is_none());
+    /// Ok::<(), layered_contact::Error>(())
+    /// ```
+    pub fn set_automatic_coarse_blocks(&mut self) {
+        self.balancing = None;
+        self.coarse_automatic = true;
+    }
+
+    /// Whether the solves choose their preconditioner themselves
+    /// ([`ContactSolver::set_automatic_coarse_blocks`], the default).
+    pub fn coarse_blocks_automatic(&self) -> bool {
+        self.coarse_automatic
+    }
+
+    /// The two-level preconditioner over blocks of `side` cells, built.
+    fn build_blocks(&mut self, side: usize) -> Result<()> {
         if self.is_split() {
             return Err(Error::Unsupported {
                 feature: "the two-level preconditioner on a solver split across MPI ranks",
@@ -178,18 +239,65 @@ impl ContactSolver {
     }
 
     /// The block side of the two-level preconditioner, if it is on
-    /// ([`ContactSolver::set_coarse_blocks`]).
+    /// ([`ContactSolver::set_coarse_blocks`]) or the automatic choice has
+    /// built it ([`ContactSolver::set_automatic_coarse_blocks`]).
     pub fn coarse_blocks(&self) -> Option<usize> {
         self.balancing.as_ref().map(|b| b.space.side())
     }
 
     /// Whether the constrained conjugate gradients' next iteration takes
-    /// the two-level preconditioner: it is on, and each of the last
-    /// [`QUIET_ITERATIONS`] iterations (`quiet`, how many in a row did)
-    /// changed the contact count by at most [`SETTLED_COUNT_FRACTION`] of
-    /// it ([`count_settled`]); while the set still moves, the box alone.
-    pub(super) fn coarse_correction_now(&self, quiet: usize) -> bool {
-        self.balancing.is_some() && quiet >= QUIET_ITERATIONS
+    /// the two-level preconditioner: each of the last [`QUIET_ITERATIONS`]
+    /// iterations (`quiet`, how many in a row did) changed the contact
+    /// count by at most [`SETTLED_COUNT_FRACTION`] of it
+    /// ([`count_settled`]), and the preconditioner is on or, chosen
+    /// automatically, the solve wants it (`wanted`, decided on the first
+    /// such iteration from the contact where `pressure` is positive:
+    /// [`ContactSolver::set_automatic_coarse_blocks`]); while the set still
+    /// moves, the box alone.
+    pub(super) fn coarse_correction_now(
+        &mut self,
+        quiet: usize,
+        wanted: &mut Option<bool>,
+        pressure: &[f64],
+    ) -> Result<bool> {
+        if quiet < QUIET_ITERATIONS {
+            return Ok(false);
+        }
+        if let Some(wanted) = *wanted {
+            return Ok(wanted);
+        }
+        let decided = if self.coarse_automatic {
+            self.automatic_blocks(pressure)?
+        } else {
+            self.balancing.is_some()
+        };
+        *wanted = Some(decided);
+        Ok(decided)
+    }
+
+    /// The automatic choice for a fine, non-adhesive solve whose contact is
+    /// where `pressure` is positive: the blocks (built if they are not) on
+    /// a large enough grid and a contact of many patches.
+    fn automatic_blocks(&mut self, pressure: &[f64]) -> Result<bool> {
+        let grid = *self.grid();
+        let (rows, columns) = (grid.rows(), grid.columns());
+        let side = AUTOMATIC_BLOCK_SIDE;
+        let periodic = self.operator.boundary() == Boundary::Periodic;
+        let fits = rows * columns >= AUTOMATIC_BLOCKS_CELLS
+            && rows.min(columns) >= 4 * side
+            && !(periodic && (rows % side != 0 || columns % side != 0));
+        let eligible = fits
+            && !self.is_split()
+            && !self.start_level
+            && !self.double_preconditioner
+            && self.params.precondition;
+        if !eligible || self.few_patches(pressure) {
+            return Ok(false);
+        }
+        if self.balancing.is_none() {
+            self.build_blocks(side)?;
+        }
+        Ok(true)
     }
 
     /// The constrained conjugate gradients' preconditioned residual: the

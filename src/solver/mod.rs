@@ -40,10 +40,12 @@
 //! scheme). [`SolverParams::precondition`] and
 //! [`SolverParams::multiresolution`] turn either off. On rough contacts,
 //! whose box-preconditioned count grows with every doubling of the grid,
-//! [`ContactSolver::set_coarse_blocks`] adds a coarse correction over
-//! blocks of cells (two-level balancing, Mandel 1993) once the contact
-//! set has settled, whose count grows like `log N`, at 1.5 to 2 times the
-//! cost an iteration.
+//! a coarse correction over blocks of cells (two-level balancing, Mandel
+//! 1993) joins once the contact set has settled, whose count grows like
+//! `log N`, at 1.5 to 2 times the cost an iteration: by itself on grids of
+//! at least [`AUTOMATIC_BLOCKS_CELLS`] cells for contacts of many patches
+//! ([`ContactSolver::set_automatic_coarse_blocks`], the default), or as
+//! [`ContactSolver::set_coarse_blocks`] sets it.
 //!
 //! Each solve may start from the [`WarmStart`] of the previous one. For
 //! non-adhesive contact that only saves work (on the Hertz benchmark at
@@ -99,6 +101,7 @@ use preconditioning::Preconditioner;
 
 use workspace::Workspace;
 
+pub use balancing::{AUTOMATIC_BLOCKS_CELLS, AUTOMATIC_BLOCK_SIDE};
 pub use cohesive_area::EQUIVALENT_TIP;
 pub use cohesive_law::{
     CohesiveZone, COHESIVE_ZONE_CELLS, CURVATURE_CORRECTION, ZONE_LAYER_FRACTION,
@@ -174,8 +177,14 @@ pub struct ContactSolver {
     /// in).
     start_level: bool,
     /// The two-level preconditioner, if it is on
-    /// ([`ContactSolver::set_coarse_blocks`]).
+    /// ([`ContactSolver::set_coarse_blocks`]) or the automatic choice built
+    /// it.
     balancing: Option<Box<balancing::Balancing>>,
+    /// Whether each fine solve chooses between the box and the two-level
+    /// preconditioner itself (the default;
+    /// [`ContactSolver::set_automatic_coarse_blocks`]) rather than as
+    /// [`ContactSolver::set_coarse_blocks`] set it.
+    coarse_automatic: bool,
 }
 
 /// A check that a long computation should stop (Ctrl-C), asked after every
@@ -255,6 +264,7 @@ impl ContactSolver {
             interrupt: None,
             start_level: false,
             balancing: None,
+            coarse_automatic: true,
         })
     }
 

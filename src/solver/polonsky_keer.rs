@@ -271,6 +271,9 @@ impl ContactSolver {
         // coarse correction.
         let mut quiet = 0;
         let mut coarse_last = false;
+        // Whether this solve takes the coarse correction once the count
+        // settles (decided then: [`ContactSolver::coarse_correction_now`]).
+        let mut coarse_wanted = None;
         let mut rz_old = 0.0;
         self.workspace.direction.fill(0.0);
         let mut depth = match control {
@@ -474,7 +477,7 @@ impl ContactSolver {
             // The coarse correction only while the contact count stands
             // ([`ContactSolver::coarse_correction_now`]); a change of
             // preconditioner restarts the conjugation.
-            let coarse = self.coarse_correction_now(quiet);
+            let coarse = self.coarse_correction_now(quiet, &mut coarse_wanted, &pressure)?;
             if coarse != coarse_last {
                 rz_old = 0.0;
             }

@@ -1,6 +1,6 @@
 """Type stubs of the compiled extension (see the Rust sources in python/rust/lib.rs)."""
 
-from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, final
+from typing import Any, Callable, Dict, List, Literal, Optional, Sequence, Tuple, final
 
 from typing_extensions import Self
 
@@ -165,7 +165,7 @@ class ContactSolver:
         periodic: bool = False,
         tolerance: float = 1e-8,
         max_iterations: int = 10000,
-        coarse_blocks: Optional[int] = None,
+        coarse_blocks: int | Literal["box"] | None = None,
     ) -> Self: ...
     def solve_depth(self, indenter: Indenter, depth: float, warm_start: bool = False) -> Solution: ...
     def solve_force(self, indenter: Indenter, force: float, warm_start: bool = False) -> Solution: ...

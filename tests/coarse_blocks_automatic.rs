@@ -1,0 +1,109 @@
+//! The solver's own choice of preconditioner
+//! (`ContactSolver::set_automatic_coarse_blocks`, the default): the
+//! two-level preconditioner over blocks of 16 cells for a rough contact on
+//! a grid of at least 2048^2 cells, the box for a contact of one patch and
+//! on smaller grids.
+
+use layered_contact::indenter::Sphere;
+use layered_contact::solver::{
+    ContactSolver, SolverParams, AUTOMATIC_BLOCKS_CELLS, AUTOMATIC_BLOCK_SIDE,
+};
+use layered_contact::topography::{Amplitude, SelfAffine};
+use layered_contact::{Boundary, Grid, Material, Substrate};
+
+/// The problem of `benches/peers/rough.py` on `n x n` cells: the seeded
+/// surface (Hurst 0.8, rms slope 0.1, roll-off at a quarter of the side,
+/// cut-off at four cells) on a periodic half-space of `E* = 1` over a unit
+/// square, solved at a mean pressure of `0.01`, tolerance 1e-8, with the
+/// preconditioner `blocks` sets (`None`: the solver's choice). The solution
+/// and the blocks the solver had.
+fn peers_problem(
+    n: usize,
+    blocks: Option<Option<usize>>,
+) -> (layered_contact::solver::Solution, Option<usize>) {
+    let body = Substrate::half_space(Material::new(1.0, 0.0).unwrap());
+    let grid = Grid::square_of_side(n, 1.0).unwrap();
+    let indenter = SelfAffine {
+        hurst: 0.8,
+        amplitude: Amplitude::RmsSlope(0.1),
+        long_cutoff: 0.25,
+        short_cutoff: 4.0 / n as f64,
+        seed: 1,
+    }
+    .indenter(&grid)
+    .unwrap();
+    let params = SolverParams {
+        tolerance: 1e-8,
+        ..SolverParams::default()
+    };
+    let mut solver = ContactSolver::new(&body, &grid, Boundary::Periodic, params).unwrap();
+    if let Some(blocks) = blocks {
+        solver.set_coarse_blocks(blocks).unwrap();
+    }
+    let (solution, _) = solver.solve_force(&indenter, 0.01, None, &mut ()).unwrap();
+    (solution, solver.coarse_blocks())
+}
+
+/// At 2048^2 (the smallest grid of the automatic choice) the rough contact
+/// (thousands of patches) takes the blocks: measured 28 fine iterations
+/// against the box's 44 (`rough_benchmark peers 2048`, BENCHMARKS.md, "The
+/// solver's own choice of preconditioner"); the bound, 10 fewer, fails if
+/// the choice keeps the box. The same solution: the same contact cells and
+/// depths within 1e-8 (each solve's tolerance bounds its pressures' last
+/// change, not their error; the blocks' solution at 1024^2 and below lies
+/// within 1e-10 of the box's in `tests/rough_solve.rs`).
+#[test]
+fn rough_contact_on_a_large_grid_takes_the_blocks() {
+    assert_eq!(AUTOMATIC_BLOCKS_CELLS, 2048 * 2048);
+    let (chosen, blocks) = peers_problem(2048, None);
+    assert_eq!(blocks, Some(AUTOMATIC_BLOCK_SIDE));
+    let (boxed, none) = peers_problem(2048, Some(None));
+    assert_eq!(none, None);
+    assert!(
+        chosen.iterations + 10 <= boxed.iterations,
+        "{} against the box's {}",
+        chosen.iterations,
+        boxed.iterations
+    );
+    assert_eq!(chosen.contact_cells, boxed.contact_cells);
+    assert!(
+        (chosen.depth / boxed.depth - 1.0).abs() < 1e-8,
+        "{} {}",
+        chosen.depth,
+        boxed.depth
+    );
+}
+
+/// Below 2048^2 the solver keeps the box: the same rough problem at 1024^2
+/// takes the box's iterations exactly (measured 35) and builds no blocks.
+#[test]
+fn rough_contact_on_a_smaller_grid_keeps_the_box() {
+    let (chosen, blocks) = peers_problem(1024, None);
+    assert_eq!(blocks, None);
+    let (boxed, _) = peers_problem(1024, Some(None));
+    assert_eq!(chosen.iterations, boxed.iterations);
+    assert_eq!(chosen.depth.to_bits(), boxed.depth.to_bits());
+}
+
+/// A contact of one patch keeps the box on a large grid: a sphere (R = 10
+/// mm) pressed 2 um into a rubber half-space on 2048 x 2048 cells of 1 um,
+/// isolated (a contact about 280 cells across), builds no blocks and
+/// takes the box's iterations exactly.
+#[test]
+fn one_patch_on_a_large_grid_keeps_the_box() {
+    let body = Substrate::half_space(Material::new(1e6, 0.5).unwrap());
+    let grid = Grid::new(2048, 2048, 1e-6).unwrap();
+    let sphere = Sphere::new(1e-2).unwrap();
+    let mut iterations = Vec::new();
+    for set in [false, true] {
+        let mut solver =
+            ContactSolver::new(&body, &grid, Boundary::Isolated, SolverParams::default()).unwrap();
+        if set {
+            solver.set_coarse_blocks(None).unwrap();
+        }
+        let (solution, _) = solver.solve_depth(&sphere, 2e-6, None, &mut ()).unwrap();
+        assert_eq!(solver.coarse_blocks(), None);
+        iterations.push((solution.iterations, solution.force.to_bits()));
+    }
+    assert_eq!(iterations[0], iterations[1]);
+}
