@@ -1,6 +1,6 @@
 //! The two-level balancing preconditioner of the constrained conjugate
 //! gradients (chosen by each fine solve of a rough contact on a large grid,
-//! [`ContactSolver::set_automatic_coarse_blocks`], or set by
+//! [`coarse_choice`](super::coarse_choice), or set by
 //! [`ContactSolver::set_coarse_blocks`]): the box
 //! inverse `B` ([`preconditioning`](super::preconditioning)) inside a
 //! coarse correction over the working set's cells of `b x b` blocks
@@ -28,8 +28,6 @@ use crate::error::{Error, Result};
 use crate::grid::Boundary;
 
 use super::coarse_space::CoarseSpace;
-#[cfg(doc)]
-use super::multiresolution::{count_settled, SETTLED_COUNT_FRACTION};
 use super::passes::Bounds;
 use super::ContactSolver;
 
@@ -47,7 +45,7 @@ pub(super) struct Balancing {
 
 /// The two-level preconditioner joins the constrained conjugate gradients
 /// once this many iterations in a row have left the contact count settled
-/// ([`ContactSolver::coarse_correction_now`]). Its coarse correction,
+/// ([`coarse_choice`](super::coarse_choice)). Its coarse correction,
 /// built over the working set's cells, equilibrates the set it is given:
 /// on a set that still has to shed cells it spreads pressure over them
 /// instead. On the coated stack of `examples/rough_benchmark.rs` (a stiff
@@ -62,19 +60,6 @@ pub(super) struct Balancing {
 /// iterations of the blocks taken throughout (BENCHMARKS.md, "The coarse
 /// correction once the contact settles").
 pub(super) const QUIET_ITERATIONS: usize = 3;
-
-/// The automatic choice ([`ContactSolver::set_automatic_coarse_blocks`])
-/// takes the two-level preconditioner on grids of at least this many cells
-/// (2048^2). Below, the blocks cost more than they save on some rough
-/// contacts: 0.80 to 1.36 times the box's time at 512^2 and 1024^2 on the
-/// five rough problems of `examples/rough_benchmark.rs`, against 0.66 to
-/// 1.09 at 2048^2 and 0.66 to 0.88 at 4096^2 (BENCHMARKS.md, "The coarse
-/// correction once the contact settles").
-pub const AUTOMATIC_BLOCKS_CELLS: usize = 2048 * 2048;
-
-/// The block side the automatic choice takes (cells a side), the side of
-/// every measurement of `BENCHMARKS.md`'s two-level sections.
-pub const AUTOMATIC_BLOCK_SIDE: usize = 16;
 
 impl ContactSolver {
     /// Precondition the non-adhesive solves' constrained conjugate
@@ -136,45 +121,8 @@ impl ContactSolver {
         Ok(())
     }
 
-    /// Let each fine solve choose its preconditioner (the default): the
-    /// two-level one over blocks of [`AUTOMATIC_BLOCK_SIDE`] cells on a grid
-    /// of at least [`AUTOMATIC_BLOCKS_CELLS`] cells (built on first use and
-    /// kept), once three iterations in a row have changed the contact count
-    /// by at most a thousandth, and then only if the contact has more
-    /// than 256 patches (a rough contact: a Hertzian or flat punch's
-    /// contact, one patch, gains nothing from the blocks); the box
-    /// otherwise, on a periodic grid whose sides the block side does not
-    /// divide, on a solver split across MPI ranks, in adhesive solves and
-    /// on the coarse levels of the multi-resolution start. Undoes
-    /// [`ContactSolver::set_coarse_blocks`].
-    ///
-    /// ```
-    /// use layered_contact::solver::{ContactSolver, SolverParams};
-    /// use layered_contact::{Boundary, Grid, Material, Substrate};
-    ///
-    /// let body = Substrate::half_space(Material::new(1.0, 0.0)?);
-    /// let grid = Grid::square_of_side(64, 1.0)?;
-    /// let mut solver = ContactSolver::new(&body, &grid, Boundary::Periodic, SolverParams::default())?;
-    /// assert!(solver.coarse_blocks_automatic());
-    /// solver.set_coarse_blocks(Some(16))?;
-    /// assert!(!solver.coarse_blocks_automatic());
-    /// solver.set_automatic_coarse_blocks();
-    /// assert!(solver.coarse_blocks_automatic() && solver.coarse_blocks().is_none());
-    /// Ok::<(), layered_contact::Error>(())
-    /// ```
-    pub fn set_automatic_coarse_blocks(&mut self) {
-        self.balancing = None;
-        self.coarse_automatic = true;
-    }
-
-    /// Whether the solves choose their preconditioner themselves
-    /// ([`ContactSolver::set_automatic_coarse_blocks`], the default).
-    pub fn coarse_blocks_automatic(&self) -> bool {
-        self.coarse_automatic
-    }
-
     /// The two-level preconditioner over blocks of `side` cells, built.
-    fn build_blocks(&mut self, side: usize) -> Result<()> {
+    pub(super) fn build_blocks(&mut self, side: usize) -> Result<()> {
         if self.is_split() {
             return Err(Error::Unsupported {
                 feature: "the two-level preconditioner on a solver split across MPI ranks",
@@ -243,61 +191,6 @@ impl ContactSolver {
     /// built it ([`ContactSolver::set_automatic_coarse_blocks`]).
     pub fn coarse_blocks(&self) -> Option<usize> {
         self.balancing.as_ref().map(|b| b.space.side())
-    }
-
-    /// Whether the constrained conjugate gradients' next iteration takes
-    /// the two-level preconditioner: each of the last [`QUIET_ITERATIONS`]
-    /// iterations (`quiet`, how many in a row did) changed the contact
-    /// count by at most [`SETTLED_COUNT_FRACTION`] of it
-    /// ([`count_settled`]), and the preconditioner is on or, chosen
-    /// automatically, the solve wants it (`wanted`, decided on the first
-    /// such iteration from the contact where `pressure` is positive:
-    /// [`ContactSolver::set_automatic_coarse_blocks`]); while the set still
-    /// moves, the box alone.
-    pub(super) fn coarse_correction_now(
-        &mut self,
-        quiet: usize,
-        wanted: &mut Option<bool>,
-        pressure: &[f64],
-    ) -> Result<bool> {
-        if quiet < QUIET_ITERATIONS {
-            return Ok(false);
-        }
-        if let Some(wanted) = *wanted {
-            return Ok(wanted);
-        }
-        let decided = if self.coarse_automatic {
-            self.automatic_blocks(pressure)?
-        } else {
-            self.balancing.is_some()
-        };
-        *wanted = Some(decided);
-        Ok(decided)
-    }
-
-    /// The automatic choice for a fine, non-adhesive solve whose contact is
-    /// where `pressure` is positive: the blocks (built if they are not) on
-    /// a large enough grid and a contact of many patches.
-    fn automatic_blocks(&mut self, pressure: &[f64]) -> Result<bool> {
-        let grid = *self.grid();
-        let (rows, columns) = (grid.rows(), grid.columns());
-        let side = AUTOMATIC_BLOCK_SIDE;
-        let periodic = self.operator.boundary() == Boundary::Periodic;
-        let fits = rows * columns >= AUTOMATIC_BLOCKS_CELLS
-            && rows.min(columns) >= 4 * side
-            && !(periodic && (rows % side != 0 || columns % side != 0));
-        let eligible = fits
-            && !self.is_split()
-            && !self.start_level
-            && !self.double_preconditioner
-            && self.params.precondition;
-        if !eligible || self.few_patches(pressure) {
-            return Ok(false);
-        }
-        if self.balancing.is_none() {
-            self.build_blocks(side)?;
-        }
-        Ok(true)
     }
 
     /// The constrained conjugate gradients' preconditioned residual: the

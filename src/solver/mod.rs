@@ -66,6 +66,7 @@ mod adhesive;
 mod anderson;
 mod balancing;
 mod cg_ends;
+mod coarse_choice;
 mod coarse_space;
 mod cohesive;
 mod cohesive_area;
@@ -101,7 +102,7 @@ use preconditioning::Preconditioner;
 
 use workspace::Workspace;
 
-pub use balancing::{AUTOMATIC_BLOCKS_CELLS, AUTOMATIC_BLOCK_SIDE};
+pub use coarse_choice::{AUTOMATIC_BLOCKS_BOX_RATE, AUTOMATIC_BLOCKS_CELLS, AUTOMATIC_BLOCK_SIDE};
 pub use cohesive_area::EQUIVALENT_TIP;
 pub use cohesive_law::{
     CohesiveZone, COHESIVE_ZONE_CELLS, CURVATURE_CORRECTION, ZONE_LAYER_FRACTION,

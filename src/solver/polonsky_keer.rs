@@ -272,8 +272,11 @@ impl ContactSolver {
         let mut quiet = 0;
         let mut coarse_last = false;
         // Whether this solve takes the coarse correction once the count
-        // settles (decided then: [`ContactSolver::coarse_correction_now`]).
+        // settles (decided then: [`ContactSolver::coarse_correction_now`]),
+        // and the residual when the count last moved (the box's rate since
+        // tells whether the correction can gain).
         let mut coarse_wanted = None;
+        let mut moved_residual = f64::INFINITY;
         let mut rz_old = 0.0;
         self.workspace.direction.fill(0.0);
         let mut depth = match control {
@@ -477,7 +480,9 @@ impl ContactSolver {
             // The coarse correction only while the contact count stands
             // ([`ContactSolver::coarse_correction_now`]); a change of
             // preconditioner restarts the conjugation.
-            let coarse = self.coarse_correction_now(quiet, &mut coarse_wanted, &pressure)?;
+            let box_rate = (residual / moved_residual).powf(1.0 / quiet.max(1) as f64);
+            let coarse =
+                self.coarse_correction_now(quiet, &mut coarse_wanted, &pressure, box_rate)?;
             if coarse != coarse_last {
                 rz_old = 0.0;
             }
@@ -670,6 +675,9 @@ impl ContactSolver {
             });
             let settled = count_settled(last_contact, stats.contact);
             quiet = if settled { quiet + 1 } else { 0 };
+            if !settled {
+                moved_residual = residual;
+            }
             last_contact = Some(stats.contact);
             // A fine solve stops only once no cell overlaps; a start level
             // may stop with overlap left (`ContactSolver::start_level`),

@@ -1,0 +1,189 @@
+//! When a fine solve takes the two-level preconditioner
+//! ([`balancing`](super::balancing)): as [`ContactSolver::set_coarse_blocks`]
+//! set it, or by itself ([`ContactSolver::set_automatic_coarse_blocks`],
+//! the default) on a large grid, once the contact count has settled, if
+//! the box converges slowly there and the contact has many patches: a
+//! rough contact (`BENCHMARKS.md`, "The solver's own choice of
+//! preconditioner").
+
+use crate::error::Result;
+use crate::grid::Boundary;
+
+use super::balancing::QUIET_ITERATIONS;
+#[cfg(doc)]
+use super::multiresolution::{count_settled, SETTLED_COUNT_FRACTION};
+use super::ContactSolver;
+
+/// The automatic choice ([`ContactSolver::set_automatic_coarse_blocks`])
+/// takes the two-level preconditioner on grids of at least this many cells
+/// (2048^2). Below, the blocks cost more than they save on some rough
+/// contacts: 0.80 to 1.36 times the box's time at 512^2 and 1024^2 on the
+/// five rough problems of `examples/rough_benchmark.rs`, against 0.66 to
+/// 1.09 at 2048^2 and 0.66 to 0.88 at 4096^2 (BENCHMARKS.md, "The coarse
+/// correction once the contact settles").
+pub const AUTOMATIC_BLOCKS_CELLS: usize = 2048 * 2048;
+
+/// The automatic choice keeps the box if the box's mean factor an
+/// iteration (the residual over the one before) over the iterations in
+/// which the contact count settled lies below this: the blocks' own factor,
+/// once a rough contact's count has settled, was 0.19 to 0.36 in every
+/// run of `BENCHMARKS.md`'s two-level sections, so a box that converges
+/// faster leaves them nothing to gain. On the rough problems of
+/// `examples/rough_benchmark.rs` at 2048^2 the box's factor there was 0.53
+/// to 0.88; on a periodic two-way sinusoid of 32 waves a side on 2048^2
+/// cells (1024 equal patches) 0.12, where the blocks took 11 fine
+/// iterations against the box's 10 and 1.1 to 1.3 times its time
+/// (BENCHMARKS.md, "The solver's own choice of preconditioner").
+pub const AUTOMATIC_BLOCKS_BOX_RATE: f64 = 0.3;
+
+/// The block side the automatic choice takes (cells a side), the side of
+/// every measurement of `BENCHMARKS.md`'s two-level sections.
+pub const AUTOMATIC_BLOCK_SIDE: usize = 16;
+
+impl ContactSolver {
+    /// Let each fine solve choose its preconditioner (the default): the
+    /// two-level one over blocks of [`AUTOMATIC_BLOCK_SIDE`] cells on a grid
+    /// of at least [`AUTOMATIC_BLOCKS_CELLS`] cells (built on first use and
+    /// kept), once three iterations in a row have changed the contact count
+    /// by at most a thousandth, and then only if over those three the box's
+    /// residual shrank by a mean factor of at least
+    /// [`AUTOMATIC_BLOCKS_BOX_RATE`] an iteration (a box that converges
+    /// faster leaves the blocks nothing to gain: a periodic sinusoid's many
+    /// equal patches) and the contact has more
+    /// than 256 patches (a rough contact: a Hertzian or flat punch's
+    /// contact, one patch, gains nothing from the blocks); the box
+    /// otherwise, on a periodic grid whose sides the block side does not
+    /// divide, on a solver split across MPI ranks, in adhesive solves and
+    /// on the coarse levels of the multi-resolution start. Undoes
+    /// [`ContactSolver::set_coarse_blocks`].
+    ///
+    /// ```
+    /// use layered_contact::solver::{ContactSolver, SolverParams};
+    /// use layered_contact::{Boundary, Grid, Material, Substrate};
+    ///
+    /// let body = Substrate::half_space(Material::new(1.0, 0.0)?);
+    /// let grid = Grid::square_of_side(64, 1.0)?;
+    /// let mut solver = ContactSolver::new(&body, &grid, Boundary::Periodic, SolverParams::default())?;
+    /// assert!(solver.coarse_blocks_automatic());
+    /// solver.set_coarse_blocks(Some(16))?;
+    /// assert!(!solver.coarse_blocks_automatic());
+    /// solver.set_automatic_coarse_blocks();
+    /// assert!(solver.coarse_blocks_automatic() && solver.coarse_blocks().is_none());
+    /// Ok::<(), layered_contact::Error>(())
+    /// ```
+    pub fn set_automatic_coarse_blocks(&mut self) {
+        self.balancing = None;
+        self.coarse_automatic = true;
+    }
+
+    /// Whether the solves choose their preconditioner themselves
+    /// ([`ContactSolver::set_automatic_coarse_blocks`], the default).
+    pub fn coarse_blocks_automatic(&self) -> bool {
+        self.coarse_automatic
+    }
+
+    /// Whether the constrained conjugate gradients' next iteration takes
+    /// the two-level preconditioner: each of the last [`QUIET_ITERATIONS`]
+    /// iterations (`quiet`, how many in a row did) changed the contact
+    /// count by at most [`SETTLED_COUNT_FRACTION`] of it
+    /// ([`count_settled`]), and the preconditioner is on or, chosen
+    /// automatically, the solve wants it (`wanted`, decided on the first
+    /// such iteration from the contact where `pressure` is positive and
+    /// the box's mean factor `box_rate` over the quiet iterations:
+    /// [`ContactSolver::set_automatic_coarse_blocks`]); while the set still
+    /// moves, the box alone.
+    pub(super) fn coarse_correction_now(
+        &mut self,
+        quiet: usize,
+        wanted: &mut Option<bool>,
+        pressure: &[f64],
+        box_rate: f64,
+    ) -> Result<bool> {
+        if quiet < QUIET_ITERATIONS {
+            return Ok(false);
+        }
+        if let Some(wanted) = *wanted {
+            return Ok(wanted);
+        }
+        let decided = if self.coarse_automatic {
+            // A rate that is not a number (no residual yet) keeps the box.
+            box_rate >= AUTOMATIC_BLOCKS_BOX_RATE && self.automatic_blocks(pressure)?
+        } else {
+            self.balancing.is_some()
+        };
+        *wanted = Some(decided);
+        Ok(decided)
+    }
+
+    /// The automatic choice for a fine, non-adhesive solve whose contact is
+    /// where `pressure` is positive: the blocks (built if they are not) on
+    /// a large enough grid and a contact of many patches.
+    fn automatic_blocks(&mut self, pressure: &[f64]) -> Result<bool> {
+        let grid = *self.grid();
+        let (rows, columns) = (grid.rows(), grid.columns());
+        let side = AUTOMATIC_BLOCK_SIDE;
+        let periodic = self.operator.boundary() == Boundary::Periodic;
+        let fits = rows * columns >= AUTOMATIC_BLOCKS_CELLS
+            && rows.min(columns) >= 4 * side
+            && !(periodic && (rows % side != 0 || columns % side != 0));
+        let eligible = fits
+            && !self.is_split()
+            && !self.start_level
+            && !self.double_preconditioner
+            && self.params.precondition;
+        if !eligible || self.few_patches(pressure) {
+            return Ok(false);
+        }
+        if self.balancing.is_none() {
+            self.build_blocks(side)?;
+        }
+        Ok(true)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{AUTOMATIC_BLOCKS_BOX_RATE, AUTOMATIC_BLOCK_SIDE, QUIET_ITERATIONS};
+    use crate::solver::{ContactSolver, SolverParams};
+    use crate::{Boundary, Grid, Material, Substrate};
+
+    /// The automatic choice's patch test, on its own (the solves of
+    /// `tests/coarse_blocks_automatic.rs` whose box converges fast never
+    /// reach it): on a periodic 2048 x 2048 grid, with the box's rate at
+    /// 0.5 and the count settled, a contact of one square patch (a quarter
+    /// of the side across) keeps the box and builds nothing; one of 4096
+    /// single-cell specks (every 32nd cell each way, more than 256
+    /// patches) takes blocks of 16, built then; before the count settles,
+    /// neither is decided.
+    #[test]
+    fn the_automatic_choice_counts_the_patches() {
+        let n = 2048;
+        let grid = Grid::square_of_side(n, 1.0).unwrap();
+        let body = Substrate::half_space(Material::new(1.0, 0.0).unwrap());
+        let mut solver =
+            ContactSolver::new(&body, &grid, Boundary::Periodic, SolverParams::default()).unwrap();
+        let rate = 0.5;
+        assert!(rate > AUTOMATIC_BLOCKS_BOX_RATE);
+        let quarter = n / 4;
+        let one: Vec<f64> = (0..n * n)
+            .map(|c| f64::from(u8::from(c / n < quarter && c % n < quarter)))
+            .collect();
+        let specks: Vec<f64> = (0..n * n)
+            .map(|c| f64::from(u8::from((c / n) % 32 == 0 && (c % n) % 32 == 0)))
+            .collect();
+        let mut wanted = None;
+        let early = solver.coarse_correction_now(QUIET_ITERATIONS - 1, &mut wanted, &specks, rate);
+        assert!(!early.unwrap() && wanted.is_none());
+        let mut wanted = None;
+        let patch = solver.coarse_correction_now(QUIET_ITERATIONS, &mut wanted, &one, rate);
+        assert!(!patch.unwrap());
+        assert_eq!((wanted, solver.coarse_blocks()), (Some(false), None));
+        let mut wanted = None;
+        let rough = solver.coarse_correction_now(QUIET_ITERATIONS, &mut wanted, &specks, rate);
+        assert!(rough.unwrap());
+        assert_eq!(
+            (wanted, solver.coarse_blocks()),
+            (Some(true), Some(AUTOMATIC_BLOCK_SIDE))
+        );
+    }
+}
