@@ -400,6 +400,15 @@ impl ContactSolver {
         let g = self.inner.grid();
         (g.rows(), g.columns(), g.spacing())
     }
+
+    /// The block side of the two-level preconditioner the solver has: set
+    /// by `coarse_blocks`, or built by its own choice in a solve (rough
+    /// contacts on grids of 2048^2 cells and more); `None` while it has
+    /// only the box.
+    #[getter]
+    fn coarse_blocks(&self) -> Option<usize> {
+        self.inner.coarse_blocks()
+    }
 }
 
 /// The cohesive law of the given works of adhesion, its zone `zone_cells`

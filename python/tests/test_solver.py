@@ -155,7 +155,8 @@ def test_two_level_preconditioner_on_a_rough_contact():
     the default tolerance 1e-8) in fewer fine iterations (measured 27 with
     the box, 19 with blocks of 16, which join once the contact count has
     settled; at 256^2 21 and 18); the solver's own choice (`None`, the
-    default) keeps the box below 2048^2 cells: the box's iterations exactly.
+    default) keeps the box below 2048^2 cells: the box's iterations exactly,
+    and no blocks (the `coarse_blocks` property: 16 where they were set).
     Blocks that do not divide a periodic grid are refused, naming them, and
     so is a name other than "box"."""
     n = 512
@@ -166,8 +167,11 @@ def test_two_level_preconditioner_on_a_rough_contact():
     body = lc.Substrate.half_space(lc.Material(1.0, 0.0))
     boxed = lc.ContactSolver(body, n, n, 1.0 / n, periodic=True, coarse_blocks="box").solve_force(
         surface, 0.01)
-    chosen = lc.ContactSolver(body, n, n, 1.0 / n, periodic=True).solve_force(surface, 0.01)
+    choosing = lc.ContactSolver(body, n, n, 1.0 / n, periodic=True)
+    chosen = choosing.solve_force(surface, 0.01)
+    assert choosing.coarse_blocks is None
     solver = lc.ContactSolver(body, n, n, 1.0 / n, periodic=True, coarse_blocks=16)
+    assert solver.coarse_blocks == 16
     two = solver.solve_force(surface, 0.01)
     assert np.max(np.abs(two.pressure - boxed.pressure)) <= 1e-6 * boxed.pressure.max()
     assert two.iterations + 5 <= boxed.iterations
