@@ -40,6 +40,38 @@ pub const AUTOMATIC_BLOCKS_BOX_RATE: f64 = 0.3;
 /// every measurement of `BENCHMARKS.md`'s two-level sections.
 pub const AUTOMATIC_BLOCK_SIDE: usize = 16;
 
+/// One solve's part of the choice: how many iterations in a row have left
+/// the contact count settled ([`count_settled`]), the residual after the
+/// last one that moved it (the box's rate since tells whether the blocks
+/// can gain), and the decision once taken.
+pub(super) struct CoarseChoice {
+    quiet: usize,
+    moved_residual: f64,
+    wanted: Option<bool>,
+}
+
+impl Default for CoarseChoice {
+    fn default() -> Self {
+        CoarseChoice {
+            quiet: 0,
+            moved_residual: f64::INFINITY,
+            wanted: None,
+        }
+    }
+}
+
+impl CoarseChoice {
+    /// An iteration ended at `residual`, its contact count `settled` or not.
+    pub(super) fn record(&mut self, settled: bool, residual: f64) {
+        if settled {
+            self.quiet += 1;
+        } else {
+            self.quiet = 0;
+            self.moved_residual = residual;
+        }
+    }
+}
+
 impl ContactSolver {
     /// Let each fine solve choose its preconditioner (the default): the
     /// two-level one over blocks of [`AUTOMATIC_BLOCK_SIDE`] cells on a grid
@@ -84,34 +116,34 @@ impl ContactSolver {
 
     /// Whether the constrained conjugate gradients' next iteration takes
     /// the two-level preconditioner: each of the last [`QUIET_ITERATIONS`]
-    /// iterations (`quiet`, how many in a row did) changed the contact
-    /// count by at most [`SETTLED_COUNT_FRACTION`] of it
-    /// ([`count_settled`]), and the preconditioner is on or, chosen
-    /// automatically, the solve wants it (`wanted`, decided on the first
-    /// such iteration from the contact where `pressure` is positive and
-    /// the box's mean factor `box_rate` over the quiet iterations:
+    /// iterations changed the contact count by at most
+    /// [`SETTLED_COUNT_FRACTION`] of it ([`count_settled`]), and the
+    /// preconditioner is on or, chosen automatically, the solve wants it
+    /// (decided on the first such iteration from the contact where
+    /// `pressure` is positive and the box's mean factor over the quiet
+    /// iterations, down to `residual`:
     /// [`ContactSolver::set_automatic_coarse_blocks`]); while the set still
     /// moves, the box alone.
     pub(super) fn coarse_correction_now(
         &mut self,
-        quiet: usize,
-        wanted: &mut Option<bool>,
+        choice: &mut CoarseChoice,
+        residual: f64,
         pressure: &[f64],
-        box_rate: f64,
     ) -> Result<bool> {
-        if quiet < QUIET_ITERATIONS {
+        if choice.quiet < QUIET_ITERATIONS {
             return Ok(false);
         }
-        if let Some(wanted) = *wanted {
+        if let Some(wanted) = choice.wanted {
             return Ok(wanted);
         }
         let decided = if self.coarse_automatic {
+            let box_rate = (residual / choice.moved_residual).powf(1.0 / choice.quiet as f64);
             // A rate that is not a number (no residual yet) keeps the box.
             box_rate >= AUTOMATIC_BLOCKS_BOX_RATE && self.automatic_blocks(pressure)?
         } else {
             self.balancing.is_some()
         };
-        *wanted = Some(decided);
+        choice.wanted = Some(decided);
         Ok(decided)
     }
 
@@ -143,7 +175,7 @@ impl ContactSolver {
 
 #[cfg(test)]
 mod tests {
-    use super::{AUTOMATIC_BLOCKS_BOX_RATE, AUTOMATIC_BLOCK_SIDE, QUIET_ITERATIONS};
+    use super::{CoarseChoice, AUTOMATIC_BLOCKS_BOX_RATE, AUTOMATIC_BLOCK_SIDE, QUIET_ITERATIONS};
     use crate::solver::{ContactSolver, SolverParams};
     use crate::{Boundary, Grid, Material, Substrate};
 
@@ -171,18 +203,25 @@ mod tests {
         let specks: Vec<f64> = (0..n * n)
             .map(|c| f64::from(u8::from((c / n) % 32 == 0 && (c % n) % 32 == 0)))
             .collect();
-        let mut wanted = None;
-        let early = solver.coarse_correction_now(QUIET_ITERATIONS - 1, &mut wanted, &specks, rate);
-        assert!(!early.unwrap() && wanted.is_none());
-        let mut wanted = None;
-        let patch = solver.coarse_correction_now(QUIET_ITERATIONS, &mut wanted, &one, rate);
+        // The residual fell by `rate` an iteration over the quiet ones.
+        let quiet = |quiet| CoarseChoice {
+            quiet,
+            moved_residual: 1.0,
+            wanted: None,
+        };
+        let residual = rate.powi(QUIET_ITERATIONS as i32);
+        let mut choice = quiet(QUIET_ITERATIONS - 1);
+        let early = solver.coarse_correction_now(&mut choice, residual, &specks);
+        assert!(!early.unwrap() && choice.wanted.is_none());
+        let mut choice = quiet(QUIET_ITERATIONS);
+        let patch = solver.coarse_correction_now(&mut choice, residual, &one);
         assert!(!patch.unwrap());
-        assert_eq!((wanted, solver.coarse_blocks()), (Some(false), None));
-        let mut wanted = None;
-        let rough = solver.coarse_correction_now(QUIET_ITERATIONS, &mut wanted, &specks, rate);
+        assert_eq!((choice.wanted, solver.coarse_blocks()), (Some(false), None));
+        let mut choice = quiet(QUIET_ITERATIONS);
+        let rough = solver.coarse_correction_now(&mut choice, residual, &specks);
         assert!(rough.unwrap());
         assert_eq!(
-            (wanted, solver.coarse_blocks()),
+            (choice.wanted, solver.coarse_blocks()),
             (Some(true), Some(AUTOMATIC_BLOCK_SIDE))
         );
     }

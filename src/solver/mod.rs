@@ -44,6 +44,7 @@
 //! 1993) joins once the contact set has settled, whose count grows like
 //! `log N`, at 1.5 to 2 times the cost an iteration: by itself on grids of
 //! at least [`AUTOMATIC_BLOCKS_CELLS`] cells for contacts of many patches
+//! whose box converges slowly
 //! ([`ContactSolver::set_automatic_coarse_blocks`], the default), or as
 //! [`ContactSolver::set_coarse_blocks`] sets it.
 //!

@@ -27,6 +27,7 @@ use crate::error::{Error, Result};
 use crate::indenter::Indenter;
 
 use super::active_set::ACTIVE_SET_AFTER;
+use super::coarse_choice::CoarseChoice;
 use super::multiresolution::{count_settled, loosened};
 use super::stall::Stall;
 use super::step_response::Arithmetic;
@@ -266,17 +267,11 @@ impl ContactSolver {
         let strict = tolerance;
         // The contact count after the last iteration.
         let mut last_contact: Option<usize> = None;
-        // How many iterations in a row have left the contact count
-        // settled ([`count_settled`]), and whether the last one took the
-        // coarse correction.
-        let mut quiet = 0;
+        // When this solve takes the coarse correction
+        // ([`ContactSolver::coarse_correction_now`]), and whether the last
+        // iteration took it.
+        let mut coarse_choice = CoarseChoice::default();
         let mut coarse_last = false;
-        // Whether this solve takes the coarse correction once the count
-        // settles (decided then: [`ContactSolver::coarse_correction_now`]),
-        // and the residual when the count last moved (the box's rate since
-        // tells whether the correction can gain).
-        let mut coarse_wanted = None;
-        let mut moved_residual = f64::INFINITY;
         let mut rz_old = 0.0;
         self.workspace.direction.fill(0.0);
         let mut depth = match control {
@@ -480,9 +475,7 @@ impl ContactSolver {
             // The coarse correction only while the contact count stands
             // ([`ContactSolver::coarse_correction_now`]); a change of
             // preconditioner restarts the conjugation.
-            let box_rate = (residual / moved_residual).powf(1.0 / quiet.max(1) as f64);
-            let coarse =
-                self.coarse_correction_now(quiet, &mut coarse_wanted, &pressure, box_rate)?;
+            let coarse = self.coarse_correction_now(&mut coarse_choice, residual, &pressure)?;
             if coarse != coarse_last {
                 rz_old = 0.0;
             }
@@ -674,10 +667,7 @@ impl ContactSolver {
                 contact_cells: stats.contact,
             });
             let settled = count_settled(last_contact, stats.contact);
-            quiet = if settled { quiet + 1 } else { 0 };
-            if !settled {
-                moved_residual = residual;
-            }
+            coarse_choice.record(settled, residual);
             last_contact = Some(stats.contact);
             // A fine solve stops only once no cell overlaps; a start level
             // may stop with overlap left (`ContactSolver::start_level`),
