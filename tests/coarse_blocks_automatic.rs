@@ -9,8 +9,9 @@ use layered_contact::solver::{
     ContactSolver, SolverParams, AUTOMATIC_BLOCKS_BOX_RATE, AUTOMATIC_BLOCKS_CELLS,
     AUTOMATIC_BLOCK_SIDE,
 };
-use layered_contact::topography::{Amplitude, SelfAffine};
 use layered_contact::{Boundary, Grid, Material, Substrate};
+
+mod common;
 
 /// The problem of `benches/peers/rough.py` on `n x n` cells: the seeded
 /// surface (Hurst 0.8, rms slope 0.1, roll-off at a quarter of the side,
@@ -24,15 +25,7 @@ fn peers_problem(
 ) -> (layered_contact::solver::Solution, Option<usize>) {
     let body = Substrate::half_space(Material::new(1.0, 0.0).unwrap());
     let grid = Grid::square_of_side(n, 1.0).unwrap();
-    let indenter = SelfAffine {
-        hurst: 0.8,
-        amplitude: Amplitude::RmsSlope(0.1),
-        long_cutoff: 0.25,
-        short_cutoff: 4.0 / n as f64,
-        seed: 1,
-    }
-    .indenter(&grid)
-    .unwrap();
+    let indenter = common::rough_surface(1.0, n, 1).indenter(&grid).unwrap();
     let params = SolverParams {
         tolerance: 1e-8,
         ..SolverParams::default()

@@ -7,23 +7,11 @@
 use layered_contact::indenter::Indenter;
 use layered_contact::kernel::ComplianceOperator;
 use layered_contact::solver::{ContactSolver, Fields, SolverParams};
-use layered_contact::topography::{Amplitude, SelfAffine};
 use layered_contact::{Boundary, Grid, Material, Substrate};
 
 mod common;
 
-/// The seeded self-affine surface of these tests on `n` cells across a
-/// square of `side`: Hurst 0.8, rms slope 0.1, roll-off at a quarter of
-/// the side, cut-off at four cells.
-fn rough_surface(side: f64, n: usize, seed: u64) -> SelfAffine {
-    SelfAffine {
-        hurst: 0.8,
-        amplitude: Amplitude::RmsSlope(0.1),
-        long_cutoff: 0.25 * side,
-        short_cutoff: 4.0 * side / n as f64,
-        seed,
-    }
-}
+use common::rough_surface;
 
 /// A seeded self-affine surface on `n x n` cells of a 1 mm square pressed
 /// into a rubber half-space and a film on a rigid base, periodic and

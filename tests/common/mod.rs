@@ -241,3 +241,18 @@ pub fn pull_off_error(
 ) -> f64 {
     curve.pull_off().unwrap().force / exact_pull_off(scene) - 1.0
 }
+
+/// The seeded self-affine surface of the rough-contact tests (and of
+/// `examples/rough_benchmark.rs`) on `n` cells across a square of `side`:
+/// Hurst 0.8, rms slope 0.1, roll-off at a quarter of the side, cut-off at
+/// four cells.
+#[allow(dead_code)]
+pub fn rough_surface(side: f64, n: usize, seed: u64) -> layered_contact::topography::SelfAffine {
+    layered_contact::topography::SelfAffine {
+        hurst: 0.8,
+        amplitude: layered_contact::topography::Amplitude::RmsSlope(0.1),
+        long_cutoff: 0.25 * side,
+        short_cutoff: 4.0 * side / n as f64,
+        seed,
+    }
+}
