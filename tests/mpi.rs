@@ -203,6 +203,9 @@ struct Case {
     /// The largest difference of the pressures asserted, over the largest
     /// pressure.
     pressure_agreement: f64,
+    /// The two-level preconditioner's blocks (cells a side) both solvers
+    /// take, if set by hand.
+    blocks: Option<usize>,
 }
 
 fn rough(grid: &Grid, side: f64, seed: u64) -> Result<HeightMap, layered_contact::Error> {
@@ -223,9 +226,11 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
     let periodic = Grid::square_of_side(128, side)?;
     let odd = Grid::new(130, 72, side / 128.0)?;
     let sphere_grid = Grid::new(128, 128, 2e-5)?;
-    Ok(vec![
-        Case {
-            name: "rough film on glass, periodic 128 x 128, force control",
+    // The rough film with the box and, its 128 rows split into 64 or 32 a
+    // rank (whole rows of blocks), with blocks of 16.
+    let rough_film = |name, blocks| -> Result<Case, layered_contact::Error> {
+        Ok(Case {
+            name,
             body: film.clone(),
             grid: periodic,
             boundary: Boundary::Periodic,
@@ -234,7 +239,18 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
             force: true,
             most_iterations: None,
             pressure_agreement: AGREEMENT,
-        },
+            blocks,
+        })
+    };
+    Ok(vec![
+        rough_film(
+            "rough film on glass, periodic 128 x 128, force control",
+            None,
+        )?,
+        rough_film(
+            "rough film on glass, periodic 128 x 128, force control, blocks of 16",
+            Some(16),
+        )?,
         Case {
             name: "rough half-space, isolated 130 x 72 (odd coarse rows), depth control",
             body: half_space,
@@ -245,6 +261,7 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
             force: false,
             most_iterations: None,
             pressure_agreement: AGREEMENT,
+            blocks: None,
         },
         Case {
             name: "sphere on a film on glass, isolated 128 x 128, depth control",
@@ -256,6 +273,7 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
             force: false,
             most_iterations: None,
             pressure_agreement: AGREEMENT,
+            blocks: None,
         },
         // The contact misses the outer ranks' rows: their warm starts have
         // no contact while the inner ranks' do.
@@ -269,6 +287,7 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
             force: true,
             most_iterations: None,
             pressure_agreement: AGREEMENT,
+            blocks: None,
         },
         plate()?,
     ])
@@ -305,6 +324,7 @@ fn plate() -> Result<Case, layered_contact::Error> {
         force: false,
         most_iterations: Some(1600),
         pressure_agreement: 1e-9,
+        blocks: None,
     })
 }
 
@@ -323,6 +343,23 @@ fn ranks_main() -> Result<(), String> {
     };
     let text = |e: layered_contact::Error| e.to_string();
     let mut failures = Vec::new();
+    // Blocks of 16 on 136 rows split into 68 or 34 a rank (starts at
+    // multiples of 2, the multi-resolution start's): no rank but the first
+    // begins on a block's edge. Refused with a typed error on every rank,
+    // and the solver left choosing for itself, no blocks built.
+    let misfit = Grid::new(136, 72, 1e-5).map_err(text)?;
+    let body = Substrate::half_space(Material::new(1e6, 0.3).map_err(text)?);
+    let mut split = ContactSolver::distributed(&body, &misfit, Boundary::Isolated, params, &ranks)
+        .map_err(text)?;
+    let refused = split.set_coarse_blocks(Some(16));
+    if !matches!(
+        refused,
+        Err(layered_contact::Error::InvalidParameter { .. })
+    ) || split.coarse_blocks().is_some()
+        || !split.coarse_blocks_automatic()
+    {
+        failures.push(format!("blocks of 16 on 136 rows split: {refused:?}"));
+    }
     for case in cases().map_err(text)? {
         let params = SolverParams {
             multiresolution: case.most_iterations.is_none(),
@@ -333,13 +370,9 @@ fn ranks_main() -> Result<(), String> {
         let mut split =
             ContactSolver::distributed(&case.body, &case.grid, case.boundary, params, &ranks)
                 .map_err(text)?;
-        // The two-level preconditioner is refused on a split solver (its
-        // coarse space is built on one process), and leaves it as it was.
-        let refused = split.set_coarse_blocks(Some(2));
-        if !matches!(refused, Err(layered_contact::Error::Unsupported { .. }))
-            || split.coarse_blocks().is_some()
-        {
-            failures.push(format!("coarse blocks on a split solver: {refused:?}"));
+        if let Some(side) = case.blocks {
+            serial.set_coarse_blocks(Some(side)).map_err(text)?;
+            split.set_coarse_blocks(Some(side)).map_err(text)?;
         }
         let rows = split.local_rows();
         let columns = case.grid.columns();
@@ -357,6 +390,17 @@ fn ranks_main() -> Result<(), String> {
                 split.solve_depth(&*case.indenter, load, warm_split.as_ref(), &mut ())
             }
             .map_err(text)?;
+            // With blocks set, both take the same steps: the same count
+            // (a split solver that kept the box would take others).
+            if case.blocks.is_some() && a.iterations != b.iterations {
+                failures.push(format!(
+                    "rank {}: {}: {} split iterations, {} serial",
+                    ranks.rank(),
+                    case.name,
+                    b.iterations,
+                    a.iterations
+                ));
+            }
             if let Some(most) = case.most_iterations {
                 if b.iterations > most {
                     failures.push(format!(

@@ -8,11 +8,10 @@
 #     cargo build --release --features mpi
 #     benches/mpi/rough_split.sh 4096 8192
 #
-# Since 2026-12-05 the one-process run of a grid of 2048^2 cells or more
-# takes the two-level preconditioner by itself
-# (ContactSolver::set_automatic_coarse_blocks), which split runs do not
-# have: its iterations differ from theirs and its results agree with
-# theirs to the solver's tolerance, not to the last digit.
+# On a grid of 2048^2 cells or more every run takes the two-level
+# preconditioner by itself (ContactSolver::set_automatic_coarse_blocks),
+# split runs too since 2026-12-05 (fortieth session): their rows here are
+# whole rows of blocks of 16.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1

@@ -24,10 +24,13 @@
 //! preconditioner for rough contacts" and "The two-level preconditioner's
 //! applications in single precision".
 
+use std::ops::Range;
+
 use crate::error::{Error, Result};
 use crate::grid::Boundary;
+use crate::kernel::ComplianceOperator;
 
-use super::coarse_space::CoarseSpace;
+use super::coarse_space::{near_kernel, CoarseSpace};
 use super::passes::Bounds;
 use super::ContactSolver;
 
@@ -84,8 +87,9 @@ impl ContactSolver {
     /// # Errors
     /// [`Error::InvalidParameter`] for blocks smaller than 2 cells or
     /// larger than a quarter of the grid's smaller side, or that do not
-    /// divide the sides of a periodic grid; [`Error::Unsupported`] on a
-    /// solver split across MPI ranks.
+    /// divide the sides of a periodic grid, or on a solver split across MPI
+    /// ranks, that do not divide the first row of every rank (each rank
+    /// holds whole rows of blocks; [`doc::distributed`](crate::doc::distributed)).
     ///
     /// ```
     /// use layered_contact::solver::{ContactSolver, SolverParams};
@@ -123,15 +127,9 @@ impl ContactSolver {
 
     /// The two-level preconditioner over blocks of `side` cells, built.
     pub(super) fn build_blocks(&mut self, side: usize) -> Result<()> {
-        if self.is_split() {
-            return Err(Error::Unsupported {
-                feature: "the two-level preconditioner on a solver split across MPI ranks",
-                reason: "its coarse space is built on one process; use the box \
-                         preconditioner (the default)",
-            });
-        }
         let grid = *self.grid();
         let (rows, columns) = (grid.rows(), grid.columns());
+        let local = self.operator.local_rows();
         if side < 2 || side > rows.min(columns) / 4 {
             return Err(Error::InvalidParameter {
                 name: "coarse blocks (cells a side)",
@@ -147,12 +145,21 @@ impl ContactSolver {
                 expected: "a divisor of both sides of a periodic grid",
             });
         }
+        if self.on_any_rank(!rows_fit_blocks(&local, rows, side)) {
+            return Err(Error::InvalidParameter {
+                name: "coarse blocks (cells a side) on a solver split across MPI ranks",
+                value: side as f64,
+                expected: "a divisor of every rank's first row (each rank holds whole \
+                           rows of blocks; the grid's rows split evenly over the ranks \
+                           in multiples of the block side)",
+            });
+        }
         // The responses to a unit load on cell (0, 0) and on the block at
         // the origin, in the workspace's scratch vectors; in single
         // precision, as the preconditioner's other applications (about
         // `1e-7` of the largest value: the far blocks' entries of the
         // coarse matrix to about `1e-3` of themselves at 8192^2).
-        let n = rows * columns;
+        let n = self.local_cells();
         let ws = &mut self.workspace;
         let (mut field, mut response) = (
             std::mem::take(&mut ws.previous),
@@ -161,22 +168,37 @@ impl ContactSolver {
         let responses = (|| {
             super::workspace::fit(&mut field, n)?;
             super::workspace::fit(&mut response, n)?;
+            // On a split solver each rank loads and reads its own rows.
             field.fill(0.0);
-            field[0] = 1.0;
-            self.operator
-                .apply_single(&field, &mut response, 1.0, |_, v| v)?;
-            let near = super::coarse_space::near_kernel(&response, side, (rows, columns), periodic);
-            field[0] = 0.0;
-            for i in 0..side {
-                field[i * columns..i * columns + side].fill(1.0);
+            if local.start == 0 {
+                field[0] = 1.0;
             }
             self.operator
                 .apply_single(&field, &mut response, 1.0, |_, v| v)?;
-            CoarseSpace::new(side, (rows, columns), periodic, near, &response)
+            let mut near = near_kernel(&response, side, (rows, columns), &local, periodic);
+            self.sum_over_ranks(&mut near);
+            field.fill(0.0);
+            for i in local.start..side.min(local.end) {
+                let row = (i - local.start) * columns;
+                field[row..row + side].fill(1.0);
+            }
+            self.operator
+                .apply_single(&field, &mut response, 1.0, |_, v| v)?;
+            let sum = |v: &mut [f64]| self.sum_over_ranks(v);
+            CoarseSpace::new(
+                side,
+                (rows, columns),
+                local.clone(),
+                periodic,
+                near,
+                &response,
+                &sum,
+            )
         })();
+        let space = self.agreed(responses);
         let ws = &mut self.workspace;
         (ws.previous, ws.response) = (field, response);
-        let space = responses?;
+        let space = space?;
         let blocks = space.len();
         self.balancing = Some(Box::new(Balancing {
             space,
@@ -236,9 +258,11 @@ impl ContactSolver {
             first,
             second,
         } = balancing;
-        let (rows, columns) = (self.grid().rows(), self.grid().columns());
+        // This rank's rows (all of them when serial).
+        let (rows, columns) = (self.operator.local_rows().len(), self.grid().columns());
+        let sum = |v: &mut [f64]| self.sum_over_ranks(v);
+        space.update(&self.workspace.working, &sum);
         let ws = &mut self.workspace;
-        space.update(&ws.working);
         // c1 = E~^-1 Z^T r.
         let (gap, working, space_at) = (&ws.gap, &ws.working, &*space);
         let parts = crate::parallel::map_row_indices(rows, columns, |i| {
@@ -247,6 +271,7 @@ impl ContactSolver {
             space_at.row_sums(i, member, |j| gap[j] - shift)
         });
         space.gather(&parts, first);
+        over_ranks(&self.operator, first);
         space.solve(first)?;
         let largest = first.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
         // s = r - A Z c1 on the set, into `previous`.
@@ -279,7 +304,10 @@ impl ContactSolver {
                 largest
             },
         )?;
-        let s_max = maxima.into_iter().fold(0.0, f64::max);
+        // Scales the same on every rank: the sums of their largest.
+        let mut s_max = [maxima.into_iter().fold(0.0, f64::max)];
+        over_ranks(&self.operator, &mut s_max);
+        let [s_max] = s_max;
         // y = B s in `response`, zero off the set.
         std::mem::swap(&mut ws.gap, &mut ws.previous);
         let boxed = self.precondition_working_set(bounds, 0.0, s_max);
@@ -298,7 +326,9 @@ impl ContactSolver {
             }
             largest
         });
-        let y_max = maxima.into_iter().fold(0.0, f64::max);
+        let mut y_max = [maxima.into_iter().fold(0.0, f64::max)];
+        over_ranks(&self.operator, &mut y_max);
+        let [y_max] = y_max;
         // Z^T A y, each row's part of each block's sum.
         let (y, working) = (&ws.response, &ws.working);
         let parts = self.operator.apply_rows_single(
@@ -316,6 +346,7 @@ impl ContactSolver {
         )?;
         // c2 = E~^-1 Z^T A y; z = Z c1 + y - Z c2.
         space.gather(&parts, second);
+        over_ranks(&self.operator, second);
         space.solve(second)?;
         let ws = &mut self.workspace;
         let (gap, working, space_at) = (&ws.gap, &ws.working, &*space);
@@ -339,5 +370,23 @@ impl ContactSolver {
             .into_iter()
             .fold((0.0, 0.0), |(a, b), (c, d)| (a + c, b + d));
         Ok((z_sum, rz))
+    }
+}
+
+/// Whether a process holding the grid rows `local` of `rows` holds whole
+/// rows of blocks of `side` cells: its rows begin on a block's edge and end
+/// on one or at the grid's end. A split solver takes the two-level
+/// preconditioner only if every rank's rows do (each block's own pairs are
+/// summed by the rank that holds it).
+pub(super) fn rows_fit_blocks(local: &Range<usize>, rows: usize, side: usize) -> bool {
+    local.start.is_multiple_of(side) && (local.end.is_multiple_of(side) || local.end == rows)
+}
+
+/// `values` summed over the ranks of a split `operator` (nothing when
+/// serial): [`ContactSolver::sum_over_ranks`] where the solver's workspace
+/// is borrowed.
+fn over_ranks(operator: &ComplianceOperator, values: &mut [f64]) {
+    if let Some(slab) = operator.slab() {
+        slab.sum(values);
     }
 }

@@ -9,7 +9,7 @@
 use crate::error::Result;
 use crate::grid::Boundary;
 
-use super::balancing::QUIET_ITERATIONS;
+use super::balancing::{rows_fit_blocks, QUIET_ITERATIONS};
 #[cfg(doc)]
 use super::multiresolution::{count_settled, SETTLED_COUNT_FRACTION};
 use super::ContactSolver;
@@ -85,7 +85,8 @@ impl ContactSolver {
     /// than 256 patches (a rough contact: a Hertzian or flat punch's
     /// contact, one patch, gains nothing from the blocks); the box
     /// otherwise, on a periodic grid whose sides the block side does not
-    /// divide, on a solver split across MPI ranks, in adhesive solves and
+    /// divide, on a solver split across MPI ranks whose rows are not whole
+    /// rows of blocks on every rank, in adhesive solves and
     /// on the coarse levels of the multi-resolution start. Undoes
     /// [`ContactSolver::set_coarse_blocks`].
     ///
@@ -158,8 +159,11 @@ impl ContactSolver {
         let fits = rows * columns >= AUTOMATIC_BLOCKS_CELLS
             && rows.min(columns) >= 4 * side
             && !(periodic && (rows % side != 0 || columns % side != 0));
+        let local = self.operator.local_rows();
+        // Collective on a split solver: every rank takes the same branch.
+        let split_fits = !self.on_any_rank(!rows_fit_blocks(&local, rows, side));
         let eligible = fits
-            && !self.is_split()
+            && split_fits
             && !self.start_level
             && !self.double_preconditioner
             && self.params.precondition;

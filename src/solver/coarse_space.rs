@@ -21,6 +21,8 @@
 //! its size on an isolated grid) and a diagonal; `E~ c = f` is solved by
 //! Jacobi-preconditioned conjugate gradients.
 
+use std::ops::Range;
+
 use crate::error::{Error, Result};
 use crate::kernel::EvenConvolution;
 
@@ -93,11 +95,15 @@ fn own_pairs(near: &[f64], side: usize, members: &[(usize, usize)]) -> f64 {
 /// `k(di, dj)`, the compliance between cells `(di, dj)` apart for `|di|,
 /// |dj| < side`, on `(2 side - 1)^2` offsets, from the response `point` to
 /// a unit load on cell `(0, 0)` of a grid of `(rows, columns)` cells (on an
-/// isolated grid read at non-negative offsets and mirrored).
+/// isolated grid read at non-negative offsets and mirrored). `point` holds
+/// the grid rows `local` (all of them when serial); the offsets whose row
+/// lies elsewhere are left zero (on a split solver the ranks' parts add
+/// up to the whole).
 pub(super) fn near_kernel(
     point: &[f64],
     side: usize,
     (rows, columns): (usize, usize),
+    local: &Range<usize>,
     periodic: bool,
 ) -> Vec<f64> {
     let width = 2 * side - 1;
@@ -113,7 +119,10 @@ pub(super) fn near_kernel(
             } else {
                 (di.unsigned_abs(), dj.unsigned_abs())
             };
-            near[(di + reach) as usize * width + (dj + reach) as usize] = point[i * columns + j];
+            if local.contains(&i) {
+                near[(di + reach) as usize * width + (dj + reach) as usize] =
+                    point[(i - local.start) * columns + j];
+            }
         }
     }
     near
@@ -137,6 +146,10 @@ pub(super) struct CoarseSpace {
     /// The grid's rows and columns.
     rows: usize,
     columns: usize,
+    /// The grid rows this process holds (all of them when serial; on a
+    /// split solver whole rows of blocks,
+    /// [`rows_fit_blocks`](super::balancing::rows_fit_blocks)).
+    local: Range<usize>,
     /// Blocks each way (the last ones partial on an isolated grid whose
     /// sides `b` does not divide).
     blocks: (usize, usize),
@@ -153,21 +166,30 @@ pub(super) struct CoarseSpace {
 
 impl CoarseSpace {
     /// The coarse space of blocks of `side` cells on a grid of `cells`
-    /// (rows, columns), from the kernel `near` between cells less than a
-    /// block apart ([`near_kernel`]) and the compliance's response `block`
-    /// to a unit load on each cell of the block at the origin.
+    /// (rows, columns), of which this process holds the rows `local`, from
+    /// the kernel `near` between cells less than a block apart
+    /// ([`near_kernel`], whole) and the compliance's response `block` to a
+    /// unit load on each cell of the block at the origin (its rows
+    /// `local`); `sum` adds a vector over the ranks of a split solver (the
+    /// identity when serial).
     ///
     /// # Errors
     /// [`Error::Internal`] if the kernel or the response is not finite.
     pub(super) fn new(
         side: usize,
         cells: (usize, usize),
+        local: Range<usize>,
         periodic: bool,
         near: Vec<f64>,
         block: &[f64],
+        sum: &dyn Fn(&mut [f64]),
     ) -> Result<Self> {
         let (rows, columns) = cells;
-        if !near.iter().chain(block).all(|v| v.is_finite()) {
+        let mut finite = [f64::from(u8::from(
+            !near.iter().chain(block).all(|v| v.is_finite()),
+        ))];
+        sum(&mut finite);
+        if finite[0] > 0.0 {
             return Err(Error::Internal {
                 what: "two-level preconditioner",
                 detail: "the compliance's response to a block is not finite".into(),
@@ -179,10 +201,13 @@ impl CoarseSpace {
         for i in 0..rows {
             for j in 0..columns {
                 let k = (i / side) * blocks.1 + j / side;
-                kb[k] += block[i * columns + j];
+                if local.contains(&i) {
+                    kb[k] += block[(i - local.start) * columns + j];
+                }
                 cells_in[k] += 1.0;
             }
         }
+        sum(&mut kb);
         // A partial block's sum scaled to a whole block's.
         let whole = (side * side) as f64;
         for (k, n) in kb.iter_mut().zip(&cells_in) {
@@ -192,6 +217,7 @@ impl CoarseSpace {
             side,
             rows,
             columns,
+            local,
             blocks,
             near,
             mean_pair: kb[0] / (whole * whole),
@@ -212,13 +238,11 @@ impl CoarseSpace {
     }
 
     /// Row `i`'s runs of cells in one block: `(block, columns)`, `columns`
-    /// a range of the row's columns.
-    pub(super) fn row_runs(
-        &self,
-        i: usize,
-    ) -> impl Iterator<Item = (usize, std::ops::Range<usize>)> {
+    /// a range of the row's columns (`i` counted from this process's first
+    /// row).
+    pub(super) fn row_runs(&self, i: usize) -> impl Iterator<Item = (usize, Range<usize>)> {
         let (side, columns) = (self.side, self.columns);
-        let row = (i / side) * self.blocks.1;
+        let row = ((self.local.start + i) / side) * self.blocks.1;
         (0..columns)
             .step_by(side)
             .enumerate()
@@ -265,24 +289,29 @@ impl CoarseSpace {
         )
     }
 
-    /// Counts and own pairs for the working set `working` (the pairs of
-    /// the blocks whose set changed).
-    pub(super) fn update(&mut self, working: &[bool]) {
+    /// Counts and own pairs for the working set `working` (this process's
+    /// rows; the pairs of the blocks whose set changed); on a split solver
+    /// the other ranks' blocks from them (`sum` adds a vector over the
+    /// ranks; one of two values a block).
+    pub(super) fn update(&mut self, working: &[bool], sum: &dyn Fn(&mut [f64])) {
         let (side, columns, rows) = (self.side, self.columns, self.rows);
         let (near, per_row) = (&self.near, self.blocks.1);
+        let first = self.local.start;
+        // This process's block rows (whole: `rows_fit_blocks`).
+        let own_blocks = first / side * per_row..self.local.end.div_ceil(side) * per_row;
         // Block rows on every thread; each block's own cells and sums.
         crate::parallel::for_each_row_with(
-            &mut self.states,
+            &mut self.states[own_blocks.clone()],
             per_row,
             || Vec::with_capacity(side * side),
             |members: &mut Vec<(usize, usize)>, block_row, states| {
                 for (block_column, state) in states.iter_mut().enumerate() {
-                    let (bi, bj) = (block_row * side, block_column * side);
+                    let (bi, bj) = (first + block_row * side, block_column * side);
                     members.clear();
                     let mut signature = (0u64, 0u64);
                     for i in bi..(bi + side).min(rows) {
                         for j in bj..(bj + side).min(columns) {
-                            if working[i * columns + j] {
+                            if working[(i - first) * columns + j] {
                                 members.push((i - bi, j - bj));
                                 let c = (i * columns + j) as u64;
                                 signature = (
@@ -303,6 +332,21 @@ impl CoarseSpace {
                 }
             },
         );
+        if self.local.len() < rows {
+            // Every rank's blocks: this rank's counts and pairs, zero
+            // elsewhere, added up.
+            let m = self.states.len();
+            let mut shared = vec![0.0; 2 * m];
+            for k in own_blocks.clone() {
+                (shared[k], shared[m + k]) = (self.states[k].count, self.states[k].own);
+            }
+            sum(&mut shared);
+            for (k, state) in self.states.iter_mut().enumerate() {
+                if !own_blocks.contains(&k) {
+                    (state.count, state.own) = (shared[k], shared[m + k]);
+                }
+            }
+        }
     }
 
     /// `E~^-1 f` into `f`, by Jacobi-preconditioned conjugate gradients to
@@ -410,14 +454,22 @@ mod tests {
                     .collect()
             };
             let periodic = boundary == Boundary::Periodic;
-            let near = near_kernel(&response(&[0]), side, (rows, columns), periodic);
+            let near = near_kernel(&response(&[0]), side, (rows, columns), &(0..rows), periodic);
             let block = response(&cells_of(0));
-            let mut space =
-                CoarseSpace::new(side, (rows, columns), periodic, near, &block).unwrap();
+            let mut space = CoarseSpace::new(
+                side,
+                (rows, columns),
+                0..rows,
+                periodic,
+                near,
+                &block,
+                &|_| {},
+            )
+            .unwrap();
             // A seeded set (the generator of `topography`).
             let mut random = ChaCha8Rng::seed_from_u64(12345);
             let working: Vec<bool> = (0..n).map(|_| random.next_u64() % 10 < 4).collect();
-            space.update(&working);
+            space.update(&working, &|_| {});
             let members = |k: usize| -> Vec<usize> {
                 cells_of(k).into_iter().filter(|c| working[*c]).collect()
             };
