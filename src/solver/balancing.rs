@@ -273,7 +273,12 @@ impl ContactSolver {
         space.gather(&parts, first);
         over_ranks(&self.operator, first);
         space.solve(first)?;
-        let largest = first.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
+        // The scale of the load `Z c1` the same on every rank (each solved
+        // the coarse system itself; ranks whose FFTs round otherwise may
+        // differ in the last digits): the sum of their largest values.
+        let mut largest = [first.iter().fold(0.0_f64, |m, c| m.max(c.abs()))];
+        over_ranks(&self.operator, &mut largest);
+        let [largest] = largest;
         // s = r - A Z c1 on the set, into `previous`.
         let (gap, working, space_at) = (&ws.gap, &ws.working, &*space);
         let coarse = &*first;
