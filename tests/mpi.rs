@@ -206,6 +206,9 @@ struct Case {
     /// The two-level preconditioner's blocks (cells a side) both solvers
     /// take, if set by hand.
     blocks: Option<usize>,
+    /// Whether both solvers, choosing for themselves, must have taken the
+    /// blocks (a rough contact on 2048^2 cells).
+    automatic_blocks: bool,
 }
 
 fn rough(grid: &Grid, side: f64, seed: u64) -> Result<HeightMap, layered_contact::Error> {
@@ -240,9 +243,27 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
             most_iterations: None,
             pressure_agreement: AGREEMENT,
             blocks,
+            automatic_blocks: false,
         })
     };
+    // The automatic choice's grid: the split solvers must decide with the
+    // serial one (a collective decision) and take the blocks.
+    let large = Grid::square_of_side(2048, side)?;
+    let automatic = Case {
+        name: "rough film on glass, periodic 2048 x 2048, force control, the solver's choice",
+        body: film.clone(),
+        grid: large,
+        boundary: Boundary::Periodic,
+        indenter: Box::new(rough(&large, side, 1)?),
+        loads: vec![2e4 * side * side],
+        force: true,
+        most_iterations: None,
+        pressure_agreement: AGREEMENT,
+        blocks: None,
+        automatic_blocks: true,
+    };
     Ok(vec![
+        automatic,
         rough_film(
             "rough film on glass, periodic 128 x 128, force control",
             None,
@@ -262,6 +283,7 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
             most_iterations: None,
             pressure_agreement: AGREEMENT,
             blocks: None,
+            automatic_blocks: false,
         },
         Case {
             name: "sphere on a film on glass, isolated 128 x 128, depth control",
@@ -274,6 +296,7 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
             most_iterations: None,
             pressure_agreement: AGREEMENT,
             blocks: None,
+            automatic_blocks: false,
         },
         // The contact misses the outer ranks' rows: their warm starts have
         // no contact while the inner ranks' do.
@@ -288,6 +311,7 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
             most_iterations: None,
             pressure_agreement: AGREEMENT,
             blocks: None,
+            automatic_blocks: false,
         },
         plate()?,
     ])
@@ -325,6 +349,7 @@ fn plate() -> Result<Case, layered_contact::Error> {
         most_iterations: Some(1600),
         pressure_agreement: 1e-9,
         blocks: None,
+        automatic_blocks: false,
     })
 }
 
@@ -392,7 +417,7 @@ fn ranks_main() -> Result<(), String> {
             .map_err(text)?;
             // With blocks set, both take the same steps: the same count
             // (a split solver that kept the box would take others).
-            if case.blocks.is_some() && a.iterations != b.iterations {
+            if (case.blocks.is_some() || case.automatic_blocks) && a.iterations != b.iterations {
                 failures.push(format!(
                     "rank {}: {}: {} split iterations, {} serial",
                     ranks.rank(),
@@ -462,6 +487,14 @@ fn ranks_main() -> Result<(), String> {
             }
             warm_serial = Some(wa);
             warm_split = Some(wb);
+        }
+        let took = (serial.coarse_blocks(), split.coarse_blocks());
+        if case.automatic_blocks && took != (Some(16), Some(16)) {
+            failures.push(format!(
+                "rank {}: {}: blocks {took:?} serial and split (asserted 16 for both)",
+                ranks.rank(),
+                case.name
+            ));
         }
     }
     if failures.is_empty() {
