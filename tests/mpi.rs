@@ -230,13 +230,13 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
     let odd = Grid::new(130, 72, side / 128.0)?;
     let sphere_grid = Grid::new(128, 128, 2e-5)?;
     // The rough film with the box and, its 128 rows split into 64 or 32 a
-    // rank (whole rows of blocks), with blocks of 16.
-    let rough_film = |name, blocks| -> Result<Case, layered_contact::Error> {
+    // rank (whole rows of blocks), with blocks of 16, periodic and isolated.
+    let rough_film = |name, boundary, blocks| -> Result<Case, layered_contact::Error> {
         Ok(Case {
             name,
             body: film.clone(),
             grid: periodic,
-            boundary: Boundary::Periodic,
+            boundary,
             indenter: Box::new(rough(&periodic, side, 1)?),
             loads: vec![5e3 * side * side, 2e4 * side * side],
             force: true,
@@ -266,10 +266,17 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
         automatic,
         rough_film(
             "rough film on glass, periodic 128 x 128, force control",
+            Boundary::Periodic,
             None,
         )?,
         rough_film(
             "rough film on glass, periodic 128 x 128, force control, blocks of 16",
+            Boundary::Periodic,
+            Some(16),
+        )?,
+        rough_film(
+            "rough film on glass, isolated 128 x 128, force control, blocks of 16",
+            Boundary::Isolated,
             Some(16),
         )?,
         Case {
