@@ -165,9 +165,12 @@ impl ContactSolver {
             std::mem::take(&mut ws.previous),
             std::mem::take(&mut ws.response),
         );
-        let responses = (|| {
-            super::workspace::fit(&mut field, n)?;
-            super::workspace::fit(&mut response, n)?;
+        // Sized on every rank before the collective applications (a rank
+        // that could not allocate stops them all).
+        let fitted = super::workspace::fit(&mut field, n)
+            .and_then(|()| super::workspace::fit(&mut response, n));
+        let fitted = self.agreed(fitted);
+        let responses = fitted.and_then(|()| {
             // On a split solver each rank loads and reads its own rows.
             field.fill(0.0);
             if local.start == 0 {
@@ -194,7 +197,7 @@ impl ContactSolver {
                 &response,
                 &sum,
             )
-        })();
+        });
         let space = self.agreed(responses);
         let ws = &mut self.workspace;
         (ws.previous, ws.response) = (field, response);
