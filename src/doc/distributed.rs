@@ -72,10 +72,10 @@
 //! automatic choice keeps the box and `set_coarse_blocks` refuses
 //! ([`Error::InvalidParameter`](crate::Error::InvalidParameter)).
 //! `tests/mpi.rs` runs a rough film, periodic and isolated, with blocks
-//! of 16 at 2 and 4 ranks (the same iterations as the serial solver with them, the results
-//! within 7e-15) and one on 2048^2 cells where serial and split solvers
-//! choose for themselves: both take the blocks, in the same iterations,
-//! the results within 5e-14.
+//! of 16 at 2 and 4 ranks (the same iterations as the serial solver with
+//! them, the results within 7e-15) and one on 2048^2 cells where serial
+//! and split solvers choose for themselves: both take the blocks, in the
+//! same iterations, the results within 5e-14.
 //!
 //! Split solvers run the active-set loops of a solve that finds its set
 //! slowly ([`solver`](crate::solver), `src/solver/active_set.rs`) as

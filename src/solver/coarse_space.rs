@@ -185,11 +185,12 @@ impl CoarseSpace {
         sum: &dyn Fn(&mut [f64]),
     ) -> Result<Self> {
         let (rows, columns) = cells;
-        let mut finite = [f64::from(u8::from(
+        // Any rank's values not finite stops every rank's build.
+        let mut not_finite = [f64::from(u8::from(
             !near.iter().chain(block).all(|v| v.is_finite()),
         ))];
-        sum(&mut finite);
-        if finite[0] > 0.0 {
+        sum(&mut not_finite);
+        if not_finite[0] > 0.0 {
             return Err(Error::Internal {
                 what: "two-level preconditioner",
                 detail: "the compliance's response to a block is not finite".into(),
@@ -292,7 +293,7 @@ impl CoarseSpace {
     /// Counts and own pairs for the working set `working` (this process's
     /// rows; the pairs of the blocks whose set changed); on a split solver
     /// the other ranks' blocks from them (`sum` adds a vector over the
-    /// ranks; one of two values a block).
+    /// ranks: two values a block).
     pub(super) fn update(&mut self, working: &[bool], sum: &dyn Fn(&mut [f64])) {
         let (side, columns, rows) = (self.side, self.columns, self.rows);
         let (near, per_row) = (&self.near, self.blocks.1);
