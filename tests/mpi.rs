@@ -229,8 +229,8 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
     let periodic = Grid::square_of_side(128, side)?;
     let odd = Grid::new(130, 72, side / 128.0)?;
     let sphere_grid = Grid::new(128, 128, 2e-5)?;
-    // The rough film with the box and, its 128 rows split into 64 or 32 a
-    // rank (whole rows of blocks), with blocks of 16, periodic and isolated.
+    // The rough film, with the box or with blocks of 16 (its 128 rows split
+    // into 64 or 32 a rank: whole rows of blocks), periodic and isolated.
     let rough_film = |name, boundary, blocks| -> Result<Case, layered_contact::Error> {
         Ok(Case {
             name,
