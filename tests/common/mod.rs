@@ -256,3 +256,21 @@ pub fn rough_surface(side: f64, n: usize, seed: u64) -> layered_contact::topogra
         seed,
     }
 }
+
+/// Two solves of one rough contact by different preconditioners reach the
+/// same contact: the same contact cells and depths within 1e-8 (each
+/// solve's tolerance, 1e-8, bounds its pressures' last change, not their
+/// error).
+#[allow(dead_code)]
+pub fn assert_same_contact(
+    a: &layered_contact::solver::Solution,
+    b: &layered_contact::solver::Solution,
+) {
+    assert_eq!(a.contact_cells, b.contact_cells);
+    assert!(
+        (a.depth / b.depth - 1.0).abs() < 1e-8,
+        "{} {}",
+        a.depth,
+        b.depth
+    );
+}
