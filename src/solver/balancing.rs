@@ -24,14 +24,12 @@
 //! preconditioner for rough contacts" and "The two-level preconditioner's
 //! applications in single precision".
 
-use std::ops::Range;
-
 use crate::error::{Error, Result};
 use crate::grid::Boundary;
-use crate::kernel::ComplianceOperator;
 
 use super::coarse_space::{near_kernel, CoarseSpace};
 use super::passes::Bounds;
+use super::split::over_ranks;
 use super::ContactSolver;
 
 /// The two-level preconditioner's state: its coarse space and the two
@@ -145,7 +143,7 @@ impl ContactSolver {
                 expected: "a divisor of both sides of a periodic grid",
             });
         }
-        if self.on_any_rank(!rows_fit_blocks(&local, rows, side)) {
+        if !self.ranks_hold_whole_blocks(side) {
             return Err(Error::InvalidParameter {
                 name: "coarse blocks (cells a side) on a solver split across MPI ranks",
                 value: side as f64,
@@ -209,6 +207,18 @@ impl ContactSolver {
             second: vec![0.0; blocks],
         }));
         Ok(())
+    }
+
+    /// Whether every rank holds whole rows of blocks of `side` cells (a
+    /// serial solver does): its rows begin on a block's edge and end on one
+    /// or at the grid's end. A split solver takes the two-level
+    /// preconditioner only then (each block's own pairs are summed by the
+    /// rank that holds it). Collective on a split solver.
+    pub(super) fn ranks_hold_whole_blocks(&self, side: usize) -> bool {
+        let (local, rows) = (self.operator.local_rows(), self.grid().rows());
+        let fits = local.start.is_multiple_of(side)
+            && (local.end.is_multiple_of(side) || local.end == rows);
+        !self.on_any_rank(!fits)
     }
 
     /// The block side of the two-level preconditioner, if it is on
@@ -378,23 +388,5 @@ impl ContactSolver {
             .into_iter()
             .fold((0.0, 0.0), |(a, b), (c, d)| (a + c, b + d));
         Ok((z_sum, rz))
-    }
-}
-
-/// Whether a process holding the grid rows `local` of `rows` holds whole
-/// rows of blocks of `side` cells: its rows begin on a block's edge and end
-/// on one or at the grid's end. A split solver takes the two-level
-/// preconditioner only if every rank's rows do (each block's own pairs are
-/// summed by the rank that holds it).
-pub(super) fn rows_fit_blocks(local: &Range<usize>, rows: usize, side: usize) -> bool {
-    local.start.is_multiple_of(side) && (local.end.is_multiple_of(side) || local.end == rows)
-}
-
-/// `values` summed over the ranks of a split `operator` (nothing when
-/// serial): [`ContactSolver::sum_over_ranks`] where the solver's workspace
-/// is borrowed.
-fn over_ranks(operator: &ComplianceOperator, values: &mut [f64]) {
-    if let Some(slab) = operator.slab() {
-        slab.sum(values);
     }
 }

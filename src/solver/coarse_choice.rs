@@ -9,7 +9,7 @@
 use crate::error::Result;
 use crate::grid::Boundary;
 
-use super::balancing::{rows_fit_blocks, QUIET_ITERATIONS};
+use super::balancing::QUIET_ITERATIONS;
 #[cfg(doc)]
 use super::multiresolution::{count_settled, SETTLED_COUNT_FRACTION};
 use super::ContactSolver;
@@ -159,9 +159,8 @@ impl ContactSolver {
         let fits = rows * columns >= AUTOMATIC_BLOCKS_CELLS
             && rows.min(columns) >= 4 * side
             && !(periodic && (rows % side != 0 || columns % side != 0));
-        let local = self.operator.local_rows();
         // Collective on a split solver: every rank takes the same branch.
-        let split_fits = !self.on_any_rank(!rows_fit_blocks(&local, rows, side));
+        let split_fits = self.ranks_hold_whole_blocks(side);
         let eligible = fits
             && split_fits
             && !self.start_level

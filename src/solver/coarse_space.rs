@@ -148,7 +148,7 @@ pub(super) struct CoarseSpace {
     columns: usize,
     /// The grid rows this process holds (all of them when serial; on a
     /// split solver whole rows of blocks,
-    /// [`rows_fit_blocks`](super::balancing::rows_fit_blocks)).
+    /// [`ContactSolver::ranks_hold_whole_blocks`](super::ContactSolver::ranks_hold_whole_blocks)).
     local: Range<usize>,
     /// Blocks each way (the last ones partial on an isolated grid whose
     /// sides `b` does not divide).
@@ -298,7 +298,7 @@ impl CoarseSpace {
         let (side, columns, rows) = (self.side, self.columns, self.rows);
         let (near, per_row) = (&self.near, self.blocks.1);
         let first = self.local.start;
-        // This process's block rows (whole: `rows_fit_blocks`).
+        // This process's block rows (whole: `ContactSolver::ranks_hold_whole_blocks`).
         let own_blocks = first / side * per_row..self.local.end.div_ceil(side) * per_row;
         // Block rows on every thread; each block's own cells and sums.
         crate::parallel::for_each_row_with(

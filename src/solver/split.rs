@@ -29,9 +29,7 @@ impl ContactSolver {
     /// Sums `values` over the ranks of a distributed solver (nothing when
     /// serial).
     pub(super) fn sum_over_ranks(&self, values: &mut [f64]) {
-        if let Some(slab) = self.operator.slab() {
-            slab.sum(values);
-        }
+        over_ranks(&self.operator, values);
     }
 
     /// `value` summed over the ranks (itself when serial).
@@ -184,5 +182,14 @@ impl ContactSolver {
             stats.largest = sums[4];
         }
         stats
+    }
+}
+
+/// `values` summed over the ranks of a split `operator` (nothing when
+/// serial): [`ContactSolver::sum_over_ranks`] where the solver's workspace
+/// is borrowed (the two-level preconditioner's passes).
+pub(super) fn over_ranks(operator: &ComplianceOperator, values: &mut [f64]) {
+    if let Some(slab) = operator.slab() {
+        slab.sum(values);
     }
 }
