@@ -40,7 +40,9 @@
 //! phase's rate, set by the preconditioner), and when the first fine
 //! iteration ended (the multi-resolution start before it) and the mean time
 //! of a fine iteration after it; `TRACE=all` also a line per fine
-//! iteration (`# k residual contact_cells`). `COLD=1` solves without the
+//! iteration (`# k residual contact_cells`). Both add the iteration at
+//! which the solver's automatic choice of preconditioner decides and the
+//! box's factor it judges by (`support/choice.rs`). `COLD=1` solves without the
 //! multi-resolution start. `BANDS=1` keeps the pressures and prints the
 //! solution's edge flag and the share of the force on the cells within
 //! 5, 10 and 20 % of the side from the grid's edges.
@@ -51,6 +53,8 @@ use layered_contact::solver::{ContactSolver, Fields, IterationInfo, SolverParams
 use layered_contact::topography::{Amplitude, SelfAffine};
 use layered_contact::{Base, Boundary, Grid, Material, Substrate};
 
+#[path = "support/choice.rs"]
+mod choice;
 #[path = "support/memory.rs"]
 mod memory;
 
@@ -214,6 +218,9 @@ fn print_rates(trace: &[(f64, usize)]) {
         rate(0, settled),
         rate(settled, last)
     );
+    if let Some((k, rate)) = choice::decision(trace) {
+        println!("# the automatic choice decides at iteration {k} on a factor of {rate:.3}");
+    }
 }
 
 /// The solution's edge flag and the share of the force on the cells within

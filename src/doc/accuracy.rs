@@ -263,9 +263,13 @@
 //! passes cost up to a fifth of an iteration and take back part of the
 //! gain (`BENCHMARKS.md`, "The box inverse past the contact's edges").
 //! With the roughness's cut-off fixed as the grid is refined the count
-//! stays nearly flat (18 to 28 from 512^2 to 8192^2, before the
-//! extension): the growth is the surface's, which gains a scale with every
-//! doubling. On a grid even each
+//! stays nearly flat: from 512^2 to 8192^2 the isolated film 16 / 16 / 16
+//! / 17 / 20, the periodic film 13 / 14 / 15 / 16 / 19, a periodic
+//! half-space 20 / 21 / 21 / 22 / 24, a periodic coated stack 39 to 52;
+//! an isolated coated stack over a soft base 45 / 46 / 54 / 55 / 67
+//! (2026-12-05, `BENCHMARKS.md`, "The choice on fixed roughness and on one
+//! patch"). The growth on the surfaces above is the surface's, which gains
+//! a scale with every doubling. On a grid even each
 //! way the coarse levels take Galerkin's coarse operator `R K P` of the
 //! level above from its spectrum (nothing evaluated on the coarse grids:
 //! 1.5 s less of the isolated 4096^2 film's start). The coarse levels of
@@ -298,11 +302,16 @@
 //! films, a periodic half-space and
 //! a coating over a soft base it took 0.73 to 0.94 times the box's time
 //! (the isolated film at 2048^2 1.13); on smaller grids, where it cost up
-//! to 1.36 times, and for contacts of few patches, the box
-//! (`BENCHMARKS.md`, "A two-level preconditioner for rough contacts", "The
-//! coarse correction once the contact settles" and "The solver's own
-//! choice of preconditioner", have the counts, times and memory from 512^2
-//! to 8192^2).
+//! to 1.36 times, and for contacts of few patches, the box: a sphere, a
+//! flat punch or a cone on 2048^2 cells took 1.4 to 1.8 times the box's
+//! time with the blocks, even a punch on a coated stack whose box
+//! converged slowly (a factor of 0.8); rough contacts of fixed roughness,
+//! which keep the box by the same test, forgo up to a quarter on a coated
+//! stack and save up to a third on the films (`BENCHMARKS.md`, "A
+//! two-level preconditioner for rough contacts", "The coarse correction
+//! once the contact settles", "The solver's own choice of preconditioner"
+//! and "The choice on fixed roughness and on one patch", have the counts,
+//! times and memory from 512^2 to 8192^2).
 //!
 //! ### Rough contacts: the contact area and the kernel
 //!

@@ -33,7 +33,13 @@ pub const AUTOMATIC_BLOCKS_CELLS: usize = 2048 * 2048;
 /// to 0.88; on a periodic two-way sinusoid of 32 waves a side on 2048^2
 /// cells (1024 equal patches) 0.12, where the blocks took 11 fine
 /// iterations against the box's 10 and 1.1 to 1.3 times its time
-/// (BENCHMARKS.md, "The solver's own choice of preconditioner").
+/// (BENCHMARKS.md, "The solver's own choice of preconditioner"). No
+/// threshold serves without the patch test: a flat punch on a coated stack
+/// decides on 0.8 and the blocks take 1.4 times the box's time, and a
+/// threshold of 0.57, which would keep the box for the isolated film at
+/// 2048^2 (0.54, the one loss), would also keep it for the tamaas problem
+/// at 4096^2 (0.47, where the blocks take 0.8 of its time): BENCHMARKS.md,
+/// "The choice on fixed roughness and on one patch".
 pub const AUTOMATIC_BLOCKS_BOX_RATE: f64 = 0.3;
 
 /// The block side the automatic choice takes (cells a side), the side of
