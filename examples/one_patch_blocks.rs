@@ -17,7 +17,8 @@
 //! solve's time, the force, the contact cells, and the iteration at which
 //! the automatic choice decides and the box's factor it judges by
 //! (`support/choice.rs`). N defaults to 2048 (the automatic choice's
-//! smallest grid; an argument that is not a count too). `RAYON_NUM_THREADS` sets the threads.
+//! smallest grid), also for an argument that is not a count.
+//! `RAYON_NUM_THREADS` sets the threads.
 
 use std::time::Instant;
 

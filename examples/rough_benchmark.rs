@@ -42,10 +42,10 @@
 //! of a fine iteration after it; `TRACE=all` also a line per fine
 //! iteration (`# k residual contact_cells`). Both add the iteration at
 //! which the solver's automatic choice of preconditioner decides and the
-//! box's factor it judges by (`support/choice.rs`). `COLD=1` solves without the
-//! multi-resolution start. `BANDS=1` keeps the pressures and prints the
-//! solution's edge flag and the share of the force on the cells within
-//! 5, 10 and 20 % of the side from the grid's edges.
+//! box's factor it judges by (`support/choice.rs`). `COLD=1` solves
+//! without the multi-resolution start. `BANDS=1` keeps the pressures and
+//! prints the solution's edge flag and the share of the force on the cells
+//! within 5, 10 and 20 % of the side from the grid's edges.
 
 use std::time::Instant;
 
