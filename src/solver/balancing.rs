@@ -29,7 +29,7 @@ use crate::grid::Boundary;
 
 use super::coarse_space::{near_kernel, CoarseSpace};
 use super::passes::Bounds;
-use super::split::over_ranks;
+use super::split::{over_ranks, summed_over_ranks};
 use super::ContactSolver;
 
 /// The two-level preconditioner's state: its coarse space and the two
@@ -289,9 +289,8 @@ impl ContactSolver {
         // The scale of the load `Z c1` the same on every rank (each solved
         // the coarse system itself; ranks whose FFTs round otherwise may
         // differ in the last digits): the sum of their largest values.
-        let mut largest = [first.iter().fold(0.0_f64, |m, c| m.max(c.abs()))];
-        over_ranks(&self.operator, &mut largest);
-        let [largest] = largest;
+        let largest = first.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
+        let largest = summed_over_ranks(&self.operator, largest);
         // s = r - A Z c1 on the set, into `previous`.
         let (gap, working, space_at) = (&ws.gap, &ws.working, &*space);
         let coarse = &*first;
@@ -323,9 +322,7 @@ impl ContactSolver {
             },
         )?;
         // Scales the same on every rank: the sums of their largest.
-        let mut s_max = [maxima.into_iter().fold(0.0, f64::max)];
-        over_ranks(&self.operator, &mut s_max);
-        let [s_max] = s_max;
+        let s_max = summed_over_ranks(&self.operator, maxima.into_iter().fold(0.0, f64::max));
         // y = B s in `response`, zero off the set.
         std::mem::swap(&mut ws.gap, &mut ws.previous);
         let boxed = self.precondition_working_set(bounds, 0.0, s_max);
@@ -344,9 +341,7 @@ impl ContactSolver {
             }
             largest
         });
-        let mut y_max = [maxima.into_iter().fold(0.0, f64::max)];
-        over_ranks(&self.operator, &mut y_max);
-        let [y_max] = y_max;
+        let y_max = summed_over_ranks(&self.operator, maxima.into_iter().fold(0.0, f64::max));
         // Z^T A y, each row's part of each block's sum.
         let (y, working) = (&ws.response, &ws.working);
         let parts = self.operator.apply_rows_single(

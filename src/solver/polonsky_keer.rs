@@ -542,9 +542,7 @@ impl ContactSolver {
             let mut arithmetic = Arithmetic::default();
             if single {
                 // A scale the same on every rank: the sum of the largest.
-                let mut magnitude = [t_max];
-                self.sum_over_ranks(&mut magnitude);
-                arithmetic.direction = Some(magnitude[0]);
+                arithmetic.direction = Some(self.summed(t_max));
             }
             let cells = working_cells.clone();
             let (energy, summed_single) =

@@ -34,9 +34,7 @@ impl ContactSolver {
 
     /// `value` summed over the ranks (itself when serial).
     pub(super) fn summed(&self, value: f64) -> f64 {
-        let mut sum = [value];
-        self.sum_over_ranks(&mut sum);
-        sum[0]
+        summed_over_ranks(&self.operator, value)
     }
 
     /// [`Error::Unsupported`] for `what` on a distributed solver: only the
@@ -192,4 +190,13 @@ pub(super) fn over_ranks(operator: &ComplianceOperator, values: &mut [f64]) {
     if let Some(slab) = operator.slab() {
         slab.sum(values);
     }
+}
+
+/// `value` summed over the ranks of a split `operator` (itself when
+/// serial): [`ContactSolver::summed`] where the solver's workspace is
+/// borrowed.
+pub(super) fn summed_over_ranks(operator: &ComplianceOperator, value: f64) -> f64 {
+    let mut sum = [value];
+    over_ranks(operator, &mut sum);
+    sum[0]
 }

@@ -48,9 +48,7 @@ impl ContactSolver {
             Some(magnitude) => Some(magnitude),
             None if deferred && !self.double_preconditioner => {
                 // A scale the same on every rank: the sum of the ranks' largest.
-                let mut magnitude = [t_max];
-                self.sum_over_ranks(&mut magnitude);
-                Some(magnitude[0])
+                Some(self.summed(t_max))
             }
             None => None,
         };
