@@ -46,20 +46,24 @@ pub(super) struct Balancing {
 
 /// The two-level preconditioner joins the constrained conjugate gradients
 /// once this many iterations in a row have left the contact count settled
-/// ([`coarse_choice`](super::coarse_choice)). Its coarse correction,
-/// built over the working set's cells, equilibrates the set it is given:
-/// on a set that still has to shed cells it spreads pressure over them
-/// instead. On the coated stack of `examples/rough_benchmark.rs` (a stiff
-/// coating over a soft base, whose contact sheds cells for dozens of
-/// iterations) the blocks taken in every iteration settled its set at the
-/// 47th and 83rd fine iteration at 1024^2 and 2048^2, against the box's
-/// 61st and 67th; taken after one quiet iteration, at 4096^2 they joined
-/// during a pause in the early shedding, tripled the contact in three
-/// iterations and took 226 iterations (the box 105). After three: 55 / 50
-/// / 62 fine iterations at 1024^2 / 2048^2 / 4096^2 against the box's
-/// 85 / 82 / 105, and the rough films and the tamaas problem within a few
-/// iterations of the blocks taken throughout (BENCHMARKS.md, "The coarse
-/// correction once the contact settles").
+/// ([`coarse_choice`](super::coarse_choice)). It is a metric for the linear
+/// problem on a fixed set; while the set still moves, the projected steps
+/// in it clamp more than a third of the contact, and the contact grows
+/// instead of settling (a projected step in a metric that couples the cells
+/// at their bound to the free ones need not descend: Bertsekas 1982, SIAM
+/// J. Control Optim. 20, 221-246; measured in BENCHMARKS.md, "The blocks
+/// while the contact still moves"). On the coated stack of
+/// `examples/rough_benchmark.rs` (a stiff coating over a soft base, whose
+/// contact sheds cells for dozens of iterations) the blocks taken in every
+/// iteration settled its set at the 47th and 83rd fine iteration at 1024^2
+/// and 2048^2, against the box's 61st and 67th; taken after one quiet
+/// iteration, at 4096^2 they joined during a pause in the early shedding,
+/// tripled the contact in three iterations and took 226 iterations (the box
+/// 105). After three: 55 / 50 / 62 fine iterations at 1024^2 / 2048^2 /
+/// 4096^2 against the box's 85 / 82 / 105, the rough films within a few
+/// iterations of the blocks taken throughout, the tamaas problem 35
+/// against 26 at 4096^2 (BENCHMARKS.md, "The coarse correction once the
+/// contact settles").
 pub(super) const QUIET_ITERATIONS: usize = 3;
 
 impl ContactSolver {
