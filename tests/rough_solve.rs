@@ -81,7 +81,7 @@ fn rough_contacts_close_the_gaps_of_their_fresh_displacement() {
                     let pressure: Vec<f64> = solution.pressure.unwrap().iter().copied().collect();
                     assert!(
                         worst <= 1e-10 * largest,
-                        "{boundary:?}: {worst} of {largest}"
+                        "{boundary:?}, blocks {blocks:?}: {worst} of {largest}"
                     );
                     let fraction = solution.contact_area / (side * side);
                     assert!((0.05..0.6).contains(&fraction), "{fraction}");
@@ -105,11 +105,11 @@ fn rough_contacts_close_the_gaps_of_their_fresh_displacement() {
                     }
                     assert!(
                         closed <= 1e-7 * range,
-                        "{boundary:?}: closed {closed} of {range}"
+                        "{boundary:?}, blocks {blocks:?}: closed {closed} of {range}"
                     );
                     assert!(
                         open >= -1e-6 * range,
-                        "{boundary:?}: open {open} of {range}"
+                        "{boundary:?}, blocks {blocks:?}: open {open} of {range}"
                     );
                     checked += 1;
                 }
