@@ -54,13 +54,21 @@ fn rough_contacts_close_the_gaps_of_their_fresh_displacement() {
     let mut checked = 0;
     // The solves' iterations under the box and under the blocks.
     let mut iterations: [Vec<usize>; 2] = [Vec::new(), Vec::new()];
+    // Heights measured down from the indenter's lowest point (its profile),
+    // the same for every solve.
+    let profile: Vec<f64> = (0..grid.len())
+        .map(|c| {
+            let (x, y) = grid.cell_centre(c / n, c % n);
+            indenter.height(x, y)
+        })
+        .collect();
+    let force = 0.05 * rubber.contact_modulus() * side * side * 0.1;
     for body in &bodies {
         for boundary in [Boundary::Periodic, Boundary::Isolated] {
+            let mut operator = ComplianceOperator::new(body, &grid, boundary).unwrap();
             for (k, blocks) in [None, Some(8)].into_iter().enumerate() {
                 let mut solver = ContactSolver::new(body, &grid, boundary, params).unwrap();
                 solver.set_coarse_blocks(blocks).unwrap();
-                let mut operator = ComplianceOperator::new(body, &grid, boundary).unwrap();
-                let force = 0.05 * rubber.contact_modulus() * side * side * 0.1;
                 let (by_force, _) = solver.solve_force(&indenter, force, None, &mut ()).unwrap();
                 let mut solutions = vec![by_force];
                 // Depth control too where the uniform mode is bounded (not on a
@@ -85,14 +93,7 @@ fn rough_contacts_close_the_gaps_of_their_fresh_displacement() {
                     );
                     let fraction = solution.contact_area / (side * side);
                     assert!((0.05..0.6).contains(&fraction), "{fraction}");
-                    // Gaps of the fresh displacement (heights measured down
-                    // from the indenter's lowest point: its profile).
-                    let profile: Vec<f64> = (0..grid.len())
-                        .map(|c| {
-                            let (x, y) = grid.cell_centre(c / n, c % n);
-                            indenter.height(x, y)
-                        })
-                        .collect();
+                    // Gaps of the fresh displacement.
                     let mut closed = 0.0f64;
                     let mut open = 0.0f64;
                     for ((h, u), p) in profile.iter().zip(&fresh).zip(&pressure) {
