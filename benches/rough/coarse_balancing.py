@@ -25,7 +25,11 @@ extension (`edge_extension.laplace(1, ...)`) in both, and a start from the
 problem on the grid twice coarser (the heights averaged over 2 x 2 cells,
 solved to `1e-3`, its pressures repeated on the fine cells).
 
-Usage: python coarse_balancing.py B N [N ...] [--crate]   (numpy, scipy, layered_contact)
+With `--from K` (as the crate, 2026-12-06): the box alone for the first
+K - 1 iterations, balancing from the K-th, the conjugation restarted there.
+
+Usage: python coarse_balancing.py B N [N ...] [--crate [--from K]]
+(numpy, scipy, layered_contact)
 """
 
 import sys
@@ -133,9 +137,9 @@ def coarse_start(h):
     return np.repeat(np.repeat(p, 2, axis=0), 2, axis=1)
 
 
-def crate_like(b, sizes):
+def crate_like(b, sizes, first=1):
     """The box with the edge extension from a coarse start, alone and
-    inside balancing."""
+    inside balancing (from the `first` iteration on, the box before)."""
     print(f"blocks of {b}; the edge extension (one sweep) and a start from the grid twice "
           "coarser, as the crate")
     print("| N | constrained: box + extension | balancing, cheap E~ (neighbours exact) |")
@@ -148,12 +152,18 @@ def crate_like(b, sizes):
         start = coarse_start(h)
         _, plain = pressure_space(h, 1e-8, precondition=extended, start=start)
 
+        calls = [0]
+
         def balanced(W, r):
+            calls[0] += 1
+            if calls[0] < first:
+                return extended(W, r)
             ops = cheap_ops(W, b, 1, kernel, kb)
             ops.B = lambda v: extended(W, ops.embed(v))[W]
             return ops.embed(ops.balancing(r[W]))
 
-        _, two = pressure_space(h, 1e-8, precondition=balanced, start=start)
+        _, two = pressure_space(h, 1e-8, precondition=balanced, start=start,
+                                restart_at=first if first > 1 else None)
         print(f"| {n} | {plain} | {two} |", flush=True)
 
 
@@ -175,8 +185,14 @@ def main(b, sizes):
 
 
 if __name__ == "__main__":
-    sizes = [int(a) for a in sys.argv[2:] if not a.startswith("--")] or [128, 256]
-    if "--crate" in sys.argv:
-        crate_like(int(sys.argv[1]), sizes)
+    args = sys.argv[1:]
+    first = 1
+    if "--from" in args:
+        k = args.index("--from")
+        first = int(args[k + 1])
+        del args[k:k + 2]
+    sizes = [int(a) for a in args[1:] if not a.startswith("--")] or [128, 256]
+    if "--crate" in args:
+        crate_like(int(args[0]), sizes, first)
     else:
-        main(int(sys.argv[1]), sizes)
+        main(int(args[0]), sizes)

@@ -60,11 +60,13 @@ def operator(multiplier, single=False):
     return lambda x: np.fft.irfft2(np.fft.rfft2(x) * multiplier, s=x.shape)
 
 
-def pressure_space(h, tol, rule="fr", single=False, precondition=None, start=None):
+def pressure_space(h, tol, rule="fr", single=False, precondition=None, start=None,
+                   restart_at=None):
     """Pressures and iterations of the constrained conjugate gradients;
     `precondition(W, r)`, if given, replaces the stiffness on the working
     set `W` (`two_level.py`); `start`, if given, the first pressures
-    (`coarse_balancing.py`)."""
+    (`coarse_balancing.py`); `restart_at`, if given, the iteration whose
+    conjugation restarts (where `precondition` changes metric)."""
     stiffness, compliance = spectra(h.shape[0])
     K, M = operator(compliance), operator(stiffness, single)
     p = np.full(h.shape, PBAR) if start is None else start * (PBAR / start.mean())
@@ -78,7 +80,7 @@ def pressure_space(h, tol, rule="fr", single=False, precondition=None, start=Non
         z = np.where(W, M(r) if precondition is None else precondition(W, r), 0.0)
         z = np.where(W, z - z[W].mean(), 0.0)
         rz = np.sum(r * z)
-        if rz_old <= 0:
+        if rz_old <= 0 or it == restart_at:
             beta = 0.0
         elif rule == "fr":
             beta = rz / rz_old

@@ -52,7 +52,14 @@ pub(super) struct Balancing {
 /// instead of settling (a projected step in a metric that couples the cells
 /// at their bound to the free ones need not descend: Bertsekas 1982, SIAM
 /// J. Control Optim. 20, 221-246; measured in BENCHMARKS.md, "The blocks
-/// while the contact still moves"). On the coated stack of
+/// while the contact still moves"). On the tamaas problem at 1024^2 that
+/// runaway needs the multi-resolution start's sampled coarse heights
+/// (from a cold start, or with the coarse heights averaged, blocks taken
+/// from the third iteration converge in 26 and 23 iterations), but from
+/// 2048^2 blocks taken early cost iterations from either start (38 and 42
+/// at 2048^2 and 4096^2, against 28 and 35 after three quiet ones), and
+/// the stack runs away from either (BENCHMARKS.md, "What the blocks'
+/// runaway depends on"). On the coated stack of
 /// `examples/rough_benchmark.rs` (a stiff coating over a soft base, whose
 /// contact sheds cells for dozens of iterations) the blocks taken in every
 /// iteration settled its set at the 47th and 83rd fine iteration at 1024^2

@@ -100,7 +100,13 @@ impl ContactSolver {
     /// started from the next coarser grid, its pressures spread over the
     /// four cells each coarse cell covers. The coarse grid sees the
     /// indenter shifted so that its cell centres fall on the centres of the
-    /// fine cells they cover (half a fine cell along an odd side). Where
+    /// fine cells they cover (half a fine cell along an odd side), sampled
+    /// there: on a height map, whose lookup is the nearest cell's, one of
+    /// the four fine cells around that point, not their mean. The mean
+    /// (each coarse level the mean of the finest cells it covers), measured
+    /// on the rough problems of `examples/rough_benchmark.rs` at 1024^2 to
+    /// 4096^2, moved the fine counts by -15 to +3 and is not taken
+    /// (BENCHMARKS.md, "What the blocks' runaway depends on"). Where
     /// the fine grid is even each way (and the solver serial), the coarse
     /// operator is Galerkin's `R K P` of the fine one, taken from its
     /// spectrum ([`ComplianceOperator::halved`]; nothing evaluated on the
