@@ -211,6 +211,34 @@ struct Case {
     automatic_blocks: bool,
 }
 
+impl Case {
+    /// A case whose split solves agree with the serial one to
+    /// [`AGREEMENT`], under the iteration limit of `SolverParams`, with the
+    /// box preconditioner unless the solver chooses the blocks itself
+    /// (the struct's update syntax sets the rest).
+    fn new(
+        name: &'static str,
+        (body, grid, boundary): (Substrate, Grid, Boundary),
+        indenter: Box<dyn Indenter>,
+        loads: Vec<f64>,
+        force: bool,
+    ) -> Self {
+        Case {
+            name,
+            body,
+            grid,
+            boundary,
+            indenter,
+            loads,
+            force,
+            most_iterations: None,
+            pressure_agreement: AGREEMENT,
+            blocks: None,
+            automatic_blocks: false,
+        }
+    }
+}
+
 fn rough(grid: &Grid, side: f64, seed: u64) -> Result<HeightMap, layered_contact::Error> {
     SelfAffine {
         hurst: 0.8,
@@ -233,34 +261,28 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
     // into 64 or 32 a rank: whole rows of blocks), periodic and isolated.
     let rough_film = |name, boundary, blocks| -> Result<Case, layered_contact::Error> {
         Ok(Case {
-            name,
-            body: film.clone(),
-            grid: periodic,
-            boundary,
-            indenter: Box::new(rough(&periodic, side, 1)?),
-            loads: vec![5e3 * side * side, 2e4 * side * side],
-            force: true,
-            most_iterations: None,
-            pressure_agreement: AGREEMENT,
             blocks,
-            automatic_blocks: false,
+            ..Case::new(
+                name,
+                (film.clone(), periodic, boundary),
+                Box::new(rough(&periodic, side, 1)?),
+                vec![5e3 * side * side, 2e4 * side * side],
+                true,
+            )
         })
     };
     // The automatic choice's grid: the split solvers must decide with the
     // serial one (a collective decision) and take the blocks.
     let large = Grid::square_of_side(2048, side)?;
     let automatic = Case {
-        name: "rough film on glass, periodic 2048 x 2048, force control, the solver's choice",
-        body: film.clone(),
-        grid: large,
-        boundary: Boundary::Periodic,
-        indenter: Box::new(rough(&large, side, 1)?),
-        loads: vec![2e4 * side * side],
-        force: true,
-        most_iterations: None,
-        pressure_agreement: AGREEMENT,
-        blocks: None,
         automatic_blocks: true,
+        ..Case::new(
+            "rough film on glass, periodic 2048 x 2048, force control, the solver's choice",
+            (film.clone(), large, Boundary::Periodic),
+            Box::new(rough(&large, side, 1)?),
+            vec![2e4 * side * side],
+            true,
+        )
     };
     Ok(vec![
         automatic,
@@ -279,47 +301,29 @@ fn cases() -> Result<Vec<Case>, layered_contact::Error> {
             Boundary::Isolated,
             Some(16),
         )?,
-        Case {
-            name: "rough half-space, isolated 130 x 72 (odd coarse rows), depth control",
-            body: half_space,
-            grid: odd,
-            boundary: Boundary::Isolated,
-            indenter: Box::new(rough(&odd, side, 2)?),
-            loads: vec![0.5e-6, 1e-6],
-            force: false,
-            most_iterations: None,
-            pressure_agreement: AGREEMENT,
-            blocks: None,
-            automatic_blocks: false,
-        },
-        Case {
-            name: "sphere on a film on glass, isolated 128 x 128, depth control",
-            body: film.clone(),
-            grid: sphere_grid,
-            boundary: Boundary::Isolated,
-            indenter: Box::new(Sphere::new(5e-3)?),
-            loads: vec![2e-6, 4e-6],
-            force: false,
-            most_iterations: None,
-            pressure_agreement: AGREEMENT,
-            blocks: None,
-            automatic_blocks: false,
-        },
+        Case::new(
+            "rough half-space, isolated 130 x 72 (odd coarse rows), depth control",
+            (half_space, odd, Boundary::Isolated),
+            Box::new(rough(&odd, side, 2)?),
+            vec![0.5e-6, 1e-6],
+            false,
+        ),
+        Case::new(
+            "sphere on a film on glass, isolated 128 x 128, depth control",
+            (film.clone(), sphere_grid, Boundary::Isolated),
+            Box::new(Sphere::new(5e-3)?),
+            vec![2e-6, 4e-6],
+            false,
+        ),
         // The contact misses the outer ranks' rows: their warm starts have
         // no contact while the inner ranks' do.
-        Case {
-            name: "sphere on a film on glass, isolated 128 x 128, force control",
-            body: film,
-            grid: sphere_grid,
-            boundary: Boundary::Isolated,
-            indenter: Box::new(Sphere::new(5e-3)?),
-            loads: vec![2e-3, 8e-3],
-            force: true,
-            most_iterations: None,
-            pressure_agreement: AGREEMENT,
-            blocks: None,
-            automatic_blocks: false,
-        },
+        Case::new(
+            "sphere on a film on glass, isolated 128 x 128, force control",
+            (film, sphere_grid, Boundary::Isolated),
+            Box::new(Sphere::new(5e-3)?),
+            vec![2e-3, 8e-3],
+            true,
+        ),
         plate()?,
     ])
 }
@@ -346,17 +350,19 @@ fn plate() -> Result<Case, layered_contact::Error> {
     let tip = Axisymmetric::new(&body, 10.0)?.tip(Tip::Sphere { radius: 23.4e-6 }, 0.0)?;
     let depth = |radii: f64| tip.at_contact_radius(radii * h).map(|e| e.depth);
     Ok(Case {
-        name: "sphere on a stiff layer over a far softer base (a ring), isolated 96 x 96",
-        body,
-        grid: Grid::new(96, 96, 2.6 * 8.0 * h / 96.0)?,
-        boundary: Boundary::Isolated,
-        indenter: Box::new(Sphere::new(23.4e-6)?),
-        loads: vec![depth(6.0)?, depth(8.0)?],
-        force: false,
         most_iterations: Some(1600),
         pressure_agreement: 1e-9,
-        blocks: None,
-        automatic_blocks: false,
+        ..Case::new(
+            "sphere on a stiff layer over a far softer base (a ring), isolated 96 x 96",
+            (
+                body,
+                Grid::new(96, 96, 2.6 * 8.0 * h / 96.0)?,
+                Boundary::Isolated,
+            ),
+            Box::new(Sphere::new(23.4e-6)?),
+            vec![depth(6.0)?, depth(8.0)?],
+            false,
+        )
     })
 }
 
