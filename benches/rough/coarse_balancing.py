@@ -191,6 +191,8 @@ if __name__ == "__main__":
         k = args.index("--from")
         first = int(args[k + 1])
         del args[k:k + 2]
+        if "--crate" not in args:
+            raise SystemExit("--from K needs --crate")
     sizes = [int(a) for a in args[1:] if not a.startswith("--")] or [128, 256]
     if "--crate" in args:
         crate_like(int(args[0]), sizes, first)
