@@ -4,7 +4,6 @@
 //! whole change of the pressure. The solution they return must still be
 //! the contact of the displacement `K p` applied afresh.
 
-use layered_contact::indenter::Indenter;
 use layered_contact::kernel::ComplianceOperator;
 use layered_contact::solver::{ContactSolver, Fields, SolverParams};
 use layered_contact::{Boundary, Grid, Material, Substrate};
@@ -43,9 +42,11 @@ fn rough_contacts_close_the_gaps_of_their_fresh_displacement() {
     ];
     let surface = rough_surface(side, n, 7);
     let indenter = surface.indenter(&grid).unwrap();
-    let heights = surface.heights(&grid).unwrap();
-    let range = heights.iter().fold(f64::MIN, |m, h| m.max(*h))
-        - heights.iter().fold(f64::MAX, |m, h| m.min(*h));
+    // The indenter's heights at the cell centres, measured down from its
+    // lowest point (its profile), the same for every solve.
+    let profile = indenter.heights();
+    let range = profile.iter().fold(f64::MIN, |m, h| m.max(*h))
+        - profile.iter().fold(f64::MAX, |m, h| m.min(*h));
     let params = SolverParams {
         fields: Fields::all(),
         tolerance: 1e-8,
@@ -54,14 +55,6 @@ fn rough_contacts_close_the_gaps_of_their_fresh_displacement() {
     let mut checked = 0;
     // The solves' iterations under the box and under the blocks.
     let mut iterations: [Vec<usize>; 2] = [Vec::new(), Vec::new()];
-    // Heights measured down from the indenter's lowest point (its profile),
-    // the same for every solve.
-    let profile: Vec<f64> = (0..grid.len())
-        .map(|c| {
-            let (x, y) = grid.cell_centre(c / n, c % n);
-            indenter.height(x, y)
-        })
-        .collect();
     let force = 0.05 * rubber.contact_modulus() * side * side * 0.1;
     for body in &bodies {
         for boundary in [Boundary::Periodic, Boundary::Isolated] {
