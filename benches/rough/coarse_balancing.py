@@ -162,8 +162,7 @@ def crate_like(b, sizes, first=1):
             ops.B = lambda v: extended(W, ops.embed(v))[W]
             return ops.embed(ops.balancing(r[W]))
 
-        _, two = pressure_space(h, 1e-8, precondition=balanced, start=start,
-                                restart_at=first if first > 1 else None)
+        _, two = pressure_space(h, 1e-8, precondition=balanced, start=start, restart_at=first)
         print(f"| {n} | {plain} | {two} |", flush=True)
 
 
