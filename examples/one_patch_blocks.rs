@@ -16,18 +16,15 @@
 //! Prints a line per contact and preconditioner: the fine iterations, the
 //! solve's time, the force, the contact cells, and the iteration at which
 //! the automatic choice decides and the box's factor it judges by
-//! (`support/choice.rs`). N defaults to 2048 (the automatic choice's
+//! (`ContactSolver::last_preconditioning`). N defaults to 2048 (the automatic choice's
 //! smallest grid), also for an argument that is not a count.
 //! `RAYON_NUM_THREADS` sets the threads.
 
 use std::time::Instant;
 
 use layered_contact::indenter::{Cone, FlatPunch, Indenter, Sphere};
-use layered_contact::solver::{ContactSolver, IterationInfo, SolverParams};
+use layered_contact::solver::{ContactSolver, SolverParams};
 use layered_contact::{Base, Boundary, Grid, Material, Substrate};
-
-#[path = "support/choice.rs"]
-mod choice;
 
 fn main() -> Result<(), layered_contact::Error> {
     let n = std::env::args()
@@ -61,12 +58,12 @@ fn main() -> Result<(), layered_contact::Error> {
         for blocks in [None, Some(16)] {
             let mut solver = ContactSolver::new(body, &grid, Boundary::Isolated, params)?;
             solver.set_coarse_blocks(blocks)?;
-            let mut trace = Vec::new();
-            let mut observe = |i: &IterationInfo| trace.push((i.residual, i.contact_cells));
             let start = Instant::now();
-            let (solution, _) = solver.solve_depth(indenter, depth, None, &mut observe)?;
+            let (solution, _) = solver.solve_depth(indenter, depth, None, &mut ())?;
             let seconds = start.elapsed().as_secs_f64();
-            let decides = choice::decision(&trace)
+            let decides = solver
+                .last_preconditioning()
+                .and_then(|p| Some((p.decided_after?, p.box_factor?)))
                 .map_or("never".to_string(), |(k, r)| format!("at {k} on {r:.3}"));
             let preconditioner = blocks.map_or("box".to_string(), |b| format!("blocks of {b}"));
             println!(

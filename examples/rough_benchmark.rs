@@ -40,9 +40,10 @@
 //! phase's rate, set by the preconditioner), and when the first fine
 //! iteration ended (the multi-resolution start before it) and the mean time
 //! of a fine iteration after it; `TRACE=all` also a line per fine
-//! iteration (`# k residual contact_cells`). Both add the iteration at
-//! which the solver's automatic choice of preconditioner decides and the
-//! box's factor it judges by (`support/choice.rs`). `COLD=1` solves
+//! iteration (`# k residual contact_cells`, `k` from 0). Both add the
+//! iterations done when the solver's choice of preconditioner was made,
+//! the box's factor it judged by and the iterations that took the
+//! two-level preconditioner (`ContactSolver::last_preconditioning`). `COLD=1` solves
 //! without the multi-resolution start. `BANDS=1` keeps the pressures and
 //! prints the solution's edge flag and the share of the force on the cells
 //! within 5, 10 and 20 % of the side from the grid's edges.
@@ -53,8 +54,6 @@ use layered_contact::solver::{ContactSolver, Fields, IterationInfo, SolverParams
 use layered_contact::topography::{Amplitude, SelfAffine};
 use layered_contact::{Base, Boundary, Grid, Material, Substrate};
 
-#[path = "support/choice.rs"]
-mod choice;
 #[path = "support/memory.rs"]
 mod memory;
 
@@ -181,6 +180,15 @@ fn main() -> Result<(), layered_contact::Error> {
                 }
             }
             print_rates(&trace);
+            if let Some(p) = solver.last_preconditioning() {
+                if let (Some(k), Some(rate)) = (p.decided_after, p.box_factor) {
+                    println!(
+                        "# the choice decides at iteration {k} on a factor of {rate:.3}; \
+                         {} iterations with the blocks",
+                        p.two_level_iterations
+                    );
+                }
+            }
             let first = first.unwrap_or(f64::NAN);
             let per = (solve - first) / (trace.len().max(2) - 1) as f64;
             println!(
@@ -218,9 +226,6 @@ fn print_rates(trace: &[(f64, usize)]) {
         rate(0, settled),
         rate(settled, last)
     );
-    if let Some((k, rate)) = choice::decision(trace) {
-        println!("# the automatic choice decides at iteration {k} on a factor of {rate:.3}");
-    }
 }
 
 /// The solution's edge flag and the share of the force on the cells within

@@ -6,8 +6,8 @@
 
 use layered_contact::indenter::{HeightMap, Sphere};
 use layered_contact::solver::{
-    ContactSolver, Solution, SolverParams, WarmStart, AUTOMATIC_BLOCKS_BOX_RATE,
-    AUTOMATIC_BLOCKS_CELLS, AUTOMATIC_BLOCK_SIDE,
+    ContactSolver, IterationInfo, Preconditioning, Solution, SolverParams, WarmStart,
+    AUTOMATIC_BLOCKS_BOX_RATE, AUTOMATIC_BLOCKS_CELLS, AUTOMATIC_BLOCK_SIDE,
 };
 use layered_contact::{Boundary, Grid, Material, Substrate};
 
@@ -17,9 +17,14 @@ mod common;
 /// surface (Hurst 0.8, rms slope 0.1, roll-off at a quarter of the side,
 /// cut-off at four cells) on a periodic half-space of `E* = 1` over a unit
 /// square, solved at a mean pressure of `0.01`, tolerance 1e-8, with the
-/// preconditioner `blocks` sets (`None`: the solver's choice). The solution
-/// and the blocks the solver had.
-fn peers_problem(n: usize, blocks: Option<Option<usize>>) -> (Solution, Option<usize>) {
+/// preconditioner `blocks` sets (`None`: the solver's choice). The solution,
+/// the blocks the solver had and its report of the preconditioning, checked
+/// against the choice's rule read from the iterations' residuals and
+/// contact counts ([`decision`]).
+fn peers_problem(
+    n: usize,
+    blocks: Option<Option<usize>>,
+) -> (Solution, Option<usize>, Preconditioning) {
     let body = Substrate::half_space(Material::new(1.0, 0.0).unwrap());
     let grid = Grid::square_of_side(n, 1.0).unwrap();
     let indenter = common::rough_surface(1.0, n, 1).indenter(&grid).unwrap();
@@ -31,8 +36,44 @@ fn peers_problem(n: usize, blocks: Option<Option<usize>>) -> (Solution, Option<u
     if let Some(blocks) = blocks {
         solver.set_coarse_blocks(blocks).unwrap();
     }
-    let (solution, _) = solver.solve_force(&indenter, 0.01, None, &mut ()).unwrap();
-    (solution, solver.coarse_blocks())
+    let mut trace = Vec::new();
+    let mut observe = |i: &IterationInfo| trace.push((i.residual, i.contact_cells));
+    let (solution, _) = solver
+        .solve_force(&indenter, 0.01, None, &mut observe)
+        .unwrap();
+    let report = solver.last_preconditioning().unwrap();
+    let (k, factor) = decision(&trace).unwrap();
+    assert_eq!(report.decided_after, Some(k));
+    let reported = report.box_factor.unwrap();
+    assert!(
+        (reported - factor).abs() <= 1e-12 * factor,
+        "{reported} against {factor}"
+    );
+    (solution, solver.coarse_blocks(), report)
+}
+
+/// The choice's rule from a solve's `(residual, contact cells)` after each
+/// fine iteration, as `coarse_choice.rs` documents it: the iterations done
+/// once three in a row have each changed the contact count by at most a
+/// thousandth of it, and the residual's mean factor an iteration over those
+/// three (from the residual after the last one that moved it). `None` if
+/// the solve ended before.
+fn decision(trace: &[(f64, usize)]) -> Option<(usize, f64)> {
+    let (mut quiet, mut moved, mut before, mut last) = (0_i32, f64::INFINITY, None::<usize>, 0.0);
+    for (k, &(residual, cells)) in trace.iter().enumerate() {
+        if quiet >= 3 {
+            return Some((k, (last / moved).powf(1.0 / f64::from(quiet))));
+        }
+        if before.is_some_and(|b| b.abs_diff(cells) as f64 <= 1e-3 * b as f64) {
+            quiet += 1;
+        } else {
+            quiet = 0;
+            moved = residual;
+        }
+        before = Some(cells);
+        last = residual;
+    }
+    None
 }
 
 /// The solutions of `solve` on two solvers from `new`: the first choosing
@@ -64,10 +105,25 @@ fn chosen_and_boxed(
 #[test]
 fn rough_contact_on_a_large_grid_takes_the_blocks() {
     assert_eq!(AUTOMATIC_BLOCKS_CELLS, 2048 * 2048);
-    let (chosen, blocks) = peers_problem(2048, None);
+    let (chosen, blocks, report) = peers_problem(2048, None);
     assert_eq!(blocks, Some(AUTOMATIC_BLOCK_SIDE));
-    let (boxed, none) = peers_problem(2048, Some(None));
+    assert_eq!(report.blocks, Some(AUTOMATIC_BLOCK_SIDE));
+    assert!(report.box_factor.unwrap() >= AUTOMATIC_BLOCKS_BOX_RATE);
+    // The blocks from the choice on, but for iterations after a move of
+    // the count (the box's).
+    let after = chosen.iterations - report.decided_after.unwrap();
+    assert!((1..=after).contains(&report.two_level_iterations));
+    let (boxed, none, box_report) = peers_problem(2048, Some(None));
     assert_eq!(none, None);
+    // The same iterations up to the choice, whichever it is.
+    assert_eq!(
+        (box_report.decided_after, box_report.box_factor),
+        (report.decided_after, report.box_factor)
+    );
+    assert_eq!(
+        (box_report.blocks, box_report.two_level_iterations),
+        (None, 0)
+    );
     assert!(
         chosen.iterations + 10 <= boxed.iterations,
         "{} against the box's {}",
@@ -78,12 +134,16 @@ fn rough_contact_on_a_large_grid_takes_the_blocks() {
 }
 
 /// Below 2048^2 the solver keeps the box: the same rough problem at 1024^2
-/// takes the box's iterations exactly (measured 35) and builds no blocks.
+/// takes the box's iterations exactly (measured 35) and builds no blocks,
+/// although the box's factor at the choice (measured 0.479) lies above
+/// [`AUTOMATIC_BLOCKS_BOX_RATE`]: the grid is too small.
 #[test]
 fn rough_contact_on_a_smaller_grid_keeps_the_box() {
-    let (chosen, blocks) = peers_problem(1024, None);
+    let (chosen, blocks, report) = peers_problem(1024, None);
     assert_eq!(blocks, None);
-    let (boxed, _) = peers_problem(1024, Some(None));
+    assert!(report.box_factor.unwrap() >= AUTOMATIC_BLOCKS_BOX_RATE);
+    assert_eq!((report.blocks, report.two_level_iterations), (None, 0));
+    let (boxed, _, _) = peers_problem(1024, Some(None));
     assert_eq!(chosen.iterations, boxed.iterations);
     assert_eq!(chosen.depth.to_bits(), boxed.depth.to_bits());
 }

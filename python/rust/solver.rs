@@ -409,6 +409,27 @@ impl ContactSolver {
     fn coarse_blocks(&self) -> Option<usize> {
         self.inner.coarse_blocks()
     }
+
+    /// How the last solve preconditioned its iterations (the crate's
+    /// `ContactSolver::last_preconditioning`), `None` before the first: a
+    /// dict of `decided_after` (the iterations done when the choice between
+    /// the box and the two-level preconditioner was made, once the contact
+    /// count had settled; `None` if the solve ended before), `box_factor`
+    /// (the box's mean residual factor an iteration then), `blocks` (the
+    /// block side if the two-level preconditioner was taken, else `None`)
+    /// and `two_level_iterations`.
+    #[getter]
+    fn last_preconditioning<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some(used) = self.inner.last_preconditioning() else {
+            return Ok(None);
+        };
+        let dict = PyDict::new(py);
+        dict.set_item("decided_after", used.decided_after)?;
+        dict.set_item("box_factor", used.box_factor)?;
+        dict.set_item("blocks", used.blocks)?;
+        dict.set_item("two_level_iterations", used.two_level_iterations)?;
+        Ok(Some(dict))
+    }
 }
 
 /// The cohesive law of the given works of adhesion, its zone `zone_cells`

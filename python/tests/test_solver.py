@@ -157,7 +157,11 @@ def test_two_level_preconditioner_on_a_rough_contact():
     settled; at 256^2 21 and 18); the solver's own choice (`None`, the
     default) keeps the box below 2048^2 cells: the box's iterations exactly,
     and no blocks (the `coarse_blocks` property: 16 where they were set).
-    Blocks that do not divide a periodic grid are refused, naming them, and
+    `last_preconditioning` reports it: no solve yet, then the choice made
+    after the same iterations in both (the box's run alike up to there),
+    the box's factor above the automatic choice's 0.3 (the grid is too
+    small for blocks), and the blocks' iterations counted: all those after
+    the choice but the ones after a move of the contact count. Blocks that do not divide a periodic grid are refused, naming them, and
     so is a name other than "box"."""
     n = 512
     heights = lc.rough_surface_heights(
@@ -168,11 +172,19 @@ def test_two_level_preconditioner_on_a_rough_contact():
     boxed = lc.ContactSolver(body, n, n, 1.0 / n, periodic=True, coarse_blocks="box").solve_force(
         surface, 0.01)
     choosing = lc.ContactSolver(body, n, n, 1.0 / n, periodic=True)
+    assert choosing.last_preconditioning is None
     chosen = choosing.solve_force(surface, 0.01)
     assert choosing.coarse_blocks is None
+    kept = choosing.last_preconditioning
+    assert kept["blocks"] is None and kept["two_level_iterations"] == 0
+    assert kept["box_factor"] > 0.3 and kept["decided_after"] < chosen.iterations
     solver = lc.ContactSolver(body, n, n, 1.0 / n, periodic=True, coarse_blocks=16)
     assert solver.coarse_blocks == 16
     two = solver.solve_force(surface, 0.01)
+    taken = solver.last_preconditioning
+    assert (taken["decided_after"], taken["box_factor"]) == (kept["decided_after"], kept["box_factor"])
+    assert taken["blocks"] == 16
+    assert 1 <= taken["two_level_iterations"] <= two.iterations - taken["decided_after"]
     assert np.max(np.abs(two.pressure - boxed.pressure)) <= 1e-6 * boxed.pressure.max()
     assert two.iterations + 5 <= boxed.iterations
     assert chosen.iterations == boxed.iterations

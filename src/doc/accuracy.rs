@@ -311,7 +311,9 @@
 //! two-level preconditioner for rough contacts", "The coarse correction
 //! once the contact settles", "The solver's own choice of preconditioner"
 //! and "The choice on fixed roughness and on one patch", have the counts,
-//! times and memory from 512^2 to 8192^2).
+//! times and memory from 512^2 to 8192^2). What a solve chose, after how
+//! many iterations and on which factor:
+//! [`ContactSolver::last_preconditioning`](crate::solver::ContactSolver::last_preconditioning).
 //!
 //! ### Rough contacts: the contact area and the kernel
 //!

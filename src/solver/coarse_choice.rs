@@ -46,14 +46,58 @@ pub const AUTOMATIC_BLOCKS_BOX_RATE: f64 = 0.3;
 /// every measurement of `BENCHMARKS.md`'s two-level sections.
 pub const AUTOMATIC_BLOCK_SIDE: usize = 16;
 
+/// How a solve's constrained conjugate gradients were preconditioned
+/// ([`ContactSolver::last_preconditioning`]): when the contact count had
+/// settled enough for the choice between the box and the two-level
+/// preconditioner ([`ContactSolver::set_automatic_coarse_blocks`]), the
+/// box's rate it judged by, and what served.
+///
+/// ```
+/// use layered_contact::indenter::Sphere;
+/// use layered_contact::solver::{ContactSolver, SolverParams};
+/// use layered_contact::{Boundary, Grid, Material, Substrate};
+///
+/// let body = Substrate::half_space(Material::new(1e6, 0.5)?);
+/// let grid = Grid::new(64, 64, 1e-5)?;
+/// let mut solver = ContactSolver::new(&body, &grid, Boundary::Isolated, SolverParams::default())?;
+/// assert!(solver.last_preconditioning().is_none());
+/// let (solution, _) = solver.solve_depth(&Sphere::new(1e-2)?, 1e-6, None, &mut ())?;
+/// let used = solver.last_preconditioning().unwrap();
+/// // A Hertzian contact on a small grid: the box throughout.
+/// assert_eq!((used.blocks, used.two_level_iterations), (None, 0));
+/// assert!(used.decided_after.is_some_and(|k| k < solution.iterations));
+/// Ok::<(), layered_contact::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[non_exhaustive]
+pub struct Preconditioning {
+    /// The iterations done when the choice was made: the contact count had
+    /// then moved by at most a thousandth of itself in each of the last
+    /// three. The choice serves from the next iteration on. `None`: the
+    /// solve ended before.
+    pub decided_after: Option<usize>,
+    /// The mean factor by which the residual fell an iteration over those
+    /// three, under the box (the automatic choice keeps the box below
+    /// [`AUTOMATIC_BLOCKS_BOX_RATE`]); `None` with `decided_after`.
+    pub box_factor: Option<f64>,
+    /// The side of the two-level preconditioner's blocks (cells) if the
+    /// choice took it, `None` for the box alone.
+    pub blocks: Option<usize>,
+    /// The iterations that applied the two-level preconditioner: from the
+    /// choice on, except those after an iteration that moved the contact
+    /// count again (the box serves them, [`ContactSolver::set_coarse_blocks`]).
+    pub two_level_iterations: usize,
+}
+
 /// One solve's part of the choice: how many iterations in a row have left
 /// the contact count settled ([`count_settled`]), the residual after the
 /// last one that moved it (the box's rate since tells whether the blocks
-/// can gain), and the decision once taken.
+/// can gain), the decision once taken, and what the solve reports of it.
 pub(super) struct CoarseChoice {
     quiet: usize,
     moved_residual: f64,
     wanted: Option<bool>,
+    pub(super) report: Preconditioning,
 }
 
 impl Default for CoarseChoice {
@@ -62,6 +106,7 @@ impl Default for CoarseChoice {
             quiet: 0,
             moved_residual: f64::INFINITY,
             wanted: None,
+            report: Preconditioning::default(),
         }
     }
 }
@@ -130,28 +175,48 @@ impl ContactSolver {
     /// `pressure` is positive and the box's mean factor over the quiet
     /// iterations, down to `residual`:
     /// [`ContactSolver::set_automatic_coarse_blocks`]); while the set still
-    /// moves, the box alone.
+    /// moves, the box alone. `done`: the solve's iterations so far, for
+    /// its report ([`Preconditioning`]).
     pub(super) fn coarse_correction_now(
         &mut self,
         choice: &mut CoarseChoice,
         residual: f64,
         pressure: &[f64],
+        done: usize,
     ) -> Result<bool> {
         if choice.quiet < QUIET_ITERATIONS {
             return Ok(false);
         }
-        if let Some(wanted) = choice.wanted {
-            return Ok(wanted);
-        }
-        let decided = if self.coarse_automatic {
-            let box_rate = (residual / choice.moved_residual).powf(1.0 / choice.quiet as f64);
-            // A rate that is not a number (no residual yet) keeps the box.
-            box_rate >= AUTOMATIC_BLOCKS_BOX_RATE && self.automatic_blocks(pressure)?
-        } else {
-            self.balancing.is_some()
+        let decided = match choice.wanted {
+            Some(wanted) => wanted,
+            None => {
+                let box_rate = (residual / choice.moved_residual).powf(1.0 / choice.quiet as f64);
+                let decided = if self.coarse_automatic {
+                    // A rate that is not a number (no residual yet) keeps
+                    // the box.
+                    box_rate >= AUTOMATIC_BLOCKS_BOX_RATE && self.automatic_blocks(pressure)?
+                } else {
+                    self.balancing.is_some()
+                };
+                choice.wanted = Some(decided);
+                choice.report.decided_after = Some(done);
+                choice.report.box_factor = Some(box_rate).filter(|r| r.is_finite());
+                choice.report.blocks = self.coarse_blocks().filter(|_| decided);
+                decided
+            }
         };
-        choice.wanted = Some(decided);
+        choice.report.two_level_iterations += usize::from(decided);
         Ok(decided)
+    }
+
+    /// How the last solve that ran the constrained conjugate gradients
+    /// preconditioned them: a non-adhesive solve under depth or force
+    /// control (not one that ended before, without contact), or a round of
+    /// the cohesive zone's. `None` before the first. The coarse levels of
+    /// the multi-resolution start are not counted; their iterations take
+    /// the box.
+    pub fn last_preconditioning(&self) -> Option<Preconditioning> {
+        self.preconditioning
     }
 
     /// The automatic choice for a fine, non-adhesive solve whose contact is
@@ -184,7 +249,10 @@ impl ContactSolver {
 
 #[cfg(test)]
 mod tests {
-    use super::{CoarseChoice, AUTOMATIC_BLOCKS_BOX_RATE, AUTOMATIC_BLOCK_SIDE, QUIET_ITERATIONS};
+    use super::{
+        CoarseChoice, Preconditioning, AUTOMATIC_BLOCKS_BOX_RATE, AUTOMATIC_BLOCK_SIDE,
+        QUIET_ITERATIONS,
+    };
     use crate::solver::{ContactSolver, SolverParams};
     use crate::{Boundary, Grid, Material, Substrate};
 
@@ -195,7 +263,9 @@ mod tests {
     /// of the side across) keeps the box and builds nothing; one of 4096
     /// single-cell specks (every 32nd cell each way, more than 256
     /// patches) takes blocks of 16, built then; before the count settles,
-    /// neither is decided.
+    /// neither is decided. Each decision's report: the iterations done as
+    /// given (7), the rate 0.5 to rounding, the blocks taken, and one
+    /// iteration with them (the one about to run) or none.
     #[test]
     fn the_automatic_choice_counts_the_patches() {
         let n = 2048;
@@ -217,21 +287,31 @@ mod tests {
             quiet,
             moved_residual: 1.0,
             wanted: None,
+            report: Preconditioning::default(),
+        };
+        let reported = |choice: &CoarseChoice, blocks, two_level| {
+            let r = choice.report;
+            assert_eq!(r.decided_after, Some(7));
+            assert!((r.box_factor.unwrap() - rate).abs() < 1e-15);
+            assert_eq!((r.blocks, r.two_level_iterations), (blocks, two_level));
         };
         let residual = rate.powi(QUIET_ITERATIONS as i32);
         let mut choice = quiet(QUIET_ITERATIONS - 1);
-        let early = solver.coarse_correction_now(&mut choice, residual, &specks);
+        let early = solver.coarse_correction_now(&mut choice, residual, &specks, 7);
         assert!(!early.unwrap() && choice.wanted.is_none());
+        assert_eq!(choice.report, Preconditioning::default());
         let mut choice = quiet(QUIET_ITERATIONS);
-        let patch = solver.coarse_correction_now(&mut choice, residual, &one);
+        let patch = solver.coarse_correction_now(&mut choice, residual, &one, 7);
         assert!(!patch.unwrap());
         assert_eq!((choice.wanted, solver.coarse_blocks()), (Some(false), None));
+        reported(&choice, None, 0);
         let mut choice = quiet(QUIET_ITERATIONS);
-        let rough = solver.coarse_correction_now(&mut choice, residual, &specks);
+        let rough = solver.coarse_correction_now(&mut choice, residual, &specks, 7);
         assert!(rough.unwrap());
         assert_eq!(
             (choice.wanted, solver.coarse_blocks()),
             (Some(true), Some(AUTOMATIC_BLOCK_SIDE))
         );
+        reported(&choice, Some(AUTOMATIC_BLOCK_SIDE), 1);
     }
 }

@@ -103,7 +103,9 @@ use preconditioning::Preconditioner;
 
 use workspace::Workspace;
 
-pub use coarse_choice::{AUTOMATIC_BLOCKS_BOX_RATE, AUTOMATIC_BLOCKS_CELLS, AUTOMATIC_BLOCK_SIDE};
+pub use coarse_choice::{
+    Preconditioning, AUTOMATIC_BLOCKS_BOX_RATE, AUTOMATIC_BLOCKS_CELLS, AUTOMATIC_BLOCK_SIDE,
+};
 pub use cohesive_area::EQUIVALENT_TIP;
 pub use cohesive_law::{
     CohesiveZone, COHESIVE_ZONE_CELLS, CURVATURE_CORRECTION, ZONE_LAYER_FRACTION,
@@ -187,6 +189,9 @@ pub struct ContactSolver {
     /// [`ContactSolver::set_automatic_coarse_blocks`]) rather than as
     /// [`ContactSolver::set_coarse_blocks`] set it.
     coarse_automatic: bool,
+    /// How the last constrained conjugate gradients were preconditioned
+    /// ([`ContactSolver::last_preconditioning`]).
+    preconditioning: Option<Preconditioning>,
 }
 
 /// A check that a long computation should stop (Ctrl-C), asked after every
@@ -267,6 +272,7 @@ impl ContactSolver {
             start_level: false,
             balancing: None,
             coarse_automatic: true,
+            preconditioning: None,
         })
     }
 

@@ -27,7 +27,7 @@ use crate::error::{Error, Result};
 use crate::indenter::Indenter;
 
 use super::active_set::ACTIVE_SET_AFTER;
-use super::coarse_choice::CoarseChoice;
+use super::coarse_choice::{CoarseChoice, Preconditioning};
 use super::multiresolution::{count_settled, loosened};
 use super::stall::Stall;
 use super::step_response::Arithmetic;
@@ -235,6 +235,7 @@ impl ContactSolver {
         let n = self.local_cells();
         let columns = self.grid().columns();
         let area = self.grid().cell_area();
+        self.preconditioning = Some(Preconditioning::default());
         // This rank's rows (all of them when serial).
         let local = self.operator.local_rows();
         let reachable = self.reachable();
@@ -475,7 +476,10 @@ impl ContactSolver {
             // The coarse correction only while the contact count stands
             // ([`ContactSolver::coarse_correction_now`]); a change of
             // preconditioner restarts the conjugation.
-            let coarse = self.coarse_correction_now(&mut coarse_choice, residual, &pressure)?;
+            let done = iteration - 1 + loop_iterations;
+            let coarse =
+                self.coarse_correction_now(&mut coarse_choice, residual, &pressure, done)?;
+            self.preconditioning = Some(coarse_choice.report);
             if coarse != coarse_last {
                 rz_old = 0.0;
             }
