@@ -95,9 +95,10 @@ fn chosen_and_boxed(
 }
 
 /// At 2048^2 (the smallest grid of the automatic choice) the rough contact
-/// (thousands of patches) takes the blocks: measured 28 fine iterations
-/// against the box's 44 (`rough_benchmark peers 2048`, BENCHMARKS.md, "The
-/// solver's own choice of preconditioner"); the bound, 10 fewer, fails if
+/// (thousands of patches) takes the blocks: measured 29 fine iterations
+/// against the box's 45 (`rough_benchmark peers 2048` and `--box`,
+/// 2026-12-06; BENCHMARKS.md, "The solver's own choice of preconditioner"
+/// and "A start level's settled count"); the bound, 10 fewer, fails if
 /// the choice keeps the box. The same solution: the same contact cells and
 /// depths within 1e-8 (each solve's tolerance bounds its pressures' last
 /// change, not their error; the blocks' solution at 1024^2 and below lies

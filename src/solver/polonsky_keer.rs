@@ -28,7 +28,7 @@ use crate::indenter::Indenter;
 
 use super::active_set::ACTIVE_SET_AFTER;
 use super::coarse_choice::{CoarseChoice, Preconditioning};
-use super::multiresolution::{count_settled, loosened};
+use super::multiresolution::{count_settled, loosened, start_count_settled};
 use super::stall::Stall;
 use super::step_response::Arithmetic;
 use super::{check_finite, passes, ContactSolver, IterationInfo, Observer, Solution, WarmStart};
@@ -264,7 +264,7 @@ impl ContactSolver {
         let force_control = matches!(control, Control::Force(_));
         let mut tolerance = self.params.tolerance;
         // A start level's own tolerance, which it keeps while its contact
-        // count still moves ([`count_settled`]).
+        // count still moves ([`start_count_settled`]).
         let strict = tolerance;
         // The contact count after the last iteration.
         let mut last_contact: Option<usize> = None;
@@ -668,8 +668,8 @@ impl ContactSolver {
                 residual,
                 contact_cells: stats.contact,
             });
-            let settled = count_settled(last_contact, stats.contact);
-            coarse_choice.record(settled, residual);
+            coarse_choice.record(count_settled(last_contact, stats.contact), residual);
+            let settled = start_count_settled(last_contact, stats.contact);
             last_contact = Some(stats.contact);
             // A fine solve stops only once no cell overlaps; a start level
             // may stop with overlap left (`ContactSolver::start_level`),
