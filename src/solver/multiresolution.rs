@@ -71,19 +71,21 @@ pub(super) fn loosened(tolerance: f64, first_residual: f64) -> f64 {
 /// thousandth (BENCHMARKS.md, "A start level stops once its contact
 /// settles"). A thousandth still let the stack's 512^2 level stop while it
 /// shed: 85 fine iterations at 1024^2 against 55 at 512^2 and 50 at
-/// 2048^2; with 3e-4, 62 at 1024^2 and 59 against 62 at 4096^2, the other
-/// rough problems' fine counts within one of their own at 512^2 to 4096^2
-/// for up to 8 more coarse iterations (BENCHMARKS.md, "A start level's
-/// settled count").
+/// 2048^2; with 3e-4, 62 at 1024^2, and 59 / 76 against 62 / 80 at
+/// 4096^2 / 8192^2; the other rough problems' fine counts moved by -1 to
+/// +3 from 512^2 to 8192^2 for 0 to 14 more coarse iterations (the stack
+/// at 8192^2 29; BENCHMARKS.md, "A start level's settled count").
 pub(super) const START_SETTLED_FRACTION: f64 = 3e-4;
 
 /// The two-level preconditioner joins once its contact count has moved by
 /// at most this fraction of itself in each of three iterations in a row
 /// ([`count_settled`], `balancing::QUIET_ITERATIONS`). The rough film and
 /// the tamaas problem of `examples/rough_benchmark.rs` change their counts
-/// by less than this once the box's settling is over; a stricter fraction
-/// joins later and costs iterations (BENCHMARKS.md, "The coarse correction
-/// once the contact settles", "The blocks while the contact still moves").
+/// by less than this once the box's settling is over; 3e-4 or 1e-4 join
+/// later and cost the tamaas problem and the stack 3 to 16 more fine
+/// iterations at 2048^2 and 4096^2, a looser 1e-2 more still
+/// (BENCHMARKS.md, "A start level's settled count", "The blocks while the
+/// contact still moves").
 pub(super) const SETTLED_COUNT_FRACTION: f64 = 1e-3;
 
 /// Whether an iteration that took a contact count from `before` (`None`
