@@ -14,10 +14,11 @@
 //! ```
 //!
 //! Prints a line per contact and preconditioner: the fine iterations, the
-//! solve's time, the force, the contact cells, and the iteration at which
-//! the automatic choice decides and the box's factor it judges by
-//! (`ContactSolver::last_preconditioning`). N defaults to 2048 (the automatic choice's
-//! smallest grid), also for an argument that is not a count.
+//! solve's time, the force, the contact cells, and the iterations done
+//! when the choice was made and the box's factor it judged by
+//! (`ContactSolver::last_preconditioning`). N defaults to 2048 (the
+//! automatic choice's smallest grid), also for an argument that is not a
+//! count.
 //! `RAYON_NUM_THREADS` sets the threads.
 
 use std::time::Instant;

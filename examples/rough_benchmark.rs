@@ -43,8 +43,8 @@
 //! iteration (`# k residual contact_cells`, `k` from 0). Both add the
 //! iterations done when the solver's choice of preconditioner was made,
 //! the box's factor it judged by and the iterations that took the
-//! two-level preconditioner (`ContactSolver::last_preconditioning`). `COLD=1` solves
-//! without the multi-resolution start. `BANDS=1` keeps the pressures and
+//! two-level preconditioner (`ContactSolver::last_preconditioning`).
+//! `COLD=1` solves without the multi-resolution start. `BANDS=1` keeps the pressures and
 //! prints the solution's edge flag and the share of the force on the cells
 //! within 5, 10 and 20 % of the side from the grid's edges.
 
