@@ -44,6 +44,8 @@
 //! iterations done when the solver's choice of preconditioner was made,
 //! the box's factor it judged by and the iterations that took the
 //! two-level preconditioner (`ContactSolver::last_preconditioning`).
+//! `SEED=k` synthesises the surface from seed `k` (1 unless set), for the
+//! spread of iteration counts over surfaces of the same statistics.
 //! `COLD=1` solves without the multi-resolution start. `BANDS=1` keeps the pressures and
 //! prints the solution's edge flag and the share of the force on the cells
 //! within 5, 10 and 20 % of the side from the grid's edges.
@@ -109,6 +111,16 @@ fn main() -> Result<(), layered_contact::Error> {
     };
     let force = pressure * side * side;
     let bands = std::env::var("BANDS").is_ok();
+    let seed = match std::env::var("SEED") {
+        Ok(k) => k
+            .parse::<u64>()
+            .map_err(|_| layered_contact::Error::InvalidParameter {
+                name: "SEED",
+                value: f64::NAN,
+                expected: "a non-negative integer",
+            })?,
+        Err(_) => 1,
+    };
     println!("N,boundary,build_s,surface_s,solve_s,iterations,coarse_iterations,contact_fraction,peak_mb,bytes_per_cell");
     for n in sizes {
         let grid = Grid::square_of_side(n, side)?;
@@ -122,7 +134,7 @@ fn main() -> Result<(), layered_contact::Error> {
             } else {
                 4.0 * grid.spacing()
             },
-            seed: 1,
+            seed,
         }
         .indenter(&grid)?;
         let synthesis = start.elapsed().as_secs_f64();

@@ -180,6 +180,11 @@ pub struct ContactSolver {
     /// while cells still overlap the indenter (the finer solve takes them
     /// in).
     start_level: bool,
+    /// Whether this start level may stop at its loosened tolerance
+    /// ([`multiresolution::loosened`]): every start level but the one
+    /// right under the solve asked for, whose solution that solve starts
+    /// from (why: `loosened`'s documentation).
+    loosens: bool,
     /// The two-level preconditioner, if it is on
     /// ([`ContactSolver::set_coarse_blocks`]) or the automatic choice built
     /// it.
@@ -270,6 +275,7 @@ impl ContactSolver {
             workspace: Workspace::new(n)?,
             interrupt: None,
             start_level: false,
+            loosens: false,
             balancing: None,
             coarse_automatic: true,
             preconditioning: None,

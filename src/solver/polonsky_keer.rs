@@ -190,8 +190,9 @@ impl ContactSolver {
         let fitted = self.workspace.fit(self.local_cells());
         self.agreed(fitted)?;
         // A start level prolonged from its own coarser level may stop at
-        // a fraction of how far that start was ([`loosened`]).
-        let prolonged = self.start_level && coarse.is_some();
+        // a fraction of how far that start was ([`loosened`]), but the one
+        // under the solve asked for (`ContactSolver::loosens`).
+        let prolonged = self.start_level && self.loosens && coarse.is_some();
         // `coarse_scale`: how much the coarse levels scaled the warm start
         // (the start's detail was scaled alike), so that a finer level
         // scales its own.
