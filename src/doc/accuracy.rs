@@ -278,7 +278,12 @@
 //! level stops at 3 % of how far that start was (its first iteration's
 //! change) when that is looser: a rough surface's levels start far apart,
 //! so they stop sooner (a fifth to a third fewer coarse iterations), a
-//! smooth contact's start near and keep their tolerance. Tables
+//! smooth contact's start near and keep their tolerance. The level right
+//! under the solve keeps its tolerance whatever its start: the solve
+//! starts from its solution, and a loosened one set the tamaas problem at
+//! 8192^2 off on a zig-zag of its contact (up to 64 fine iterations over
+//! seven seeds, 44 to 49 since; `BENCHMARKS.md`, "The start level under
+//! the solve"). Tables
 //! (iterations, times and memory from 256 x 256 to 8192 x 8192, and beside
 //! tamaas) in `BENCHMARKS.md`, "Speed: rough contacts on large grids" and
 //! "Rough contacts beside tamaas".
