@@ -64,10 +64,11 @@ const LOOSEST_START_TOLERANCE: f64 = 1e-2;
 /// cells and back to 12.6 million over 40 iterations, 64 in all; with the
 /// level under it kept to its tolerance, 44. Over seeds 1 to 7 at 8192^2:
 /// 44 to 49 fine iterations against 46 to 64, for -3 to +13 coarse ones;
-/// the films' fine counts unchanged from 512^2 to 8192^2; the coated
-/// stack's, chaotic in the start, -3 to +7 on seed 1 and lower on average
-/// over five seeds from 512^2 to 4096^2, two outliers of 118 gone
-/// (BENCHMARKS.md, "The start level under the solve").
+/// the films' fine counts unchanged from 512^2 to 8192^2 but the periodic
+/// film's at 8192^2 (28 against 27); the coated stack's, chaotic in the
+/// start, -3 to +7 on seed 1 and lower on average over five seeds from
+/// 512^2 to 4096^2, two outliers of 118 gone (BENCHMARKS.md, "The start
+/// level under the solve").
 pub(super) fn loosened(tolerance: f64, first_residual: f64) -> f64 {
     tolerance.max((START_RESIDUAL_FRACTION * first_residual).min(LOOSEST_START_TOLERANCE))
 }
