@@ -345,9 +345,10 @@ mod tests {
     /// tolerance ([`COARSE_TOLERANCE`]); the levels under it loosen
     /// theirs. The tamaas problem of `benches/peers/rough.py` (seed 1),
     /// each level solved again after the solve (on the surface itself, not
-    /// moved to the level's cell centres), its residual at the end: at 256^2 the 128^2 level stops at 7.3e-4 (at 1.3e-3 when
-    /// it loosened its tolerance too, before 2026-12-06); at 512^2 the
-    /// 128^2 level, two under the solve, at its loosened 1.6e-3.
+    /// moved to the level's cell centres), its residual at the end: at
+    /// 256^2 the 128^2 level stops at 7.3e-4 (at 1.3e-3 when it loosened
+    /// its tolerance too, before 2026-12-06); at 512^2 the 128^2 level, two
+    /// under the solve, at its loosened 1.6e-3.
     #[test]
     fn the_start_level_under_the_solve_keeps_its_tolerance() {
         use crate::topography::{Amplitude, SelfAffine};

@@ -192,7 +192,7 @@ impl ContactSolver {
         // A start level prolonged from its own coarser level may stop at
         // a fraction of how far that start was ([`loosened`]), but the one
         // under the solve asked for (`ContactSolver::loosens`).
-        let prolonged = self.start_level && self.loosens && coarse.is_some();
+        let loosens = self.start_level && self.loosens && coarse.is_some();
         // `coarse_scale`: how much the coarse levels scaled the warm start
         // (the start's detail was scaled alike), so that a finer level
         // scales its own.
@@ -208,7 +208,7 @@ impl ContactSolver {
             control,
             start,
             StartDisplacement::Compute,
-            prolonged,
+            loosens,
             warm.is_none(),
             observer,
         )?;
@@ -218,9 +218,10 @@ impl ContactSolver {
     }
 
     /// The constrained conjugate gradients from `warm` (or a uniform
-    /// pressure), to the solver's tolerance; `prolonged`: the start came
-    /// from this start level's coarser level, and the tolerance loosens to
-    /// a fraction of the first iteration's change ([`loosened`]);
+    /// pressure), to the solver's tolerance; `loosens`: the start came
+    /// from this start level's coarser level and the level is not the one
+    /// under the solve asked for, so the tolerance loosens to a fraction of
+    /// the first iteration's change ([`loosened`]);
     /// `cold`: a solve of many iterations, whose early ones apply the
     /// operator in single precision ([`EARLY_ABOVE`]) and whose
     /// conjugation restarts twice ([`RESTART_BELOW`]).
@@ -229,7 +230,7 @@ impl ContactSolver {
         control: Control,
         warm: Option<Cow<'_, WarmStart>>,
         start_displacement: StartDisplacement,
-        prolonged: bool,
+        loosens: bool,
         cold: bool,
         observer: &mut dyn Observer,
     ) -> Result<(Solution, WarmStart)> {
@@ -660,7 +661,7 @@ impl ContactSolver {
             } else {
                 f64::INFINITY
             };
-            if prolonged && iteration == 1 {
+            if loosens && iteration == 1 {
                 tolerance = loosened(tolerance, residual);
             }
             stall.record(residual);
