@@ -428,15 +428,36 @@ fn ranks_main() -> Result<(), String> {
                 split.solve_depth(&*case.indenter, load, warm_split.as_ref(), &mut ())
             }
             .map_err(text)?;
-            // With blocks set, both take the same steps: the same count
-            // (a split solver that kept the box would take others).
-            if (case.blocks.is_some() || case.automatic_blocks) && a.iterations != b.iterations {
+            // With blocks set, both take them (a split solver that kept
+            // the box would apply the two-level preconditioner in no
+            // iteration). On a periodic grid both take the same steps: the
+            // same count. On an isolated grid the preconditioner's
+            // applications go through the coarse level, whose operator a
+            // split solver builds from the substrate and a serial one from
+            // the fine spectrum (Galerkin's): their steps differ, their
+            // counts by at most one (measured on the 128^2 film at 2 and 4
+            // ranks, 2026-12-06); allowed two.
+            let two_level = |s: &ContactSolver| {
+                s.last_preconditioning()
+                    .map_or(0, |p| p.two_level_iterations)
+            };
+            let apart = if case.boundary == Boundary::Periodic {
+                0
+            } else {
+                2
+            };
+            if (case.blocks.is_some() || case.automatic_blocks)
+                && (a.iterations.abs_diff(b.iterations) > apart
+                    || (two_level(&serial) > 0) != (two_level(&split) > 0))
+            {
                 failures.push(format!(
-                    "rank {}: {}: {} split iterations, {} serial",
+                    "rank {}: {}: {} split iterations ({} two-level), {} serial ({})",
                     ranks.rank(),
                     case.name,
                     b.iterations,
-                    a.iterations
+                    two_level(&split),
+                    a.iterations,
+                    two_level(&serial)
                 ));
             }
             if let Some(most) = case.most_iterations {

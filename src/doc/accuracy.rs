@@ -297,7 +297,11 @@
 //! [`ContactSolver::set_coarse_blocks`](crate::solver::ContactSolver::set_coarse_blocks)),
 //! holds that rate and makes the count grow like `log N`, for two more
 //! applications of the compliance and two solves on the grid of blocks an
-//! iteration. It joins once the contact count has settled (built over a
+//! iteration (on an isolated grid the applications go through the
+//! multi-resolution start's coarse level, `P A_c P^T / 4`, at a quarter of
+//! their cost: the 4096^2 film in 17.2 to 18.0 s against 19.3 to 22.1 s;
+//! `BENCHMARKS.md`, "The two-level preconditioner through the coarse
+//! level"). It joins once the contact count has settled (built over a
 //! working set that still has cells to shed, it spreads pressure over
 //! them). The solver takes it by itself where it pays
 //! ([`ContactSolver::set_automatic_coarse_blocks`](crate::solver::ContactSolver::set_automatic_coarse_blocks),

@@ -19,10 +19,13 @@
 //! every doubling of a rough surface's grid); the coarse correction
 //! handles what varies from block to block, so the count grows like `log
 //! N` instead. It costs two more applications of the compliance an
-//! iteration (in single precision, as the box's) and two coarse solves,
-//! and no memory a cell beyond the box's: `BENCHMARKS.md`, "A two-level
-//! preconditioner for rough contacts" and "The two-level preconditioner's
-//! applications in single precision".
+//! iteration (in single precision, as the box's; on an isolated grid
+//! through the coarse level of the multi-resolution start, at a quarter of
+//! the cost: [`applications`]) and two coarse solves, and no memory a cell
+//! beyond the box's: `BENCHMARKS.md`, "A two-level preconditioner for
+//! rough contacts", "The two-level preconditioner's applications in single
+//! precision" and "The two-level preconditioner through the coarse
+//! level".
 
 use crate::error::{Error, Result};
 use crate::grid::Boundary;
@@ -31,6 +34,8 @@ use super::coarse_space::{near_kernel, CoarseSpace};
 use super::passes::Bounds;
 use super::split::{over_ranks, summed_over_ranks};
 use super::ContactSolver;
+
+mod applications;
 
 /// The two-level preconditioner's state: its coarse space and the two
 /// coarse solutions of an application (one value a block). It holds no
@@ -84,7 +89,10 @@ impl ContactSolver {
     /// contacts the iterations then grow like `log N` instead of by a
     /// quarter to a third each doubling of the grid, but each costs 1.5 to
     /// 2 times as much (two more applications of the compliance and two
-    /// solves on the grid of blocks; no more memory a cell): in one sweep
+    /// solves on the grid of blocks; no more memory a cell; on an isolated
+    /// grid the applications go through the multi-resolution start's coarse
+    /// level since 2026-12-06, which took the rough film's iteration with
+    /// the blocks at 4096^2 from about 0.85 to 0.6 s): in one sweep
     /// of `BENCHMARKS.md` ("The coarse correction once the contact
     /// settles", blocks of 16 from 512^2 to 4096^2) the solves took 0.66 to
     /// 0.99 times the box's time at 2048^2 and 4096^2 on the rough films,
@@ -303,38 +311,11 @@ impl ContactSolver {
         let largest = first.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
         let largest = summed_over_ranks(&self.operator, largest);
         // s = r - A Z c1 on the set, into `previous`.
-        let (gap, working, space_at) = (&ws.gap, &ws.working, &*space);
-        let coarse = &*first;
-        let maxima = self.operator.apply_rows_single(
-            largest,
-            |i, line, scale| {
-                let member = &working[i * columns..(i + 1) * columns];
-                for (block, range) in space_at.row_runs(i) {
-                    let value = (coarse[block] * scale) as f32;
-                    for (x, w) in line[range.clone()].iter_mut().zip(&member[range]) {
-                        *x = if *w { value } else { 0.0 };
-                    }
-                }
-            },
-            ws.previous.chunks_exact_mut(columns).collect(),
-            |i, s, kx, unscale| {
-                let cells = i * columns..(i + 1) * columns;
-                let mut largest = 0.0_f64;
-                let inputs = gap[cells.clone()].iter().zip(&working[cells]);
-                for ((s, kx), (g, w)) in s.iter_mut().zip(kx).zip(inputs) {
-                    *s = if *w {
-                        g - shift - f64::from(*kx) * unscale
-                    } else {
-                        0.0
-                    };
-                    largest = largest.max(s.abs());
-                }
-                largest
-            },
-        )?;
+        let maxima = self.coarse_load_residual(space, first, largest, shift)?;
         // Scales the same on every rank: the sums of their largest.
         let s_max = summed_over_ranks(&self.operator, maxima.into_iter().fold(0.0, f64::max));
         // y = B s in `response`, zero off the set.
+        let ws = &mut self.workspace;
         std::mem::swap(&mut ws.gap, &mut ws.previous);
         let boxed = self.precondition_working_set(bounds, 0.0, s_max);
         let ws = &mut self.workspace;
@@ -354,20 +335,7 @@ impl ContactSolver {
         });
         let y_max = summed_over_ranks(&self.operator, maxima.into_iter().fold(0.0, f64::max));
         // Z^T A y, each row's part of each block's sum.
-        let (y, working) = (&ws.response, &ws.working);
-        let parts = self.operator.apply_rows_single(
-            y_max,
-            |i, line, scale| {
-                for (x, y) in line.iter_mut().zip(&y[i * columns..(i + 1) * columns]) {
-                    *x = (y * scale) as f32;
-                }
-            },
-            vec![(); rows],
-            |i, (), ky, unscale| {
-                let member = &working[i * columns..(i + 1) * columns];
-                space_at.row_sums(i, member, |j| f64::from(ky[j]) * unscale)
-            },
-        )?;
+        let parts = self.block_sums_of_response(space, y_max)?;
         // c2 = E~^-1 Z^T A y; z = Z c1 + y - Z c2.
         space.gather(&parts, second);
         over_ranks(&self.operator, second);

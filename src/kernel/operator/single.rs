@@ -153,6 +153,30 @@ impl ComplianceOperator {
             })
         })
     }
+
+    /// As [`ComplianceOperator::apply_rows_single`] of `other` (an
+    /// operator never applied at the same time, such as a coarse level's,
+    /// whose buffers are smaller), in this operator's large buffers, lent
+    /// to it: no memory added.
+    ///
+    /// # Errors
+    /// As [`ComplianceOperator::apply_into`].
+    pub(crate) fn apply_rows_single_lent<O: Send, S: Send>(
+        &mut self,
+        other: &mut ComplianceOperator,
+        magnitude: f64,
+        load: impl Fn(usize, &mut [f32], f64) + Sync,
+        targets: Vec<O>,
+        sink: impl Fn(usize, O, &[f32], f64) -> S + Sync,
+    ) -> Result<Vec<S>> {
+        other
+            .convolution
+            .give_buffers(self.convolution.take_buffers());
+        let result = other.apply_rows_single(magnitude, load, targets, sink);
+        self.convolution
+            .give_buffers(other.convolution.take_buffers());
+        result
+    }
 }
 
 #[cfg(test)]
