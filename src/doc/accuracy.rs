@@ -299,7 +299,7 @@
 //! applications of the compliance and two solves on the grid of blocks an
 //! iteration (on an isolated grid the applications go through the
 //! multi-resolution start's coarse level, `P A_c P^T / 4`, at a quarter of
-//! their cost: the 4096^2 film in 17.2 to 18.0 s against 19.3 to 22.1 s;
+//! their cost: the 4096^2 film in 17.2 to 19.1 s against 19.3 to 22.7 s;
 //! `BENCHMARKS.md`, "The two-level preconditioner through the coarse
 //! level"). It joins once the contact count has settled (built over a
 //! working set that still has cells to shed, it spreads pressure over

@@ -24,11 +24,11 @@
 //! the cells, a coarse level's on a quarter of that: on the rough film of
 //! `examples/rough_benchmark.rs` at 4096^2 (two threads) an iteration with
 //! the blocks fell from about 0.85 to 0.6 s, the fine iterations stayed
-//! at 23 and the solve took 17.2 to 18.0 s against 19.3 to 22.1 s. On a
+//! at 23 and the solve took 17.2 to 19.1 s against 19.3 to 22.7 s. On a
 //! periodic grid the applications are a quarter as dear to begin with:
 //! through the coarse level an iteration cost the same and the periodic
-//! film and the tamaas problem took two more (24 and 35 at 4096^2, 6 %
-//! longer), so periodic grids keep their own. Measured in `BENCHMARKS.md`,
+//! film and the tamaas problem took two more (24 and 35 at 4096^2, 4 to
+//! 8 % longer), so periodic grids keep their own. Measured in `BENCHMARKS.md`,
 //! "The two-level preconditioner through the coarse level" (2026-12-06,
 //! forty-sixth session).
 
@@ -43,6 +43,23 @@ use super::super::ContactSolver;
 /// row of an odd count has one).
 fn pair(ci: usize, rows: usize) -> std::ops::Range<usize> {
     2 * ci..(2 * ci + 2).min(rows)
+}
+
+/// `s = gap - shift - kx(j)` on the row's cells of the working set
+/// (`member`), 0 elsewhere; returns the largest `|s|`.
+fn residual_row(
+    s: &mut [f64],
+    gap: &[f64],
+    member: &[bool],
+    shift: f64,
+    kx: impl Fn(usize) -> f64,
+) -> f64 {
+    let mut largest = 0.0_f64;
+    for (j, (s, (g, w))) in s.iter_mut().zip(gap.iter().zip(member)).enumerate() {
+        *s = if *w { g - shift - kx(j) } else { 0.0 };
+        largest = largest.max(s.abs());
+    }
+    largest
 }
 
 impl ContactSolver {
@@ -96,16 +113,18 @@ impl ContactSolver {
             let (rows, columns) = (solver.operator.local_rows().len(), solver.grid().columns());
             let ws = &mut solver.workspace;
             let (gap, working) = (&ws.gap, &ws.working);
-            // The residual less the response `kx(j)`, on row `i`.
-            let residual = |i: usize, s: &mut [f64], kx: &dyn Fn(usize) -> f64| {
+            // The residual less the response `kx(j)` on row `i`.
+            let residual = |i: usize, s: &mut [f64], kx: &[f32], unscale: f64, halved: bool| {
                 let cells = i * columns..(i + 1) * columns;
-                let inputs = gap[cells.clone()].iter().zip(&working[cells]);
-                let mut largest = 0.0_f64;
-                for (j, (s, (g, w))) in s.iter_mut().zip(inputs).enumerate() {
-                    *s = if *w { g - shift - kx(j) } else { 0.0 };
-                    largest = largest.max(s.abs());
+                if halved {
+                    residual_row(s, &gap[cells.clone()], &working[cells], shift, |j| {
+                        f64::from(kx[j / 2]) * unscale
+                    })
+                } else {
+                    residual_row(s, &gap[cells.clone()], &working[cells], shift, |j| {
+                        f64::from(kx[j]) * unscale
+                    })
                 }
-                largest
             };
             let Some(coarse_operator) = halved else {
                 return solver.operator.apply_rows_single(
@@ -120,7 +139,7 @@ impl ContactSolver {
                         }
                     },
                     ws.previous.chunks_exact_mut(columns).collect(),
-                    |i, s, kx, unscale| residual(i, s, &|j| f64::from(kx[j]) * unscale),
+                    |i, s, kx, unscale| residual(i, s, kx, unscale, false),
                 );
             };
             solver.operator.apply_rows_single_lent(
@@ -144,10 +163,9 @@ impl ContactSolver {
                     .collect(),
                 // P: each coarse value on its fine cells.
                 |ci, pair: &mut [f64], kx, unscale| {
-                    let response = |j: usize| f64::from(kx[j / 2]) * unscale;
                     pair.chunks_exact_mut(columns)
                         .enumerate()
-                        .map(|(k, s)| residual(2 * ci + k, s, &response))
+                        .map(|(k, s)| residual(2 * ci + k, s, kx, unscale, true))
                         .fold(0.0, f64::max)
                 },
             )
