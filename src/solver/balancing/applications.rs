@@ -162,8 +162,9 @@ impl ContactSolver {
                     .chunks_mut(2 * columns)
                     .collect(),
                 // P: each coarse value on its fine cells.
-                |ci, pair: &mut [f64], kx, unscale| {
-                    pair.chunks_exact_mut(columns)
+                |ci, two_rows: &mut [f64], kx, unscale| {
+                    two_rows
+                        .chunks_exact_mut(columns)
                         .enumerate()
                         .map(|(k, s)| residual(2 * ci + k, s, kx, unscale, true))
                         .fold(0.0, f64::max)
