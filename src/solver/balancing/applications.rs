@@ -69,16 +69,20 @@ impl ContactSolver {
     /// the multi-resolution start has built it, on the grid of half the
     /// cells each way (rounded up), and on a split solver every rank's
     /// first row is even and its coarse rows are the halves of its rows.
-    /// Collective on a split solver.
+    /// Collective on a split solver with an isolated grid.
     fn with_halved<R>(
         &mut self,
         f: impl FnOnce(&mut Self, Option<&mut ComplianceOperator>) -> R,
     ) -> R {
+        // Every rank has the same boundary: no collective for a periodic
+        // grid.
+        if self.operator.boundary() != Boundary::Isolated {
+            return f(self, None);
+        }
         let mut levels = self.coarse.take();
         let (grid, local) = (*self.grid(), self.operator.local_rows());
-        let isolated = self.operator.boundary() == Boundary::Isolated;
         let fits = match &levels {
-            Some(Some(coarse)) if isolated => {
+            Some(Some(coarse)) => {
                 let coarse_grid = coarse.grid();
                 coarse_grid.rows() == grid.rows().div_ceil(2)
                     && coarse_grid.columns() == grid.columns().div_ceil(2)
