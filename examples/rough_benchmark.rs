@@ -25,7 +25,8 @@
 //! whether the solver's iterations depend on the grid or on the surface.
 //! The solver chooses its preconditioner itself
 //! (`ContactSolver::set_automatic_coarse_blocks`: the two-level one on
-//! rough contacts of grids of 2048^2 cells and more); `--box` keeps it to
+//! rough contacts of grids of 2048^2 cells and more, and from 1024^2 where
+//! the box converges slowly); `--box` keeps it to
 //! the box, `--blocks B` to the two-level preconditioner over blocks of `B
 //! x B` cells (`ContactSolver::set_coarse_blocks`). A line `# blocks`
 //! after each grid's CSV line says which blocks the solver had.

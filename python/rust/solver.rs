@@ -197,7 +197,8 @@ impl ContactSolver {
     /// `coarse_blocks` chooses the preconditioner: `None` lets each solve
     /// choose (the crate's `ContactSolver::set_automatic_coarse_blocks`:
     /// the two-level preconditioner over blocks of 16 cells for rough
-    /// contacts on grids of 2048^2 cells and more, else the box); a number
+    /// contacts on grids of 2048^2 cells and more, and from 1024^2 where
+    /// the box converges slowly, else the box); a number
     /// the two-level preconditioner over blocks of that many cells a side
     /// (`ContactSolver::set_coarse_blocks`, which joins once the contact
     /// count has settled: rough contacts in iterations that grow like `log
@@ -403,7 +404,7 @@ impl ContactSolver {
 
     /// The block side of the two-level preconditioner the solver has: set
     /// by `coarse_blocks`, or built by its own choice in a solve (rough
-    /// contacts on grids of 2048^2 cells and more); `None` while it has
+    /// contacts on grids of 1024^2 cells and more); `None` while it has
     /// only the box.
     #[getter]
     fn coarse_blocks(&self) -> Option<usize> {

@@ -310,8 +310,12 @@
 //! count settles) on a grid of at least 2048^2 cells, where on the rough
 //! films, a periodic half-space and
 //! a coating over a soft base it took 0.73 to 0.94 times the box's time
-//! (the isolated film at 2048^2 1.13); on smaller grids, where it cost up
-//! to 1.36 times, and for contacts of few patches, the box: a sphere, a
+//! (the isolated film at 2048^2 1.13); from 1024^2 if the factor is at
+//! least 0.5, where the periodic half-space and the coated stacks took
+//! 0.67 to 0.90 times the box's time and the films, whose boxes decide on
+//! 0.40 to 0.46, keep the box (the blocks would take 0.83 to 1.34 times
+//! it; `BENCHMARKS.md`, "The blocks on smaller grids"); on smaller grids
+//! and for contacts of few patches, the box: a sphere, a
 //! flat punch or a cone on 2048^2 cells took 1.4 to 1.8 times the box's
 //! time with the blocks, even a punch on a coated stack whose box
 //! converged slowly (a factor of 0.8); rough contacts of fixed roughness,

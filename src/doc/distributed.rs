@@ -61,7 +61,7 @@
 //! ([`ContactSolver::set_coarse_blocks`](crate::solver::ContactSolver::set_coarse_blocks),
 //! and by themselves for a rough contact on a grid of at least
 //! [`AUTOMATIC_BLOCKS_CELLS`](crate::solver::AUTOMATIC_BLOCKS_CELLS) cells,
-//! 2048^2: [`ContactSolver::set_automatic_coarse_blocks`](crate::solver::ContactSolver::set_automatic_coarse_blocks))
+//! 1024^2: [`ContactSolver::set_automatic_coarse_blocks`](crate::solver::ContactSolver::set_automatic_coarse_blocks))
 //! as serial ones do, if every rank holds whole rows of blocks (its first
 //! row a multiple of the block side: an even split of a grid whose side is
 //! a power of two, on a power of two of ranks). Each rank counts its own

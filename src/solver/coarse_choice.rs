@@ -16,16 +16,42 @@ use super::ContactSolver;
 
 /// The automatic choice ([`ContactSolver::set_automatic_coarse_blocks`])
 /// takes the two-level preconditioner on grids of at least this many cells
-/// (2048^2). Below, the blocks cost more than they save on some rough
-/// contacts: 0.80 to 1.36 times the box's time at 512^2 and 1024^2 on the
-/// five rough problems of `examples/rough_benchmark.rs`, against 0.66 to
-/// 1.09 at 2048^2 and 0.66 to 0.88 at 4096^2 (BENCHMARKS.md, "The coarse
-/// correction once the contact settles").
-pub const AUTOMATIC_BLOCKS_CELLS: usize = 2048 * 2048;
+/// (1024^2), asking more of the box's rate below
+/// [`AUTOMATIC_BLOCKS_LARGE_CELLS`]
+/// ([`AUTOMATIC_BLOCKS_SMALL_GRID_BOX_RATE`]). At 512^2, four seeds of
+/// each rough problem of `examples/rough_benchmark.rs` on one thread, the
+/// blocks took 0.66 to 0.95 times the box's time on the coated stacks but
+/// 0.92 to 1.10 on the tamaas problem, within the runs' spread, and 0.93
+/// to 1.43 on the films: not taken (BENCHMARKS.md, "The blocks on smaller
+/// grids").
+pub const AUTOMATIC_BLOCKS_CELLS: usize = 1024 * 1024;
 
-/// The automatic choice keeps the box if the box's mean factor an
-/// iteration (the residual over the one before) over the iterations in
-/// which the contact count settled lies below this: the blocks' own factor,
+/// From this many cells (2048^2) the automatic choice takes the blocks
+/// once the box's rate reaches [`AUTOMATIC_BLOCKS_BOX_RATE`]; on smaller
+/// grids (from [`AUTOMATIC_BLOCKS_CELLS`]) it asks for
+/// [`AUTOMATIC_BLOCKS_SMALL_GRID_BOX_RATE`]. Before the two-level
+/// preconditioner's applications went through the coarse level and in
+/// single precision, the blocks cost more than they saved below this size:
+/// 0.80 to 1.36 times the box's time at 512^2 and 1024^2 on the five rough
+/// problems of `examples/rough_benchmark.rs`, against 0.66 to 1.09 at
+/// 2048^2 and 0.66 to 0.88 at 4096^2 (BENCHMARKS.md, "The coarse
+/// correction once the contact settles").
+pub const AUTOMATIC_BLOCKS_LARGE_CELLS: usize = 2048 * 2048;
+
+/// The box's least mean factor an iteration for which the automatic choice
+/// takes the blocks on grids from [`AUTOMATIC_BLOCKS_CELLS`] to below
+/// [`AUTOMATIC_BLOCKS_LARGE_CELLS`]. At 1024^2 (four seeds of each rough
+/// problem of `examples/rough_benchmark.rs`, one thread) the films' boxes
+/// decided on 0.40 to 0.46 and the blocks took 0.83 to 1.34 times their
+/// time; the tamaas problem and the coated stacks decided on 0.54 to 1.25
+/// and the blocks took 0.67 to 0.90 times the box's, in 9 to 25 fewer
+/// fine iterations (BENCHMARKS.md, "The blocks on smaller grids").
+pub const AUTOMATIC_BLOCKS_SMALL_GRID_BOX_RATE: f64 = 0.5;
+
+/// On grids of at least [`AUTOMATIC_BLOCKS_LARGE_CELLS`] the automatic
+/// choice keeps the box if the box's mean factor an iteration (the
+/// residual over the one before) over the iterations in which the contact
+/// count settled lies below this: the blocks' own factor,
 /// once a rough contact's count has settled, was 0.19 to 0.36 in every
 /// run of `BENCHMARKS.md`'s two-level sections, so a box that converges
 /// faster leaves them nothing to gain. On the rough problems of
@@ -78,7 +104,10 @@ pub struct Preconditioning {
     pub decided_after: Option<usize>,
     /// The mean factor by which the residual fell an iteration over those
     /// three, under the box (the automatic choice keeps the box below
-    /// [`AUTOMATIC_BLOCKS_BOX_RATE`]); `None` with `decided_after`.
+    /// [`AUTOMATIC_BLOCKS_BOX_RATE`], on grids smaller than
+    /// [`AUTOMATIC_BLOCKS_LARGE_CELLS`] below
+    /// [`AUTOMATIC_BLOCKS_SMALL_GRID_BOX_RATE`]); `None` with
+    /// `decided_after`.
     pub box_factor: Option<f64>,
     /// The side of the two-level preconditioner's blocks (cells) if the
     /// choice took it, `None` for the box alone.
@@ -132,7 +161,9 @@ impl ContactSolver {
     /// residual shrank by a mean factor of at least
     /// [`AUTOMATIC_BLOCKS_BOX_RATE`] an iteration (a box that converges
     /// faster leaves the blocks nothing to gain: a periodic sinusoid's many
-    /// equal patches) and the contact has more
+    /// equal patches; [`AUTOMATIC_BLOCKS_SMALL_GRID_BOX_RATE`] on grids
+    /// smaller than [`AUTOMATIC_BLOCKS_LARGE_CELLS`], where the blocks'
+    /// own costs weigh more: the rough films' boxes) and the contact has more
     /// than 256 patches (a rough contact: a Hertzian or flat punch's
     /// contact, one patch, gains nothing from the blocks); the box
     /// otherwise, on a periodic grid whose sides the block side does not
@@ -194,7 +225,7 @@ impl ContactSolver {
                 let decided = if self.coarse_automatic {
                     // A rate that is not a number (no residual yet) keeps
                     // the box.
-                    box_rate >= AUTOMATIC_BLOCKS_BOX_RATE && self.automatic_blocks(pressure)?
+                    self.automatic_blocks(pressure, box_rate)?
                 } else {
                     self.balancing.is_some()
                 };
@@ -220,14 +251,22 @@ impl ContactSolver {
     }
 
     /// The automatic choice for a fine, non-adhesive solve whose contact is
-    /// where `pressure` is positive: the blocks (built if they are not) on
-    /// a large enough grid and a contact of many patches.
-    fn automatic_blocks(&mut self, pressure: &[f64]) -> Result<bool> {
+    /// where `pressure` is positive and whose box's mean factor over the
+    /// quiet iterations was `box_rate`: the blocks (built if they are not)
+    /// on a large enough grid, a box slow enough for its size (a rate that
+    /// is not a number keeps the box) and a contact of many patches.
+    fn automatic_blocks(&mut self, pressure: &[f64], box_rate: f64) -> Result<bool> {
         let grid = *self.grid();
         let (rows, columns) = (grid.rows(), grid.columns());
         let side = AUTOMATIC_BLOCK_SIDE;
         let periodic = self.operator.boundary() == Boundary::Periodic;
+        let least_rate = if rows * columns >= AUTOMATIC_BLOCKS_LARGE_CELLS {
+            AUTOMATIC_BLOCKS_BOX_RATE
+        } else {
+            AUTOMATIC_BLOCKS_SMALL_GRID_BOX_RATE
+        };
         let fits = rows * columns >= AUTOMATIC_BLOCKS_CELLS
+            && box_rate >= least_rate
             && rows.min(columns) >= 4 * side
             && !(periodic && (rows % side != 0 || columns % side != 0));
         // Collective on a split solver: every rank takes the same branch.
@@ -250,7 +289,8 @@ impl ContactSolver {
 #[cfg(test)]
 mod tests {
     use super::{
-        CoarseChoice, Preconditioning, AUTOMATIC_BLOCKS_BOX_RATE, AUTOMATIC_BLOCK_SIDE,
+        CoarseChoice, Preconditioning, AUTOMATIC_BLOCKS_BOX_RATE, AUTOMATIC_BLOCKS_CELLS,
+        AUTOMATIC_BLOCKS_LARGE_CELLS, AUTOMATIC_BLOCKS_SMALL_GRID_BOX_RATE, AUTOMATIC_BLOCK_SIDE,
         QUIET_ITERATIONS,
     };
     use crate::solver::{ContactSolver, SolverParams};
@@ -313,5 +353,52 @@ mod tests {
             (Some(true), Some(AUTOMATIC_BLOCK_SIDE))
         );
         reported(&choice, Some(AUTOMATIC_BLOCK_SIDE), 1);
+    }
+
+    /// The rate a smaller grid asks of the box, on its own: on a periodic
+    /// 1024 x 1024 grid of single-cell specks every 32nd cell each way
+    /// (1024 patches), the count settled, a box's factor of 0.45 (above
+    /// [`AUTOMATIC_BLOCKS_BOX_RATE`], below
+    /// [`AUTOMATIC_BLOCKS_SMALL_GRID_BOX_RATE`]: a rough film's, 0.40 to
+    /// 0.46 at 1024^2) keeps the box and builds nothing, 0.55 (the tamaas
+    /// problem's 0.63 to 0.66) takes blocks of 16; on 512 x 512 cells,
+    /// specks every 16th cell (1024 patches again), a factor of 0.9 keeps
+    /// the box: the grid lies below [`AUTOMATIC_BLOCKS_CELLS`].
+    #[test]
+    fn a_smaller_grid_asks_more_of_the_box() {
+        assert_eq!(AUTOMATIC_BLOCKS_CELLS, 1024 * 1024);
+        const { assert!(AUTOMATIC_BLOCKS_LARGE_CELLS > AUTOMATIC_BLOCKS_CELLS) };
+        let body = Substrate::half_space(Material::new(1.0, 0.0).unwrap());
+        let decide = |n: usize, every: usize, rate: f64| {
+            let grid = Grid::square_of_side(n, 1.0).unwrap();
+            let mut solver =
+                ContactSolver::new(&body, &grid, Boundary::Periodic, SolverParams::default())
+                    .unwrap();
+            let specks: Vec<f64> = (0..n * n)
+                .map(|c| {
+                    f64::from(u8::from(
+                        (c / n).is_multiple_of(every) && (c % n).is_multiple_of(every),
+                    ))
+                })
+                .collect();
+            let mut choice = CoarseChoice {
+                quiet: QUIET_ITERATIONS,
+                moved_residual: 1.0,
+                wanted: None,
+                report: Preconditioning::default(),
+            };
+            let residual = rate.powi(QUIET_ITERATIONS as i32);
+            let decided = solver
+                .coarse_correction_now(&mut choice, residual, &specks, 5)
+                .unwrap();
+            assert!((choice.report.box_factor.unwrap() - rate).abs() < 1e-15);
+            (decided, solver.coarse_blocks())
+        };
+        let (low, high) = (0.45, 0.55);
+        assert!(AUTOMATIC_BLOCKS_BOX_RATE < low && low < AUTOMATIC_BLOCKS_SMALL_GRID_BOX_RATE);
+        assert!(high > AUTOMATIC_BLOCKS_SMALL_GRID_BOX_RATE);
+        assert_eq!(decide(1024, 32, low), (false, None));
+        assert_eq!(decide(1024, 32, high), (true, Some(AUTOMATIC_BLOCK_SIDE)));
+        assert_eq!(decide(512, 16, 0.9), (false, None));
     }
 }

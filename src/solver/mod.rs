@@ -104,7 +104,8 @@ use preconditioning::Preconditioner;
 use workspace::Workspace;
 
 pub use coarse_choice::{
-    Preconditioning, AUTOMATIC_BLOCKS_BOX_RATE, AUTOMATIC_BLOCKS_CELLS, AUTOMATIC_BLOCK_SIDE,
+    Preconditioning, AUTOMATIC_BLOCKS_BOX_RATE, AUTOMATIC_BLOCKS_CELLS,
+    AUTOMATIC_BLOCKS_LARGE_CELLS, AUTOMATIC_BLOCKS_SMALL_GRID_BOX_RATE, AUTOMATIC_BLOCK_SIDE,
 };
 pub use cohesive_area::EQUIVALENT_TIP;
 pub use cohesive_law::{
