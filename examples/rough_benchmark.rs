@@ -60,7 +60,7 @@ use layered_contact::{Base, Boundary, Grid, Material, Substrate};
 #[path = "support/memory.rs"]
 mod memory;
 
-fn main() -> Result<(), layered_contact::Error> {
+fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1).peekable();
     // The peers' problem of `benches/peers/rough.py`: the same surface on a
     // periodic half-space of E* = 1 over a unit square, mean pressure 0.01.
@@ -93,11 +93,20 @@ fn main() -> Result<(), layered_contact::Error> {
         }
         Some("--blocks") => {
             args.next();
-            Some(args.next().and_then(|b| b.parse::<usize>().ok()))
+            let side = args.next().unwrap_or_default();
+            let side = side
+                .parse::<usize>()
+                .map_err(|e| format!("--blocks needs a block side in cells, got {side:?}: {e}"))?;
+            Some(Some(side))
         }
         _ => None,
     };
-    let sizes: Vec<usize> = args.filter_map(|a| a.parse().ok()).collect();
+    let sizes = args
+        .map(|a| {
+            a.parse::<usize>()
+                .map_err(|e| format!("a grid side in cells, got {a:?}: {e}"))
+        })
+        .collect::<Result<Vec<usize>, String>>()?;
     // Side (m), body and nominal pressure (Pa).
     let (side, film, pressure) = if peers {
         (1.0, Substrate::half_space(Material::new(1.0, 0.0)?), 0.01)
@@ -115,11 +124,7 @@ fn main() -> Result<(), layered_contact::Error> {
     let seed = match std::env::var("SEED") {
         Ok(k) => k
             .parse::<u64>()
-            .map_err(|_| layered_contact::Error::InvalidParameter {
-                name: "SEED",
-                value: f64::NAN,
-                expected: "a non-negative integer",
-            })?,
+            .map_err(|e| format!("SEED must be a non-negative integer, got {k:?}: {e}"))?,
         Err(_) => 1,
     };
     println!("N,boundary,build_s,surface_s,solve_s,iterations,coarse_iterations,contact_fraction,peak_mb,bytes_per_cell");
