@@ -310,7 +310,8 @@
 //! count settles) on a grid of at least 2048^2 cells, where on the rough
 //! films, a periodic half-space and
 //! a coating over a soft base it took 0.73 to 0.94 times the box's time
-//! (the isolated film at 2048^2 1.13); from 1024^2 if the factor is at
+//! (the isolated film at 2048^2 1.13, 0.99 since its applications go
+//! through the coarse level); from 1024^2 if the factor is at
 //! least 0.5, where the periodic half-space and the coated stacks took
 //! 0.67 to 0.90 times the box's time and the films, whose boxes decide on
 //! 0.40 to 0.46, keep the box (the blocks would take 0.83 to 1.34 times

@@ -66,9 +66,11 @@ pub const AUTOMATIC_BLOCKS_SMALL_GRID_BOX_RATE: f64 = 0.5;
 /// threshold serves without the patch test: a flat punch on a coated stack
 /// decides on 0.8 and the blocks take 1.4 times the box's time, and a
 /// threshold of 0.57, which would keep the box for the isolated film at
-/// 2048^2 (0.54, the one loss), would also keep it for the tamaas problem
-/// at 4096^2 (0.47, where the blocks take 0.8 of its time): BENCHMARKS.md,
-/// "The choice on fixed roughness and on one patch".
+/// 2048^2 (0.54, then the one loss; 0.99 of the box's time since the
+/// applications go through the coarse level, "The blocks on smaller
+/// grids"), would also keep it for the tamaas problem at 4096^2 (0.47,
+/// where the blocks take 0.8 of its time): BENCHMARKS.md, "The choice on
+/// fixed roughness and on one patch".
 pub const AUTOMATIC_BLOCKS_BOX_RATE: f64 = 0.3;
 
 /// The block side the automatic choice takes (cells a side), the side of
