@@ -6,9 +6,9 @@ active set method, Hintermueller, Ito & Kunisch 2002, SIAM J. Optim. 13,
 (issue 27: the tamaas problem's fine count at 8192^2 is the settling of
 its contact, BENCHMARKS.md "The blocks on smaller grids").
 
-Both start from the problem on the grid twice coarser
-(`coarse_balancing.coarse_start`) and take the box with one sweep of the
-edge extension (`edge_extension.laplace(1, ...)`), as the crate.
+Both start from the problem on the grid twice coarser and take the box
+with one sweep of the edge extension, as the crate
+(`coarse_balancing.crate_problem`).
 
 - Constrained CG (`projected_cg.pressure_space`): the pressure clamped at
   zero and the overlap joined at every step.
@@ -32,15 +32,14 @@ import sys
 
 import numpy as np
 
-from coarse_balancing import coarse_start
-from edge_extension import laplace
-from projected_cg import PBAR, operator, pressure_space, spectra, surface
+from coarse_balancing import crate_problem
+from projected_cg import PBAR, operator, pressure_space, spectra
 
 
 def outer_loop(h, start, precondition, inner, tol=1e-8, most=2000):
     """Pressures, iterations and passes of the outer active-set loop with
     `inner` linear steps a pass."""
-    stiffness, compliance = spectra(h.shape[0])
+    _, compliance = spectra(h.shape[0])
     K = operator(compliance)
     p = start * (PBAR / start.mean())
     total, passes = 0, 0
@@ -84,10 +83,7 @@ def main(sizes, inners):
           " | ".join(f"outer, {k} a pass: iterations (passes), contact" for k in inners) + " |")
     print("|---|---|" + "---|" * len(inners))
     for n in sizes:
-        stiffness, _ = spectra(n)
-        box = laplace(1, 1.0, operator(stiffness))
-        h = surface(n)
-        start = coarse_start(h)
+        h, start, box = crate_problem(n)
         p, it = pressure_space(h, 1e-8, precondition=box, start=start)
         cells = [f"{it}, {int((p > 0).sum())}"]
         for k in inners:

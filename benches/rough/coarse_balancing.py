@@ -137,6 +137,15 @@ def coarse_start(h):
     return np.repeat(np.repeat(p, 2, axis=0), 2, axis=1)
 
 
+def crate_problem(n):
+    """The surface on n x n cells, its start from the grid twice coarser
+    and the box with one sweep of the edge extension, as the crate starts
+    and preconditions (also `active_set_outer.py`, `longer_steps.py`)."""
+    stiffness, _ = spectra(n)
+    h = surface(n)
+    return h, coarse_start(h), laplace(1, 1.0, operator(stiffness))
+
+
 def crate_like(b, sizes, first=1):
     """The box with the edge extension from a coarse start, alone and
     inside balancing (from the `first` iteration on, the box before)."""
@@ -146,10 +155,7 @@ def crate_like(b, sizes, first=1):
     print("|---|---|---|")
     for n in sizes:
         kernel, kb = cell_kernel(n), block_kernel(n, b)
-        stiffness, _ = spectra(n)
-        extended = laplace(1, 1.0, operator(stiffness))
-        h = surface(n)
-        start = coarse_start(h)
+        h, start, extended = crate_problem(n)
         _, plain = pressure_space(h, 1e-8, precondition=extended, start=start)
 
         calls = [0]

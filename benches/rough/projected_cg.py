@@ -61,12 +61,15 @@ def operator(multiplier, single=False):
 
 
 def pressure_space(h, tol, rule="fr", single=False, precondition=None, start=None,
-                   restart_at=None):
+                   restart_at=None, project=None):
     """Pressures and iterations of the constrained conjugate gradients;
     `precondition(W, r)`, if given, replaces the stiffness on the working
     set `W` (`two_level.py`); `start`, if given, the first pressures
     (`coarse_balancing.py`); `restart_at`, if given, the iteration whose
-    conjugation restarts (where `precondition` changes metric)."""
+    conjugation restarts (where `precondition` changes metric);
+    `project(p, step, t)`, if given, replaces the step `p - step t`
+    clamped and rescaled to the load: it returns the new pressures and
+    whether the conjugation restarts after them (`longer_steps.py`)."""
     stiffness, compliance = spectra(h.shape[0])
     K, M = operator(compliance), operator(stiffness, single)
     p = np.full(h.shape, PBAR) if start is None else start * (PBAR / start.mean())
@@ -90,10 +93,13 @@ def pressure_space(h, tol, rule="fr", single=False, precondition=None, start=Non
             beta = 0.0
         t = np.where(W, z + beta * t, 0.0)
         step = np.sum(r * t) / np.sum(t * K(t))
-        new = np.maximum(p - step * t, 0.0)
-        new *= PBAR / new.mean()
+        if project is None:
+            new, restart = np.maximum(p - step * t, 0.0), False
+            new *= PBAR / new.mean()
+        else:
+            new, restart = project(p, step, t)
         change = np.abs(new - p).sum() / new.sum()
-        p, u, rz_old, z_old = new, K(new), rz, z
+        p, u, rz_old, z_old = new, K(new), (0.0 if restart else rz), z
         if change <= tol and not joining.any():
             return p, it
     return p, 5000
