@@ -265,12 +265,13 @@ impl ContactSolver {
         let (rows, columns) = (grid.rows(), grid.columns());
         let side = AUTOMATIC_BLOCK_SIDE;
         let periodic = self.operator.boundary() == Boundary::Periodic;
-        let least_rate = if rows * columns >= AUTOMATIC_BLOCKS_LARGE_CELLS {
+        let cells = rows * columns;
+        let least_rate = if cells >= AUTOMATIC_BLOCKS_LARGE_CELLS {
             AUTOMATIC_BLOCKS_BOX_RATE
         } else {
             AUTOMATIC_BLOCKS_SMALL_GRID_BOX_RATE
         };
-        let fits = rows * columns >= AUTOMATIC_BLOCKS_CELLS
+        let fits = cells >= AUTOMATIC_BLOCKS_CELLS
             && box_rate >= least_rate
             && rows.min(columns) >= 4 * side
             && !(periodic && (rows % side != 0 || columns % side != 0));
