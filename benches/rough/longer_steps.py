@@ -7,8 +7,9 @@ clamped and rescaled to the load as well, and the one of least energy
 `sum p (u / 2 + h)` is taken (a search along the projection arc,
 Bertsekas 1976, IEEE Trans. Autom. Control 21, 174; each further `k`
 costs one application of the compliance). The conjugation restarts after
-a longer step; the rest is `projected_cg.pressure_space`. Prints the iterations to 1e-8, how many steps were longer,
-and the contact cells (which must be the plain run's).
+a longer step; the rest is `projected_cg.pressure_space`. Prints the
+iterations to 1e-8, how many steps were longer, and the contact cells
+(which must be the plain run's).
 
 Usage: python longer_steps.py N [N ...]   (numpy, layered_contact)
 """
@@ -39,12 +40,13 @@ def searched(h, start, precondition, factors, tol=1e-8):
         for k in factors:
             new = np.maximum(p - k * step * t, 0.0)
             new *= PBAR / new.mean()
-            e = energy(new, K(new), h)
+            u = K(new)
+            e = energy(new, u, h)
             if best is None or e < best[0]:
-                best = (e, new, k)
-        _, new, k = best
+                best = (e, new, u, k)
+        _, new, u, k = best
         longer[0] += k != 1.0
-        return new, k != 1.0
+        return new, u, k != 1.0
 
     p, it = pressure_space(h, tol, precondition=precondition, start=start, project=project)
     return p, it, longer[0]

@@ -68,8 +68,9 @@ def pressure_space(h, tol, rule="fr", single=False, precondition=None, start=Non
     (`coarse_balancing.py`); `restart_at`, if given, the iteration whose
     conjugation restarts (where `precondition` changes metric);
     `project(p, step, t)`, if given, replaces the step `p - step t`
-    clamped and rescaled to the load: it returns the new pressures and
-    whether the conjugation restarts after them (`longer_steps.py`)."""
+    clamped and rescaled to the load: it returns the new pressures, their
+    displacement and whether the conjugation restarts after them
+    (`longer_steps.py`)."""
     stiffness, compliance = spectra(h.shape[0])
     K, M = operator(compliance), operator(stiffness, single)
     p = np.full(h.shape, PBAR) if start is None else start * (PBAR / start.mean())
@@ -96,10 +97,11 @@ def pressure_space(h, tol, rule="fr", single=False, precondition=None, start=Non
         if project is None:
             new, restart = np.maximum(p - step * t, 0.0), False
             new *= PBAR / new.mean()
+            u_new = K(new)
         else:
-            new, restart = project(p, step, t)
+            new, u_new, restart = project(p, step, t)
         change = np.abs(new - p).sum() / new.sum()
-        p, u, rz_old, z_old = new, K(new), (0.0 if restart else rz), z
+        p, u, rz_old, z_old = new, u_new, (0.0 if restart else rz), z
         if change <= tol and not joining.any():
             return p, it
     return p, 5000
