@@ -82,6 +82,7 @@ mod curvature;
 mod griffith;
 pub(crate) mod least_force;
 mod multiresolution;
+mod overlap_joining;
 mod params;
 mod passes;
 mod patch_width;

@@ -51,6 +51,16 @@ pub(super) struct WorkingSet {
     pub(super) gap_max: f64,
     /// Whether a member carries no pressure (new overlap).
     pub(super) overlap: bool,
+    /// Reachable cells without pressure that overlap the indenter (gap
+    /// below zero), members or not.
+    pub(super) overlap_cells: usize,
+    /// The sum of their gaps (at most zero).
+    pub(super) overlap_sum: f64,
+    /// The least of their gaps (0 if there are none).
+    pub(super) deepest: f64,
+    /// How many of them lie apart from the contact: no neighbour in its
+    /// row carries pressure.
+    pub(super) apart_cells: usize,
     /// The rows `(first, last)` and columns `(first, last)` of the members,
     /// `None` if there are none.
     pub(super) bounds: Option<Bounds>,
@@ -94,9 +104,63 @@ pub(super) fn contact_sum(profile: &[f64], displacement: &[f64], pressure: &[f64
     .fold((0.0, 0), |(s, k), (a, b)| (s + a, k + b))
 }
 
+/// The gap pass's findings chunk by chunk: each chunk's part of the
+/// working set and its overlapping cells apart from the contact (offsets
+/// in the chunk), which [`GapPass::leave_out_shallower`] may still take
+/// out of the set.
+#[derive(Debug)]
+pub(super) struct GapPass {
+    parts: Vec<(WorkingSet, Vec<u32>)>,
+}
+
+impl GapPass {
+    /// The working set of the whole pass (the chunks' sums added in order).
+    pub(super) fn set(&self) -> WorkingSet {
+        self.parts
+            .iter()
+            .fold(WorkingSet::default(), |a, (b, _)| WorkingSet {
+                members: a.members + b.members,
+                gap_sum: a.gap_sum + b.gap_sum,
+                gap_max: a.gap_max.max(b.gap_max),
+                overlap: a.overlap | b.overlap,
+                overlap_cells: a.overlap_cells + b.overlap_cells,
+                overlap_sum: a.overlap_sum + b.overlap_sum,
+                deepest: a.deepest.min(b.deepest),
+                apart_cells: a.apart_cells + b.apart_cells,
+                bounds: union(a.bounds, b.bounds),
+            })
+    }
+
+    /// Takes the overlapping cells apart from the contact whose gap lies
+    /// above `join_at` out of the working set and returns the set: its
+    /// members and gap sum less theirs (chunk by chunk, in the same order);
+    /// the largest absolute gap as it was (`join_at` is at least the
+    /// deepest overlap, a member); the bounds as they were (they still
+    /// hold every member). Visits only the listed cells.
+    pub(super) fn leave_out_shallower(
+        mut self,
+        join_at: f64,
+        gap: &[f64],
+        working: &mut [bool],
+    ) -> WorkingSet {
+        for (k, (part, apart)) in self.parts.iter_mut().enumerate() {
+            for &offset in apart.iter() {
+                let c = k * CHUNK + offset as usize;
+                if gap[c] > join_at {
+                    working[c] = false;
+                    part.members -= 1;
+                    part.gap_sum -= gap[c];
+                }
+            }
+        }
+        self.set()
+    }
+}
+
 /// Gaps `profile - reference + u` on reachable cells (0 elsewhere) and the
 /// working set: reachable cells in contact or overlapping, on a row-major
-/// grid of `columns` columns.
+/// grid of `columns` columns; the overlapping cells with no neighbour in
+/// contact in their row are listed apart.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn gaps_and_working_set(
     profile: &[f64],
@@ -107,9 +171,10 @@ pub(super) fn gaps_and_working_set(
     columns: usize,
     gap: &mut [f64],
     working: &mut [bool],
-) -> WorkingSet {
+) -> GapPass {
     let pass = |(k, (gap, working)): (usize, (&mut [f64], &mut [bool]))| {
         let mut set = WorkingSet::default();
+        let mut apart = Vec::new();
         let first = k * CHUNK;
         let (mut rows, mut cols) = ((usize::MAX, 0), (usize::MAX, 0));
         // Row by row (a chunk holds whole rows unless a row is longer than
@@ -128,11 +193,15 @@ pub(super) fn gaps_and_working_set(
             let before = set.members;
             // Selects, not branches, where the set decides: rough contacts
             // are patchy.
-            for ((g, w), ((h, u), (p, &reach))) in
-                gap.iter_mut().zip(working.iter_mut()).zip(inputs)
+            for (i, ((g, w), ((h, u), (p, &reach)))) in gap
+                .iter_mut()
+                .zip(working.iter_mut())
+                .zip(inputs)
+                .enumerate()
             {
                 *g = if reach { h - reference + u } else { 0.0 };
                 let open = *p == 0.0;
+                let overlaps = reach && open && *g < 0.0;
                 *w = reach && (!open || *g < 0.0);
                 let member = *w;
                 set.members += usize::from(member);
@@ -143,7 +212,22 @@ pub(super) fn gaps_and_working_set(
                 } else {
                     set.gap_max
                 };
-                set.overlap |= member && open;
+                // New overlap: rare once the contact settles, a branch.
+                if overlaps {
+                    set.overlap = true;
+                    set.overlap_cells += 1;
+                    set.overlap_sum += *g;
+                    set.deepest = set.deepest.min(*g);
+                    // No neighbour in its row in contact.
+                    let (c, j) = (cell + i, column + i);
+                    let beside = (j > 0 && pressure[c - 1] > 0.0)
+                        || (j + 1 < columns && pressure[c + 1] > 0.0);
+                    if !beside {
+                        set.apart_cells += 1;
+                        // A chunk's offsets are below `CHUNK` (2^14).
+                        apart.push((at + i) as u32);
+                    }
+                }
             }
             if set.members > before {
                 // The row's first and last members, found from its ends.
@@ -155,22 +239,15 @@ pub(super) fn gaps_and_working_set(
             at = end;
         }
         set.bounds = (set.members > 0).then_some((rows, cols));
-        set
+        (set, apart)
     };
-    let parts: Vec<WorkingSet> = chunks_mut!(gap)
-        .zip(chunks_mut!(working))
-        .enumerate()
-        .map(pass)
-        .collect();
-    parts
-        .into_iter()
-        .fold(WorkingSet::default(), |a, b| WorkingSet {
-            members: a.members + b.members,
-            gap_sum: a.gap_sum + b.gap_sum,
-            gap_max: a.gap_max.max(b.gap_max),
-            overlap: a.overlap | b.overlap,
-            bounds: union(a.bounds, b.bounds),
-        })
+    GapPass {
+        parts: chunks_mut!(gap)
+            .zip(chunks_mut!(working))
+            .enumerate()
+            .map(pass)
+            .collect(),
+    }
 }
 
 /// `(sum a, sum a b)` over the working set.

@@ -10,7 +10,10 @@
 //! goes back to Polonsky and Keer's restarts ([`stall`](super::stall)); one
 //! still running at its 100th iteration tries primal-dual
 //! active-set loops once ([`active_set`](super::active_set): a plate over a
-//! soft base changes its set a few cells an iteration). A
+//! soft base changes its set a few cells an iteration). On a fine solve,
+//! new overlap away from the contact's edge joins the working set only if
+//! at least as deep as the overlap's mean
+//! ([`overlap_joining`](super::overlap_joining)). A
 //! cold solve's early iterations, until the
 //! change per iteration falls to `1e-5`, apply the operator in single
 //! precision; the displacement is then recomputed in double and the solve
@@ -319,6 +322,9 @@ impl ContactSolver {
         // the early phase (its pressures are only a start), a fine solve
         // only after it. The cohesive zone's rounds (warm, whose fixed
         // point follows the inner solves' last digits) stay in double.
+        // Only a solve of the caller's own start (not a warm one)
+        // holds deeper overlap back.
+        let deeper_joins = cold;
         let cold = cold && !self.double_preconditioner;
         let mut early = cold;
         let mut restarted = !cold;
@@ -438,9 +444,11 @@ impl ContactSolver {
             // Gaps and the working set: cells in contact, and reachable
             // cells the indenter overlaps (the free variables of the
             // bound-constrained minimum); new overlap restarts the
-            // conjugation.
+            // conjugation. On a fine solve, overlap away from the
+            // contact's edge joins only if deep
+            // ([`overlap_joining`](super::overlap_joining)).
             let ws = &mut self.workspace;
-            let set = passes::gaps_and_working_set(
+            let pass = passes::gaps_and_working_set(
                 &ws.profile,
                 &ws.displacement,
                 &pressure,
@@ -450,7 +458,12 @@ impl ContactSolver {
                 &mut ws.gap,
                 &mut ws.working,
             );
-            let set = self.whole_working_set(set);
+            let mut set = self.whole_working_set(pass.set());
+            if let Some(join_at) = self.deeper_overlap(&set, deeper_joins) {
+                let ws = &mut self.workspace;
+                let local = pass.leave_out_shallower(join_at, &ws.gap, &mut ws.working);
+                set = self.whole_working_set(local);
+            }
             if set.members == 0 {
                 // No pressure and no overlap (depth control only: under
                 // force control some cell always carries pressure): zero

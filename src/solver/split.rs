@@ -104,12 +104,20 @@ impl ContactSolver {
             set.members as f64,
             set.gap_sum,
             f64::from(u8::from(set.overlap)),
+            set.overlap_cells as f64,
+            set.overlap_sum,
+            set.apart_cells as f64,
         ];
         self.sum_over_ranks(&mut sums);
         (set.bounds, set.gap_max) = self.whole_bounds(set.bounds, set.gap_max);
         set.members = sums[0] as usize;
         set.gap_sum = sums[1];
         set.overlap = sums[2] > 0.0;
+        set.overlap_cells = sums[3] as usize;
+        set.overlap_sum = sums[4];
+        set.apart_cells = sums[5] as usize;
+        // Not `deepest`: one collective more, taken only where it is read
+        // (`ContactSolver::deeper_overlap`).
         set
     }
 
