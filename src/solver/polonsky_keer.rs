@@ -443,10 +443,10 @@ impl ContactSolver {
             };
             // Gaps and the working set: cells in contact, and reachable
             // cells the indenter overlaps (the free variables of the
-            // bound-constrained minimum); new overlap restarts the
-            // conjugation. On a fine solve, overlap away from the
-            // contact's edge joins only if deep
-            // ([`overlap_joining`](super::overlap_joining)).
+            // bound-constrained minimum; new overlap keeps the
+            // conjugation unless the solve has stalled, below). On a fine
+            // solve, overlap away from the contact's edge joins only if
+            // deep ([`overlap_joining`](super::overlap_joining)).
             let ws = &mut self.workspace;
             let pass = passes::gaps_and_working_set(
                 &ws.profile,
