@@ -28,10 +28,11 @@
 //!
 //! The gap pass lets every overlapping cell in and lists those apart from
 //! the contact (no neighbour in contact in their row); once the mean is
-//! known, [`GapPass::leave_out_shallower`](super::passes::GapPass::leave_out_shallower) takes
-//! the listed ones above it out again, visiting those cells only (with a
-//! second pass over the grid the isolated film at 4096^2 took 1.04 times
-//! as long).
+//! known,
+//! [`GapPass::leave_out_shallower`](super::passes::GapPass::leave_out_shallower)
+//! takes the listed ones above it out again, visiting those cells only
+//! (with a second pass over the grid the isolated film at 4096^2 took 1.04
+//! times as long).
 //!
 //! Without the edge's cells (the mean alone) a Hertzian contact, whose
 //! overlap is a thin ring at its edge, took up to twice its iterations
