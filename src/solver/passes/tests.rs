@@ -64,9 +64,11 @@ fn the_working_set_is_counted_cell_by_cell() {
             let j = c % columns;
             (j > 0 && pressure[c - 1] > 0.0) || (j + 1 < columns && pressure[c + 1] > 0.0)
         };
+        // A member of the pass's set: in contact or overlapping.
+        let joins = |c: usize| reachable[c] && (pressure[c] > 0.0 || g(c) < 0.0);
         for c in 0..n {
             assert_eq!(gap[c], g(c));
-            let member = reachable[c] && (pressure[c] > 0.0 || g(c) < 0.0);
+            let member = joins(c);
             assert_eq!(working[c], member);
             if c % CHUNK == 0 {
                 expected.gap_sum += chunk_sum;
@@ -105,11 +107,12 @@ fn the_working_set_is_counted_cell_by_cell() {
         // The apart overlap shallower than the mean overlap left out.
         let join_at = set.overlap_sum / set.overlap_cells as f64;
         let left = pass.leave_out_shallower(join_at, &gap, &mut working);
+        let leaves = |c: usize| overlaps(c) && !beside(c) && g(c) > join_at;
         let (mut members, mut direct, mut magnitude) = (0, 0.0, 0.0);
         let (mut left_out, mut shallow_beside) = (0, 0);
         for c in 0..n {
-            let stays_out = overlaps(c) && !beside(c) && g(c) > join_at;
-            let member = reachable[c] && (pressure[c] > 0.0 || g(c) < 0.0) && !stays_out;
+            let stays_out = leaves(c);
+            let member = joins(c) && !stays_out;
             assert_eq!(working[c], member, "cell {c}");
             left_out += usize::from(stays_out);
             shallow_beside += usize::from(member && overlaps(c) && g(c) > join_at);
@@ -123,15 +126,11 @@ fn the_working_set_is_counted_cell_by_cell() {
         for k in 0..n.div_ceil(CHUNK) {
             let cells = k * CHUNK..((k + 1) * CHUNK).min(n);
             let mut part: f64 = 0.0;
-            for c in cells.clone() {
-                if reachable[c] && (pressure[c] > 0.0 || g(c) < 0.0) {
-                    part += g(c);
-                }
+            for c in cells.clone().filter(|&c| joins(c)) {
+                part += g(c);
             }
-            for c in cells {
-                if overlaps(c) && !beside(c) && g(c) > join_at {
-                    part -= g(c);
-                }
+            for c in cells.filter(|&c| leaves(c)) {
+                part -= g(c);
             }
             in_order += part;
         }
