@@ -261,9 +261,10 @@ fn two_level_preconditioner_reaches_the_box_solutions() {
 /// preconditioner's barely does: the problem of `benches/peers/rough.py`
 /// (the seeded surface on a periodic half-space of `E* = 1`, mean pressure
 /// `0.01`, about a fifth in contact) at 256^2 and 512^2, tolerance 1e-8,
-/// blocks of 16. Measured 21 and 27 fine iterations with the box, 17 and
-/// 20 with the blocks (which join once the contact count has settled for
-/// three iterations; 18 and 19 before only the deeper overlap joined,
+/// blocks of 16. Measured 21 and 26 fine iterations with the box, 16 and
+/// 19 with the blocks (which join once the contact count has settled for
+/// three iterations; 18 and 19 before only the deeper overlap joined, 17
+/// and 20 before the contact's edge was held while it shrinks,
 /// `src/solver/overlap_joining.rs`): `BENCHMARKS.md`, "The coarse
 /// correction once the contact settles", has them to 4096^2.
 #[test]
@@ -299,12 +300,16 @@ fn two_level_preconditioner_holds_the_rough_count() {
 /// periodic stack of `examples/rough_benchmark.rs` (a 20 um coating of 5
 /// MPa on a 0.1 mm rubber film over a 0.2 MPa base, the seeded surface on
 /// 512 x 512 cells of a 1 mm square, 5 kPa, about 2 % in contact),
-/// tolerance 1e-8, blocks of 16. Measured 47 fine iterations with the box,
-/// 33 with the blocks, 39 with the blocks taken in every iteration
-/// (`QUIET_ITERATIONS` at 0: checked to fail); the bound of 36 lies
-/// between. The same solution as the box's: the same contact cells (6159)
-/// and depths within 1e-8 (measured 4e-11; each solve's tolerance bounds
-/// its pressures' last change, not their error).
+/// tolerance 1e-8, blocks of 16. Measured 46 fine iterations with the box,
+/// 30 with the blocks; the bound of 31 lies below the 32 with the blocks
+/// when the contact's edge joins while it shrinks (`Origin::holds_edge`
+/// of `src/solver/overlap_joining.rs` made false: checked to fail). The
+/// blocks taken in every iteration (`QUIET_ITERATIONS` at 0) took 39
+/// before the edge was held and 31 now: `tests/coarse_blocks_automatic.rs`
+/// fails on that mutation (checked), this test no longer. The same
+/// solution as the box's: the same contact cells (6159) and depths within
+/// 1e-8 (measured 4e-11; each solve's tolerance bounds its pressures'
+/// last change, not their error).
 #[test]
 fn two_level_preconditioner_waits_for_the_stack_to_settle() {
     let (n, side) = (512, 1e-3);
@@ -336,7 +341,7 @@ fn two_level_preconditioner_waits_for_the_stack_to_settle() {
     }
     let (boxed, two) = (&runs[0], &runs[1]);
     assert!(
-        two.iterations <= 36 && boxed.iterations >= 44,
+        two.iterations <= 31 && boxed.iterations >= 44,
         "{} {}",
         boxed.iterations,
         two.iterations

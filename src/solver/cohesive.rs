@@ -54,6 +54,7 @@ use super::cohesive_law::ZONE_LAYER_FRACTION;
 use super::cohesive_law::{zone_modulus, CohesiveZone, Law};
 use super::cohesive_smoothing::ZoneSmoothing;
 use super::cohesive_steps::Stepper;
+use super::overlap_joining::Origin;
 use super::polonsky_keer::{Control, StartDisplacement};
 use super::{check_finite, ContactSolver, Observer, Solution, WarmStart};
 
@@ -385,7 +386,7 @@ impl ContactSolver {
                 Some(Cow::Owned(start)),
                 mode,
                 false,
-                false,
+                Origin::Warm,
                 observer,
             );
             self.double_preconditioner = before;

@@ -105,13 +105,17 @@ pub(super) fn contact_sum(profile: &[f64], displacement: &[f64], pressure: &[f64
 }
 
 /// The gap pass's findings chunk by chunk: each chunk's part of the
-/// working set and its overlapping cells apart from the contact (offsets
-/// in the chunk), which [`GapPass::leave_out_shallower`] may still take
-/// out of the set.
+/// working set and its new overlap (offsets in the chunk, [`BESIDE`] set
+/// for a cell beside the contact), which [`GapPass::leave_out_shallower`]
+/// may still take out of the set.
 #[derive(Debug)]
 pub(super) struct GapPass {
     parts: Vec<(WorkingSet, Vec<u32>)>,
 }
+
+/// The flag of a listed overlapping cell with a neighbour in contact in
+/// its row (a chunk's offsets are below `CHUNK`, 2^14).
+const BESIDE: u32 = 1 << 31;
 
 impl GapPass {
     /// The working set of the whole pass (the chunks' sums added in order).
@@ -131,21 +135,26 @@ impl GapPass {
             })
     }
 
-    /// Takes the overlapping cells apart from the contact whose gap lies
-    /// above `join_at` out of the working set and returns the set: its
-    /// members and gap sum less theirs (chunk by chunk, in the same order);
-    /// the largest absolute gap as it was (`join_at` is at least the
-    /// deepest overlap, a member); the bounds as they were (they still
-    /// hold every member). Visits only the listed cells.
+    /// Takes the overlapping cells apart from the contact (and, if
+    /// `beside_too`, those beside it) whose gap lies above `join_at` out of
+    /// the working set and returns the set: its members and gap sum less
+    /// theirs (chunk by chunk, in the same order); the largest absolute gap
+    /// as it was (`join_at` is at least the deepest overlap, a member); the
+    /// bounds as they were (they still hold every member). Visits only the
+    /// listed cells.
     pub(super) fn leave_out_shallower(
         mut self,
         join_at: f64,
+        beside_too: bool,
         gap: &[f64],
         working: &mut [bool],
     ) -> WorkingSet {
-        for (k, (part, apart)) in self.parts.iter_mut().enumerate() {
-            for &offset in apart.iter() {
-                let c = k * CHUNK + offset as usize;
+        for (k, (part, listed)) in self.parts.iter_mut().enumerate() {
+            for &entry in listed.iter() {
+                if entry & BESIDE != 0 && !beside_too {
+                    continue;
+                }
+                let c = k * CHUNK + (entry & !BESIDE) as usize;
                 if gap[c] > join_at {
                     working[c] = false;
                     part.members -= 1;
@@ -159,8 +168,8 @@ impl GapPass {
 
 /// Gaps `profile - reference + u` on reachable cells (0 elsewhere) and the
 /// working set: reachable cells in contact or overlapping, on a row-major
-/// grid of `columns` columns; the overlapping cells with no neighbour in
-/// contact in their row are listed apart.
+/// grid of `columns` columns; the overlapping cells without pressure are
+/// listed, those with no neighbour in contact in their row counted apart.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn gaps_and_working_set(
     profile: &[f64],
@@ -174,7 +183,7 @@ pub(super) fn gaps_and_working_set(
 ) -> GapPass {
     let pass = |(k, (gap, working)): (usize, (&mut [f64], &mut [bool]))| {
         let mut set = WorkingSet::default();
-        let mut apart = Vec::new();
+        let mut listed = Vec::new();
         let first = k * CHUNK;
         let (mut rows, mut cols) = ((usize::MAX, 0), (usize::MAX, 0));
         // Row by row (a chunk holds whole rows unless a row is longer than
@@ -222,11 +231,10 @@ pub(super) fn gaps_and_working_set(
                     let (c, j) = (cell + i, column + i);
                     let beside = (j > 0 && pressure[c - 1] > 0.0)
                         || (j + 1 < columns && pressure[c + 1] > 0.0);
-                    if !beside {
-                        set.apart_cells += 1;
-                        // A chunk's offsets are below `CHUNK` (2^14).
-                        apart.push((at + i) as u32);
-                    }
+                    set.apart_cells += usize::from(!beside);
+                    // A chunk's offsets are below `CHUNK` (2^14).
+                    let offset = (at + i) as u32;
+                    listed.push(if beside { offset | BESIDE } else { offset });
                 }
             }
             if set.members > before {
@@ -239,7 +247,7 @@ pub(super) fn gaps_and_working_set(
             at = end;
         }
         set.bounds = (set.members > 0).then_some((rows, cols));
-        (set, apart)
+        (set, listed)
     };
     GapPass {
         parts: chunks_mut!(gap)

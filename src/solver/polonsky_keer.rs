@@ -11,8 +11,9 @@
 //! still running at its 100th iteration tries primal-dual
 //! active-set loops once ([`active_set`](super::active_set): a plate over a
 //! soft base changes its set a few cells an iteration). On a fine solve,
-//! new overlap away from the contact's edge joins the working set only if
-//! at least as deep as the overlap's mean
+//! new overlap away from the contact's edge (after the multi-resolution
+//! start, any new overlap while the contact shrinks) joins the working set
+//! only if at least as deep as the overlap's mean
 //! ([`overlap_joining`](super::overlap_joining)). A
 //! cold solve's early iterations, until the
 //! change per iteration falls to `1e-5`, apply the operator in single
@@ -32,6 +33,7 @@ use crate::indenter::Indenter;
 use super::active_set::ACTIVE_SET_AFTER;
 use super::coarse_choice::{CoarseChoice, Preconditioning};
 use super::multiresolution::{count_settled, loosened, start_count_settled};
+use super::overlap_joining::Origin;
 use super::stall::Stall;
 use super::step_response::Arithmetic;
 use super::{check_finite, passes, ContactSolver, IterationInfo, Observer, Solution, WarmStart};
@@ -207,12 +209,17 @@ impl ContactSolver {
         // caller's) iterates long enough for the early iterations in single
         // precision to pay; a warm one may end before the displacement's
         // recomputation in double would.
+        let origin = match (warm, coarse_iterations) {
+            (Some(_), _) => Origin::Warm,
+            (None, 0) => Origin::Cold,
+            (None, _) => Origin::Coarse,
+        };
         let (mut solution, end) = self.constrained_cg(
             control,
             start,
             StartDisplacement::Compute,
             loosens,
-            warm.is_none(),
+            origin,
             observer,
         )?;
         solution.coarse_iterations = coarse_iterations;
@@ -225,16 +232,18 @@ impl ContactSolver {
     /// from this start level's coarser level and the level is not the one
     /// under the solve asked for, so the tolerance loosens to a fraction of
     /// the first iteration's change ([`loosened`]);
-    /// `cold`: a solve of many iterations, whose early ones apply the
-    /// operator in single precision ([`EARLY_ABOVE`]) and whose
-    /// conjugation restarts twice ([`RESTART_BELOW`]).
+    /// `origin`: where the start came from; a solve from no warm start of
+    /// the caller's is a cold one, of many iterations, whose early ones
+    /// apply the operator in single precision ([`EARLY_ABOVE`]), whose
+    /// conjugation restarts twice ([`RESTART_BELOW`]) and whose new overlap
+    /// joins by the rule of [`overlap_joining`](super::overlap_joining).
     pub(super) fn constrained_cg(
         &mut self,
         control: Control,
         warm: Option<Cow<'_, WarmStart>>,
         start_displacement: StartDisplacement,
         loosens: bool,
-        cold: bool,
+        origin: Origin,
         observer: &mut dyn Observer,
     ) -> Result<(Solution, WarmStart)> {
         let n = self.local_cells();
@@ -273,6 +282,9 @@ impl ContactSolver {
         let strict = tolerance;
         // The contact count after the last iteration.
         let mut last_contact: Option<usize> = None;
+        // Whether the last iteration's contact count fell below the one
+        // before ([`overlap_joining`](super::overlap_joining)).
+        let mut shrinking = false;
         // When this solve takes the coarse correction
         // ([`ContactSolver::coarse_correction_now`]), and whether the last
         // iteration took it.
@@ -322,10 +334,7 @@ impl ContactSolver {
         // the early phase (its pressures are only a start), a fine solve
         // only after it. The cohesive zone's rounds (warm, whose fixed
         // point follows the inner solves' last digits) stay in double.
-        // Only a solve of the caller's own start (not a warm one)
-        // holds deeper overlap back.
-        let deeper_joins = cold;
-        let cold = cold && !self.double_preconditioner;
+        let cold = origin != Origin::Warm && !self.double_preconditioner;
         let mut early = cold;
         let mut restarted = !cold;
         let mut stall = Stall::new();
@@ -459,9 +468,10 @@ impl ContactSolver {
                 &mut ws.working,
             );
             let mut set = self.whole_working_set(pass.set());
-            if let Some(join_at) = self.deeper_overlap(&set, deeper_joins) {
+            let edge_held = origin.holds_edge(shrinking);
+            if let Some(join_at) = self.deeper_overlap(&set, origin, edge_held) {
                 let ws = &mut self.workspace;
-                let local = pass.leave_out_shallower(join_at, &ws.gap, &mut ws.working);
+                let local = pass.leave_out_shallower(join_at, edge_held, &ws.gap, &mut ws.working);
                 set = self.whole_working_set(local);
             }
             if set.members == 0 {
@@ -685,6 +695,7 @@ impl ContactSolver {
             });
             coarse_choice.record(count_settled(last_contact, stats.contact), residual);
             let settled = start_count_settled(last_contact, stats.contact);
+            shrinking = last_contact.is_some_and(|c| stats.contact < c);
             last_contact = Some(stats.contact);
             // A fine solve stops only once no cell overlaps; a start level
             // may stop with overlap left (`ContactSolver::start_level`),

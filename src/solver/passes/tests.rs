@@ -17,9 +17,10 @@ fn next(state: &mut u64) -> f64 {
 /// least gap, those apart from the contact, and the bounding rows and
 /// columns, on a grid of short rows and on one whose rows are longer than
 /// a chunk (rows cut across chunks), with patchy contact and unreachable
-/// cells. Then the shallower half of the overlap apart from the contact
+/// cells. Then the overlap apart from the contact shallower than the mean
 /// left out (as a fine solve does: some overlapping cells stay out, some
-/// shallower ones beside the contact join): the members cell by cell, the
+/// shallower ones beside the contact join), and the same with those beside
+/// it (as while the contact shrinks): the members cell by cell, the
 /// sum as the chunks' sums less the cells left out in order (to the last
 /// bit; within `n eps sum |g|` of a direct sum), the bounds and largest
 /// gap kept.
@@ -37,17 +38,19 @@ fn the_working_set_is_counted_cell_by_cell() {
         // Few members: the bounds are inside the grid.
         let reference = -0.8;
         let (mut gap, mut working) = (vec![f64::NAN; n], vec![false; n]);
-        let pass = gaps_and_working_set(
-            &profile,
-            &displacement,
-            &pressure,
-            &reachable,
-            reference,
-            columns,
-            &mut gap,
-            &mut working,
-        );
-        let set = pass.set();
+        let run = |gap: &mut [f64], working: &mut [bool]| {
+            gaps_and_working_set(
+                &profile,
+                &displacement,
+                &pressure,
+                &reachable,
+                reference,
+                columns,
+                gap,
+                working,
+            )
+        };
+        let set = run(&mut gap, &mut working).set();
         let mut expected = WorkingSet::default();
         let mut bounds: Option<Bounds> = None;
         // Chunk by chunk, as the pass adds its sums.
@@ -104,45 +107,53 @@ fn the_working_set_is_counted_cell_by_cell() {
         assert_eq!(set.overlap, expected.overlap);
         assert_eq!(set.bounds, bounds);
 
-        // The apart overlap shallower than the mean overlap left out.
+        // The overlap shallower than the mean left out: apart from the
+        // contact, and then beside it too (as while the contact shrinks).
         let join_at = set.overlap_sum / set.overlap_cells as f64;
-        let left = pass.leave_out_shallower(join_at, &gap, &mut working);
-        let leaves = |c: usize| overlaps(c) && !beside(c) && g(c) > join_at;
-        let (mut members, mut direct, mut magnitude) = (0, 0.0, 0.0);
-        let (mut left_out, mut shallow_beside) = (0, 0);
-        for c in 0..n {
-            let stays_out = leaves(c);
-            let member = joins(c) && !stays_out;
-            assert_eq!(working[c], member, "cell {c}");
-            left_out += usize::from(stays_out);
-            shallow_beside += usize::from(member && overlaps(c) && g(c) > join_at);
-            members += usize::from(member);
-            direct += if member { g(c) } else { 0.0 };
-            magnitude += g(c).abs();
-        }
-        // The order of the subtraction: a chunk's sum, then the cells left
-        // out one by one.
-        let mut in_order = 0.0;
-        for k in 0..n.div_ceil(CHUNK) {
-            let cells = k * CHUNK..((k + 1) * CHUNK).min(n);
-            let mut part: f64 = 0.0;
-            for c in cells.clone().filter(|&c| joins(c)) {
-                part += g(c);
+        for beside_too in [false, true] {
+            let pass = run(&mut gap, &mut working);
+            let left = pass.leave_out_shallower(join_at, beside_too, &gap, &mut working);
+            let leaves = |c: usize| overlaps(c) && (beside_too || !beside(c)) && g(c) > join_at;
+            let (mut members, mut direct, mut magnitude) = (0, 0.0, 0.0);
+            let (mut left_out, mut shallow_beside) = (0, 0);
+            for c in 0..n {
+                let member = joins(c) && !leaves(c);
+                assert_eq!(working[c], member, "cell {c}");
+                left_out += usize::from(leaves(c));
+                shallow_beside += usize::from(member && overlaps(c) && g(c) > join_at);
+                members += usize::from(member);
+                direct += if member { g(c) } else { 0.0 };
+                magnitude += g(c).abs();
             }
-            for c in cells.filter(|&c| leaves(c)) {
-                part -= g(c);
+            // The order of the subtraction: a chunk's sum, then the cells
+            // left out one by one.
+            let mut in_order = 0.0;
+            for k in 0..n.div_ceil(CHUNK) {
+                let cells = k * CHUNK..((k + 1) * CHUNK).min(n);
+                let mut part: f64 = 0.0;
+                for c in cells.clone().filter(|&c| joins(c)) {
+                    part += g(c);
+                }
+                for c in cells.filter(|&c| leaves(c)) {
+                    part -= g(c);
+                }
+                in_order += part;
             }
-            in_order += part;
+            // Shallow overlap beside the contact stays on the larger grids
+            // unless it leaves too (the 5 x 8 grid has one cell left out
+            // and none beside the contact shallower than the mean).
+            assert!(left_out > 0, "{left_out}");
+            assert_eq!(
+                shallow_beside > 0,
+                n > 100 && !beside_too,
+                "{shallow_beside}"
+            );
+            assert_eq!(left.members, members);
+            assert_eq!(left.members + left_out, set.members);
+            assert_eq!(left.gap_sum, in_order);
+            assert!((left.gap_sum - direct).abs() <= n as f64 * f64::EPSILON * magnitude);
+            assert_eq!(left.gap_max, set.gap_max);
+            assert_eq!(left.bounds, set.bounds);
         }
-        // Both kinds on the larger grids (the 5 x 8 one has one cell left
-        // out and none beside the contact shallower than the mean).
-        assert!(left_out > 0, "{left_out}");
-        assert_eq!(shallow_beside > 0, n > 100, "{shallow_beside}");
-        assert_eq!(left.members, members);
-        assert_eq!(left.members + left_out, set.members);
-        assert_eq!(left.gap_sum, in_order);
-        assert!((left.gap_sum - direct).abs() <= n as f64 * f64::EPSILON * magnitude);
-        assert_eq!(left.gap_max, set.gap_max);
-        assert_eq!(left.bounds, set.bounds);
     }
 }
