@@ -25,8 +25,8 @@
 //! overlap the next steps shed again. Not on a solve from a uniform
 //! pressure: a plate on a stiff layer over a far softer base (the ring
 //! contact of `tests/mpi.rs`), whose contact shrinks from the whole plate
-//! to a ring, took 1857 iterations with the edge held, over its bound of
-//! 1600. No parameter. Neighbours along the row only: a
+//! to a ring, took 1857 split iterations with the edge held, over its
+//! bound of 1600. No parameter. Neighbours along the row only: a
 //! row lies whole on one rank of a split solver, so the rule needs no
 //! exchange and a split solve takes the serial one's steps. Start levels
 //! let every overlapping cell in, as before (they stop at a loosened
@@ -46,11 +46,12 @@
 //! Hertzian contact, whose overlap is a thin ring at its edge, took up to
 //! twice its iterations under force control and a two-way sinusoid of
 //! 1024 equal patches 3.5 times; held only while the contact shrinks, the
-//! Hertzian contacts keep their counts and the rough ones from the start need fewer (the tamaas problem at 8192^2
-//! 40.6 fine iterations over seven seeds against 44.1, a coated stack 67
-//! against 73). Measured in BENCHMARKS.md, "Only the deeper overlap
-//! joins", "Only the deeper overlap joins, at no extra pass" and "The edge
-//! held while the contact shrinks, after the multi-resolution start".
+//! Hertzian contacts keep their counts and the rough ones from the start
+//! need fewer (the tamaas problem at 8192^2 40.6 fine iterations over
+//! seven seeds against 44.1, a coated stack 67 against 73). Measured in
+//! BENCHMARKS.md, "Only the deeper overlap joins", "Only the deeper
+//! overlap joins, at no extra pass" and "The edge held while the contact
+//! shrinks, after the multi-resolution start".
 
 use super::passes::WorkingSet;
 use super::ContactSolver;
