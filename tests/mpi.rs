@@ -5,8 +5,10 @@
 //! and with 4 processes; under `mpirun` each rank solves every case twice,
 //! serially (the whole grid) and split across the ranks, and compares its
 //! own rows. Both solve to a relative tolerance of 1e-14, so they agree to
-//! far below the asserted 1e-12: they take the same steps, and differ only
-//! in the order in which sums over the grid are added. Last, the tool runs
+//! far below the asserted 1e-12: without the multi-resolution start they
+//! take the same steps, and differ only in the order in which sums over
+//! the grid are added; with it, their coarse levels' operators differ too
+//! (the counts compared below). Last, the tool runs
 //! a scene file on one process and under `mpirun -np 2`, with the same
 //! curve.
 
@@ -430,19 +432,26 @@ fn ranks_main() -> Result<(), String> {
             .map_err(text)?;
             // With blocks set, both take them (a split solver that kept
             // the box would apply the two-level preconditioner in no
-            // iteration). On a periodic grid both take the same steps: the
-            // same count. On an isolated grid the preconditioner's
-            // applications go through the coarse level, whose operator a
-            // split solver builds from the substrate and a serial one from
-            // the fine spectrum (Galerkin's): their steps differ, their
-            // counts by at most one (measured on the 128^2 film at 2 and 4
-            // ranks, 2026-12-06); allowed two.
+            // iteration). The multi-resolution start's coarse levels
+            // differ: a split solver builds their operator from the
+            // substrate, a serial one from the fine spectrum (Galerkin's),
+            // so the fine solves start from slightly different pressures
+            // (the 128^2 periodic film's first fine iteration: 1957
+            // members against 1971) and take different steps. On a
+            // periodic grid their counts were equal until new overlap the
+            // gap error explains stayed out (`RowEstimate` of
+            // `src/solver/overlap_joining.rs`), 21 against 20 since
+            // (2026-12-07): allowed one. On an isolated grid the
+            // preconditioner's applications go through the coarse level,
+            // built the same two ways: their counts by at most one
+            // (measured on the 128^2 film at 2 and 4 ranks, 2026-12-06);
+            // allowed two.
             let two_level = |s: &ContactSolver| {
                 s.last_preconditioning()
                     .map_or(0, |p| p.two_level_iterations)
             };
             let apart = if case.boundary == Boundary::Periodic {
-                0
+                1
             } else {
                 2
             };

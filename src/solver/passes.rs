@@ -106,12 +106,15 @@ pub(super) fn contact_sum(profile: &[f64], displacement: &[f64], pressure: &[f64
 
 /// The gap pass's findings chunk by chunk: each chunk's part of the
 /// working set and its new overlap (offsets in the chunk, [`BESIDE`] set
-/// for a cell beside the contact), which [`GapPass::leave_out_shallower`]
+/// for a cell beside the contact), which [`GapPass::leave_out`]
 /// may still take out of the set.
 #[derive(Debug)]
 pub(super) struct GapPass {
-    parts: Vec<(WorkingSet, Vec<u32>)>,
+    parts: Vec<Part>,
 }
+
+/// A chunk's part of the working set and its listed new overlap.
+type Part = (WorkingSet, Vec<u32>);
 
 /// The flag of a listed overlapping cell with a neighbour in contact in
 /// its row (a chunk's offsets are below `CHUNK`, 2^14).
@@ -135,33 +138,36 @@ impl GapPass {
             })
     }
 
-    /// Takes the overlapping cells apart from the contact (and, if
-    /// `beside_too`, those beside it) whose gap lies above `join_at` out of
+    /// Takes the listed overlapping cells for which `stays_out(cell,
+    /// beside)` holds (`beside`: a neighbour in contact in its row) out of
     /// the working set and returns the set: its members and gap sum less
-    /// theirs (chunk by chunk, in the same order); the largest absolute gap
-    /// as it was (`join_at` is at least the deepest overlap, a member); the
-    /// bounds as they were (they still hold every member). Visits only the
-    /// listed cells.
-    pub(super) fn leave_out_shallower(
+    /// theirs (chunk by chunk, in the same order, so the result does not
+    /// depend on the threads); the largest absolute gap as it was (the
+    /// deepest overlap, a member, stays); the bounds as they were (they
+    /// still hold every member). Visits only the listed cells, on all
+    /// threads with the `parallel` feature.
+    pub(super) fn leave_out(
         mut self,
-        join_at: f64,
-        beside_too: bool,
         gap: &[f64],
         working: &mut [bool],
+        stays_out: impl Fn(usize, bool) -> bool + Sync,
     ) -> WorkingSet {
-        for (k, (part, listed)) in self.parts.iter_mut().enumerate() {
+        let visit = |(k, ((part, listed), working)): (usize, (&mut Part, &mut [bool]))| {
             for &entry in listed.iter() {
-                if entry & BESIDE != 0 && !beside_too {
-                    continue;
-                }
-                let c = k * CHUNK + (entry & !BESIDE) as usize;
-                if gap[c] > join_at {
-                    working[c] = false;
+                let offset = (entry & !BESIDE) as usize;
+                let c = k * CHUNK + offset;
+                if stays_out(c, entry & BESIDE != 0) {
+                    working[offset] = false;
                     part.members -= 1;
                     part.gap_sum -= gap[c];
                 }
             }
-        }
+        };
+        #[cfg(feature = "parallel")]
+        let parts = self.parts.par_iter_mut();
+        #[cfg(not(feature = "parallel"))]
+        let parts = self.parts.iter_mut();
+        parts.zip(chunks_mut!(working)).enumerate().for_each(visit);
         self.set()
     }
 }

@@ -13,8 +13,9 @@
 //! soft base changes its set a few cells an iteration). On a fine solve,
 //! new overlap away from the contact's edge (after the multi-resolution
 //! start, any new overlap while the contact shrinks) joins the working set
-//! only if at least as deep as the overlap's mean
-//! ([`overlap_joining`](super::overlap_joining)). A
+//! only if at least as deep as the overlap's mean, and after that start
+//! only if the contact's own gap error, smoothed along the row, does not
+//! explain it ([`overlap_joining`](super::overlap_joining)). A
 //! cold solve's early iterations, until the
 //! change per iteration falls to `1e-5`, apply the operator in single
 //! precision; the displacement is then recomputed in double and the solve
@@ -33,7 +34,7 @@ use crate::indenter::Indenter;
 use super::active_set::ACTIVE_SET_AFTER;
 use super::coarse_choice::{CoarseChoice, Preconditioning};
 use super::multiresolution::{count_settled, loosened, start_count_settled};
-use super::overlap_joining::Origin;
+use super::overlap_joining::{Origin, RowEstimate};
 use super::stall::Stall;
 use super::step_response::Arithmetic;
 use super::{check_finite, passes, ContactSolver, IterationInfo, Observer, Solution, WarmStart};
@@ -455,7 +456,9 @@ impl ContactSolver {
             // bound-constrained minimum; new overlap keeps the
             // conjugation unless the solve has stalled, below). On a fine
             // solve, overlap away from the contact's edge joins only if
-            // deep ([`overlap_joining`](super::overlap_joining)).
+            // deep, and after the multi-resolution start only if the gap
+            // error near it does not explain it
+            // ([`overlap_joining`](super::overlap_joining)).
             let ws = &mut self.workspace;
             let pass = passes::gaps_and_working_set(
                 &ws.profile,
@@ -469,9 +472,13 @@ impl ContactSolver {
             );
             let mut set = self.whole_working_set(pass.set());
             let edge_held = origin.holds_edge(shrinking);
-            if let Some(join_at) = self.deeper_overlap(&set, origin, edge_held) {
+            if let Some(hold) = self.holding(&set, origin, edge_held) {
+                let periodic = self.operator.boundary() == crate::Boundary::Periodic;
                 let ws = &mut self.workspace;
-                let local = pass.leave_out_shallower(join_at, edge_held, &ws.gap, &mut ws.working);
+                let (gap, working) = (&ws.gap, &mut ws.working);
+                let estimate = RowEstimate::new(gap, &pressure, columns, periodic);
+                let stays_out = |c, beside| hold.stays_out(c, beside, gap, &estimate);
+                let local = pass.leave_out(gap, working, stays_out);
                 set = self.whole_working_set(local);
             }
             if set.members == 0 {

@@ -117,7 +117,7 @@ impl ContactSolver {
         set.overlap_sum = sums[4];
         set.apart_cells = sums[5] as usize;
         // Not `deepest`: one collective more, taken only where it is read
-        // (`ContactSolver::deeper_overlap`).
+        // (`ContactSolver::holding`).
         set
     }
 

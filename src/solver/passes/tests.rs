@@ -112,7 +112,8 @@ fn the_working_set_is_counted_cell_by_cell() {
         let join_at = set.overlap_sum / set.overlap_cells as f64;
         for beside_too in [false, true] {
             let pass = run(&mut gap, &mut working);
-            let left = pass.leave_out_shallower(join_at, beside_too, &gap, &mut working);
+            let stays_out = |c: usize, beside: bool| (beside_too || !beside) && g(c) > join_at;
+            let left = pass.leave_out(&gap, &mut working, stays_out);
             let leaves = |c: usize| overlaps(c) && (beside_too || !beside(c)) && g(c) > join_at;
             let (mut members, mut direct, mut magnitude) = (0, 0.0, 0.0);
             let (mut left_out, mut shallow_beside) = (0, 0);
