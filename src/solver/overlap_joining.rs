@@ -50,10 +50,10 @@
 //! stack at 2048^2 and one on the periodic stack, but a split solver
 //! would exchange rows for it. With it the tamaas problem at 8192^2 takes
 //! 31.1 fine iterations over seven seeds against 40.6, the coated stack at
-//! 4096^2 43 against 51, the films and the Hertzian contacts about as
-//! many as before. Measured in BENCHMARKS.md, "The early gap error is
-//! smooth: the contact's own gaps estimate it" and "New overlap the gap
-//! error explains stays out".
+//! 4096^2 43 against 51, the films from one more to three fewer, the
+//! Hertzian contacts as before. Measured in BENCHMARKS.md, "The early gap
+//! error is smooth: the contact's own gaps estimate it" and "New overlap
+//! the gap error explains stays out".
 //!
 //! The gap pass lets every overlapping cell in and lists them, marking
 //! those beside the contact (a neighbour in contact in their row); once
