@@ -159,22 +159,27 @@ pub(super) struct RowEstimate<'a> {
     columns: usize,
     periodic: bool,
     weights: [f64; 2 * REACH + 1],
+    /// The least weight in contact that gives an estimate: a thousandth
+    /// of the Gaussian's sum.
+    least: f64,
 }
 
 impl<'a> RowEstimate<'a> {
     /// The estimate on rows `columns` long of `gap` and `pressure` (of the
     /// same length, whole rows).
     pub(super) fn new(gap: &'a [f64], pressure: &'a [f64], columns: usize, periodic: bool) -> Self {
-        let weights = std::array::from_fn(|k| {
+        let weights: [f64; 2 * REACH + 1] = std::array::from_fn(|k| {
             let d = (k as f64 - REACH as f64) / SIGMA;
             (-0.5 * d * d).exp()
         });
+        let least = 1e-3 * weights.iter().sum::<f64>();
         Self {
             gap,
             pressure,
             columns,
             periodic,
             weights,
+            least,
         }
     }
 
@@ -199,8 +204,7 @@ impl<'a> RowEstimate<'a> {
                 weight += w;
             }
         }
-        let total: f64 = self.weights.iter().sum();
-        if weight > 1e-3 * total {
+        if weight > self.least {
             sum / weight
         } else {
             0.0
