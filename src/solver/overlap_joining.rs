@@ -252,6 +252,7 @@ impl ContactSolver {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::solver::passes::tests::next;
 
     /// Overlap held to the mean of the overlapping cells' gaps, not below
     /// their deepest; from the multi-resolution start, overlap the gap
@@ -333,15 +334,6 @@ mod tests {
         assert_eq!(held, [false, false, false, true]);
     }
 
-    /// A seeded pseudo-random value in `[0, 1)` (a linear congruential
-    /// generator).
-    fn next(state: &mut u64) -> f64 {
-        *state = state
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (*state >> 11) as f64 / (1u64 << 53) as f64
-    }
-
     /// The estimate against a direct sum over each cell's row: weights
     /// `exp(-d^2 / 2 sigma^2)` of the distance `d` in columns (on a
     /// periodic grid the shortest way round) up to three standard
@@ -356,12 +348,13 @@ mod tests {
         let (rows, columns) = (4, 100);
         let n = rows * columns;
         let mut state = 7;
-        let gap: Vec<f64> = (0..n).map(|_| next(&mut state) - 0.5).collect();
+        let gap: Vec<f64> = (0..n).map(|_| 0.5 * next(&mut state)).collect();
         let pressure: Vec<f64> = (0..n)
             .map(|c| match c / columns {
                 1 => 0.0,
                 3 => f64::from(c % columns == 50),
-                _ => f64::from(next(&mut state) < 0.3),
+                // About 30 % in contact (`next` lies in [-1, 1)).
+                _ => f64::from(next(&mut state) < -0.4),
             })
             .collect();
         let gaussian: f64 = (-24..=24_i32)

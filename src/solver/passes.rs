@@ -488,4 +488,4 @@ mod rescale;
 pub(super) use rescale::{add_rescaled, rescale, rescale_row, rescale_targets, Before, Rescaled};
 
 #[cfg(test)]
-mod tests;
+pub(super) mod tests;

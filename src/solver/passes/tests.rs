@@ -3,8 +3,8 @@
 use super::*;
 
 /// A seeded pseudo-random value in `[-1, 1)` (a linear congruential
-/// generator).
-fn next(state: &mut u64) -> f64 {
+/// generator; the solver's tests share it).
+pub(in crate::solver) fn next(state: &mut u64) -> f64 {
     *state = state
         .wrapping_mul(6_364_136_223_846_793_005)
         .wrapping_add(1_442_695_040_888_963_407);
